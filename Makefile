@@ -1,0 +1,157 @@
+# charbody64: character-movement and collision runtime for N64 homebrew.
+#
+#   make / make lib   host static library            build/host/libcoll.a
+#   make n64          console library (VR4300)       build/n64/libcoll.a (+ symbol check)
+#   make test         every suite: native, big-endian MIPS under qemu, ASan+UBSan
+#   make deps         install toolchains and Debian sources (run automatically)
+#   make demo         the example on a bundled level (mk/demo.mk)
+#   make bench        benchmarks (mk/bench.mk)
+#
+# Feature fragments live in mk/*.mk and may add to TEST_PREREQS, N64_EXTRA, ALL_EXTRA.
+
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+BUILD := build
+DEPS  := build/deps
+DEPS_STAMP := $(DEPS)/.stamp
+
+WARN := -Wall -Wextra -Werror -pedantic -Wdouble-promotion -Wshadow
+STD  := -std=c11
+INC  := -Iinclude -Isrc
+CCD_INC := -I$(DEPS)/libccd/src
+UNITY_INC := -I$(DEPS)/unity/src -Ihost_tests/support
+
+LIB_SRCS   := $(sort $(wildcard src/math/*.c src/coll/*.c))
+CCD_NAMES  := ccd mpr support vec3 polytope
+CCD_SRCS   := $(addprefix $(DEPS)/libccd/src/,$(addsuffix .c,$(CCD_NAMES)))
+SUPPORT_SRCS := $(sort $(wildcard host_tests/support/*.c))
+TEST_SRCS  := $(sort $(wildcard host_tests/test_*.c))
+TEST_NAMES := $(patsubst host_tests/%.c,%,$(TEST_SRCS))
+WRAP := -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free
+
+TEST_PREREQS :=
+
+# A fresh clone installs its dependencies before make reads any rule, so make never
+# caches a view of build/deps/ from before the sources were unpacked.
+ifeq ($(filter clean deps,$(MAKECMDGOALS)),)
+ifeq ($(wildcard $(DEPS_STAMP)),)
+$(info deps: first run, installing build dependencies (tools/deps.sh))
+DEPS_RC := $(shell bash tools/deps.sh >&2 && mkdir -p $(DEPS) && touch $(DEPS_STAMP); echo $$?)
+ifneq ($(DEPS_RC),0)
+$(error tools/deps.sh failed)
+endif
+endif
+endif
+N64_EXTRA :=
+ALL_EXTRA :=
+
+# ---- variants: host (native), qemu (big-endian MIPS, static), asan ----
+host_CC      := cc
+host_CFLAGS  := -O2 -g -fno-math-errno
+host_LDFLAGS := -lm
+host_RUN     :=
+qemu_CC      := mips-linux-gnu-gcc
+qemu_CFLAGS  := -O2 -g -fno-math-errno
+qemu_LDFLAGS := -static -lm
+qemu_RUN     := qemu-mips-static
+asan_CC      := cc
+asan_CFLAGS  := -O1 -g -fno-math-errno -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+asan_LDFLAGS := -fsanitize=address,undefined -lm
+asan_RUN     :=
+VARIANTS := host qemu asan
+
+# ---- console (VR4300): Debian's cross compiler, or libdragon's when N64_INST is set ----
+ifdef N64_INST
+n64_CC := $(N64_INST)/bin/mips64-elf-gcc
+n64_AR := $(N64_INST)/bin/mips64-elf-ar
+n64_NM := $(N64_INST)/bin/mips64-elf-nm
+n64_READELF := $(N64_INST)/bin/mips64-elf-readelf
+n64_ARCH := -march=vr4300 -mtune=vr4300 -mfix4300 -mabi=o64
+else
+n64_CC := mips-linux-gnu-gcc
+n64_AR := mips-linux-gnu-ar
+n64_NM := mips-linux-gnu-nm
+n64_READELF := mips-linux-gnu-readelf
+n64_ARCH := -march=vr4300 -mtune=vr4300 -mfix4300
+endif
+n64_CFLAGS := $(n64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno
+
+# obj dir per variant
+define variant_rules
+$(1)_OBJS := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(LIB_SRCS))
+$(1)_CCD_OBJS := $$(patsubst $(DEPS)/libccd/src/%.c,$(BUILD)/$(1)/ccd/%.o,$$(CCD_SRCS))
+
+$(BUILD)/$(1)/obj/%.o: %.c | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$$($(1)_CC) $(STD) $(WARN) $$($(1)_CFLAGS) $(INC) $(CCD_INC) -MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(1)/ccd/%.o: $(DEPS)/libccd/src/%.c | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$$($(1)_CC) -std=gnu11 -w $$($(1)_CFLAGS) $(CCD_INC) -c $$< -o $$@
+
+$(BUILD)/$(1)/libcoll.a: $$($(1)_OBJS)
+	@mkdir -p $$(@D)
+	rm -f $$@ && $$(or $$($(1)_AR),ar) rcs $$@ $$^
+
+$(BUILD)/$(1)/libccd.a: $$($(1)_CCD_OBJS)
+	@mkdir -p $$(@D)
+	rm -f $$@ && $$(or $$($(1)_AR),ar) rcs $$@ $$^
+
+-include $$($(1)_OBJS:.o=.d)
+endef
+
+$(foreach v,$(VARIANTS) n64,$(eval $(call variant_rules,$(v))))
+qemu_AR := mips-linux-gnu-ar
+
+# test binaries per variant (host, qemu, asan)
+define test_rules
+$(1)_SUPPORT_OBJS := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(SUPPORT_SRCS))
+$(1)_UNITY_OBJ := $(BUILD)/$(1)/unity/unity.o
+
+$(BUILD)/$(1)/unity/unity.o: $(DEPS)/unity/src/unity.c | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$$($(1)_CC) -std=c11 -w $$($(1)_CFLAGS) -c $$< -o $$@
+
+$(BUILD)/$(1)/obj/host_tests/%.o: host_tests/%.c | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$$($(1)_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $$($(1)_CFLAGS) $(INC) $(CCD_INC) $(UNITY_INC) -MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(1)/tests/%: $(BUILD)/$(1)/obj/host_tests/%.o $$($(1)_SUPPORT_OBJS) $$($(1)_UNITY_OBJ) $(BUILD)/$(1)/libcoll.a $(BUILD)/$(1)/libccd.a
+	@mkdir -p $$(@D)
+	$$($(1)_CC) $$($(1)_CFLAGS) $$(filter %.o,$$^) -L$(BUILD)/$(1) -lcoll -lccd $(WRAP) $$($(1)_LDFLAGS) -o $$@
+
+$(1)_TESTS := $$(addprefix $(BUILD)/$(1)/tests/,$(TEST_NAMES))
+.PRECIOUS: $(BUILD)/$(1)/obj/host_tests/%.o
+endef
+$(foreach v,$(VARIANTS),$(eval $(call test_rules,$(v))))
+
+# ---- feature fragments (bake tool, demo, bench, fuzz, soak) ----
+-include $(sort $(wildcard mk/*.mk))
+
+.PHONY: all lib n64 n64-check test test-host test-qemu test-asan deps clean
+all: lib $(ALL_EXTRA)
+lib: $(BUILD)/host/libcoll.a
+
+deps: $(DEPS_STAMP)
+$(DEPS_STAMP): tools/deps.sh tools/deps-packages.txt
+	bash tools/deps.sh
+	@touch $@
+
+n64: $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a n64-check $(N64_EXTRA)
+n64-check: $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a
+	bash tools/check_n64_lib.sh $< $(n64_NM) $(n64_READELF) $(BUILD)/n64/libccd.a
+
+# All three runs, one summary line at the end.
+test: $(host_TESTS) $(qemu_TESTS) $(asan_TESTS) $(TEST_PREREQS)
+	bash tools/run_tests.sh host "$(host_RUN)" $(host_TESTS) -- \
+	                        qemu "$(qemu_RUN)" $(qemu_TESTS) -- \
+	                        asan "$(asan_RUN)" $(asan_TESTS)
+
+# One run only (quicker while developing): make test-host [SUITES="test_math test_mesh"]
+SUITES ?= $(TEST_NAMES)
+test-host test-qemu test-asan: test-%: $(TEST_PREREQS)
+	$(MAKE) --no-print-directory $(addprefix $(BUILD)/$*/tests/,$(SUITES))
+	bash tools/run_tests.sh $* "$($*_RUN)" $(addprefix $(BUILD)/$*/tests/,$(SUITES))
+
+clean:
+	rm -rf $(BUILD)/host $(BUILD)/qemu $(BUILD)/asan $(BUILD)/n64

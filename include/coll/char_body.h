@@ -1,0 +1,111 @@
+/**
+ * @file coll/char_body.h
+ * @brief Kinematic capsule character body: gravity along its own up vector, swept
+ *        move-and-slide, creases, slopes, floor snapping, stairs, moving platforms.
+ *
+ * Each frame: set input_velocity, call char_body_move_and_slide(). The body adds gravity,
+ * sweeps and slides, snaps to the floor and writes the resolved position back to the
+ * owner's position. Allocation-free; the whole body is a plain struct (<= 256 bytes).
+ */
+#ifndef COLL_CHAR_BODY_H
+#define COLL_CHAR_BODY_H
+
+#include "coll/common.h"
+#include "coll/scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Character body settings (the seed's table; defaults in CHAR_BODY_SETTINGS_DEFAULT). */
+typedef struct {
+    fm_vec3_t up;              ///< world up; gravity acts along -up. Normalized on configure.
+    fm_vec3_t center_offset;   ///< owner origin -> capsule center, meters
+    float gravity;             ///< m/s^2 along -up (30)
+    float max_fall_speed;      ///< terminal speed along -up, m/s (55)
+    float floor_max_angle;     ///< steepest walkable slope, radians (45 deg)
+    float step_height;         ///< highest riser climbed, m (0.25); <= inner half height, <= snap
+    float floor_snap_distance; ///< floor probe reach below the capsule, m (0.30); >= step
+    float radius;              ///< capsule radius, m (0.5)
+    float height;              ///< capsule total height incl. caps, m (2.0); >= 2 * radius
+    uint8_t coll_types;        ///< COLL_TYPE_* seen (meshes)
+    uint8_t max_slides;        ///< sweep-and-slide iterations per step, 1..8 (4)
+    uint8_t read_mask;         ///< collision layers seen (0x01)
+    bool follow_floor;         ///< carried by the mesh instance stood on (true)
+} char_body_settings_t;
+
+/** The seed's defaults. */
+#define CHAR_BODY_SETTINGS_DEFAULT ((char_body_settings_t){ \
+    .up = {{0.0f, 1.0f, 0.0f}}, .center_offset = {{0.0f, 0.0f, 0.0f}}, \
+    .gravity = 30.0f, .max_fall_speed = 55.0f, .floor_max_angle = 0.78539816f, \
+    .step_height = 0.25f, .floor_snap_distance = 0.30f, .radius = 0.5f, .height = 2.0f, \
+    .coll_types = COLL_TYPE_MESH, .max_slides = 4, .read_mask = 0x01, .follow_floor = true })
+
+/** A character body. Only input_velocity is meant to be written directly. */
+typedef struct char_body_s {
+    fm_vec3_t input_velocity;      ///< desired motion, m/s; only the part across up is used
+
+    /* ---- state (read through the accessors) ---- */
+    char_body_settings_t settings;
+    fm_vec3_t *owner_pos;          ///< owner's origin, read each step and written back
+    fm_vec3_t velocity;            ///< resolved velocity, m/s
+    fm_vec3_t floor_normal;        ///< world normal of the floor stood on
+    fm_vec3_t floor_local_point;   ///< foot contact in the floor instance's local space
+    const coll_mesh_instance_t *floor_instance; ///< mesh instance stood on (carry), or NULL
+    float cos_floor_max_angle;     ///< cached cos(settings.floor_max_angle)
+    float inner_half_height;       ///< cached height / 2 - radius
+    int32_t floor_id;              ///< id of the collider stood on, -1 when none
+    uint8_t flags;                 ///< CHAR_BODY_FLAG_* (private)
+} char_body_t;
+
+/** Default settings, owner_pos attached (may be NULL: the body then keeps its own origin). */
+void char_body_init(char_body_t *body, fm_vec3_t *owner_pos);
+/** Applies settings, clamping them as the seed states, and refreshes cached values. */
+void char_body_configure(char_body_t *body, const char_body_settings_t *settings);
+const char_body_settings_t *char_body_get_settings(const char_body_t *body);
+/** New up direction (normalized); zero or non-finite keeps the previous one. */
+void char_body_set_up(char_body_t *body, fm_vec3_t up);
+void char_body_set_center_offset(char_body_t *body, fm_vec3_t offset);
+
+/** One step on coll_scene_current(). dt <= 0 or not finite: no movement. */
+void char_body_move_and_slide(char_body_t *body, float dt);
+/** One step on an explicit scene. */
+void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, float dt);
+
+/** Standing on a walkable floor or a steep surface. */
+bool char_body_is_on_floor(const char_body_t *body);
+/** Standing on a surface steeper than floor_max_angle (is_on_floor is then true too). */
+bool char_body_is_on_steep_surface(const char_body_t *body);
+fm_vec3_t char_body_floor_normal(const char_body_t *body);
+fm_vec3_t char_body_get_velocity(const char_body_t *body);
+/** Sets the internal velocity (jumps: add up * jump_speed). Non-finite is ignored. */
+void char_body_set_velocity(char_body_t *body, fm_vec3_t velocity);
+/** Bottom point of the full capsule, world space. */
+fm_vec3_t char_body_foot_pos(const char_body_t *body);
+/** Id of the collider stood on, -1 when none. */
+int32_t char_body_floor_id(const char_body_t *body);
+
+/** Moves the owner to owner_pos. reset_forces: zero velocity and clear the grounded state. */
+void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_forces);
+
+/** Debug line callback target. Colours are 0xRRGGBBAA. */
+typedef struct {
+    void (*line)(void *user, fm_vec3_t a, fm_vec3_t b, uint32_t rgba);
+    void *user;
+} coll_debug_draw_t;
+
+#define CHAR_BODY_COLOR_AIRBORNE  0xFFFFFFFFu ///< white
+#define CHAR_BODY_COLOR_FLOOR     0x00FF00FFu ///< green
+#define CHAR_BODY_COLOR_STEEP     0xFF8000FFu ///< orange
+#define CHAR_BODY_COLOR_STEP_ZONE 0xFFFF00FFu ///< yellow
+#define CHAR_BODY_COLOR_PROBE     0x0000FFFFu ///< blue
+#define CHAR_BODY_COLOR_NORMAL    0x00FFFFFFu ///< cyan
+#define CHAR_BODY_COLOR_FULL      0x404040FFu ///< dark grey
+
+/** Draws the sweep capsule (state colour), full capsule, step zone, probe and contact normal. */
+void char_body_debug_draw(const char_body_t *body, const coll_debug_draw_t *dd);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

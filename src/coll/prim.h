@@ -1,0 +1,64 @@
+/**
+ * @file prim.h
+ * @brief Exact geometric primitives: ray and capsule against one triangle or one convex
+ *        body. Plain functions on plain values, usable without a scene (and testable so).
+ *
+ * Conventions shared by every primitive:
+ *  - Coordinates are relative to a caller-chosen origin near the query (the scene code
+ *    subtracts the capsule centre first), so float precision holds far from the world origin.
+ *  - A capsule is the segment seg[0]..seg[1] swept by a sphere of radius r.
+ *  - Normals are unit and point from the collider towards the query shape.
+ *  - Sweeps return the earliest t in [0, t_max] at which the moving capsule touches;
+ *    when the capsule already overlaps at t = 0, they return t = 0 and depth > 0 with the
+ *    normal that pushes it out (the minimum-translation direction).
+ *  - Triangles are two-sided. Degenerate triangles never produce NaN (they may be missed).
+ */
+#ifndef COLL_PRIM_H
+#define COLL_PRIM_H
+
+#include "coll/common.h"
+#include "coll/scene.h"
+
+typedef struct {
+    float t;          ///< time of impact in [0, t_max]
+    float depth;      ///< > 0 only for an initial overlap (then t = 0)
+    fm_vec3_t normal; ///< unit, collider -> query
+    fm_vec3_t point;  ///< contact point, same frame as the inputs
+} coll_prim_hit_t;
+
+/** Ray o + d*s, s in [0, s_max] (d need not be unit: s is in units of |d|). Two-sided. */
+bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t tri[3],
+                       float s_max, coll_prim_hit_t *hit);
+
+/** Moving capsule against a triangle: face, edge and vertex features, exact time of impact. */
+bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                                 const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
+
+/** Static capsule against a triangle: true with depth > 0 when they overlap. */
+bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                   coll_prim_hit_t *hit);
+
+/** Ray against a convex collider body; body position given relative to the same origin. */
+bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *body,
+                   const fm_vec3_t *body_pos_rel, float s_max, coll_prim_hit_t *hit);
+
+/** Moving capsule against a convex collider body (libccd, no EPA on this path). */
+bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                             const coll_body_t *body, const fm_vec3_t *body_pos_rel,
+                             float t_max, coll_prim_hit_t *hit);
+
+/** Static capsule against a convex collider body. */
+bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_t *body,
+                               const fm_vec3_t *body_pos_rel, coll_prim_hit_t *hit);
+
+/**
+ * The capsule-vs-triangle sweep the scene uses, swappable so benchmarks can run the whole
+ * character body on another method (libccd conservative advancement, discrete sub-steps).
+ */
+typedef bool (*coll_tri_sweep_fn)(void *ctx, const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
+
+/** Installs a triangle-sweep method; fn = NULL restores the exact analytic one. */
+void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
+
+#endif
