@@ -13,13 +13,11 @@
 #ifndef FM_MATH_H
 #define FM_MATH_H
 
+#include <stdbool.h>
+
 #ifdef COLL_USE_LIBDRAGON_FMATH
 #include <fgeom.h>
-/* libdragon has no vector-rotate with our argument order; keep one spelling. */
-#define fm_quat_rotate_vec3(out, q, v) fm_vec3_rotate((out), (v), (q))
 #else
-
-#include <stdbool.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -93,8 +91,6 @@ void  fm_quat_norm(fm_quat_t *out, const fm_quat_t *q);
 void  fm_quat_nlerp(fm_quat_t *out, const fm_quat_t *a, const fm_quat_t *b, float t);
 /** Shortest-arc spherical interpolation, t in [0,1]. */
 void  fm_quat_slerp(fm_quat_t *out, const fm_quat_t *a, const fm_quat_t *b, float t);
-/** Rotate a vector by a unit quaternion (our helper; q first like the other quat calls). */
-void  fm_quat_rotate_vec3(fm_vec3_t *out, const fm_quat_t *q, const fm_vec3_t *v);
 
 /* ---- mat4 (subset) ---- */
 void  fm_mat4_identity(fm_mat4_t *out);
@@ -102,15 +98,25 @@ void  fm_mat4_identity(fm_mat4_t *out);
 void  fm_mat4_from_srt(fm_mat4_t *out, const fm_vec3_t *scale, const fm_quat_t *quat, const fm_vec3_t *translate);
 void  fm_mat4_mul(fm_mat4_t *out, const fm_mat4_t *a, const fm_mat4_t *b);
 void  fm_mat4_transpose(fm_mat4_t *out, const fm_mat4_t *m);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* COLL_USE_LIBDRAGON_FMATH */
+
+/* ---- helpers libdragon lacks: ours in both builds ---- */
+#ifdef __cplusplus
+extern "C" {
+#endif
+/** Rotate a vector by a unit quaternion (q first, like the other quat calls). */
+void  fm_quat_rotate_vec3(fm_vec3_t *out, const fm_quat_t *q, const fm_vec3_t *v);
 /** Transforms a point (w = 1), dropping w (affine matrices). */
 void  fm_mat4_mul_point(fm_vec3_t *out, const fm_mat4_t *m, const fm_vec3_t *p);
 /** Transforms a direction (w = 0). */
 void  fm_mat4_mul_dir(fm_vec3_t *out, const fm_mat4_t *m, const fm_vec3_t *d);
 /** Inverse of an affine matrix; returns false (out = identity) when singular. */
 bool  fm_mat4_affine_inverse(fm_mat4_t *out, const fm_mat4_t *m);
-
 #ifdef __cplusplus
 }
 #endif
-#endif /* COLL_USE_LIBDRAGON_FMATH */
 #endif /* FM_MATH_H */

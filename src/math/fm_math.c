@@ -85,17 +85,6 @@ void fm_vec3_reflect(fm_vec3_t *out, const fm_vec3_t *i, const fm_vec3_t *n)
     *out = r;
 }
 
-void fm_quat_rotate_vec3(fm_vec3_t *out, const fm_quat_t *q, const fm_vec3_t *v)
-{
-    /* v' = v + 2w (u x v) + 2 u x (u x v), u = q.xyz: 15 mul instead of a full q v q* */
-    fm_vec3_t u = {{q->x, q->y, q->z}}, t, c;
-    fm_vec3_cross(&t, &u, v);
-    fm_vec3_scale(&t, &t, 2.0f);
-    fm_vec3_cross(&c, &u, &t);
-    fm_vec3_t r = {{ v->x + q->w * t.x + c.x, v->y + q->w * t.y + c.y, v->z + q->w * t.z + c.z }};
-    *out = r;
-}
-
 void fm_vec3_rotate(fm_vec3_t *out, const fm_vec3_t *i, const fm_quat_t *q)
 {
     fm_quat_rotate_vec3(out, q, i);
@@ -211,6 +200,21 @@ void fm_mat4_transpose(fm_mat4_t *out, const fm_mat4_t *m)
     *out = r;
 }
 
+#endif /* COLL_USE_LIBDRAGON_FMATH */
+
+/* Helpers libdragon lacks: built in both configurations. */
+
+void fm_quat_rotate_vec3(fm_vec3_t *out, const fm_quat_t *q, const fm_vec3_t *v)
+{
+    /* v' = v + 2w (u x v) + 2 u x (u x v), u = q.xyz: 15 mul instead of a full q v q* */
+    fm_vec3_t u = {{q->x, q->y, q->z}}, t, c;
+    fm_vec3_cross(&t, &u, v);
+    fm_vec3_scale(&t, &t, 2.0f);
+    fm_vec3_cross(&c, &u, &t);
+    fm_vec3_t r = {{ v->x + q->w * t.x + c.x, v->y + q->w * t.y + c.y, v->z + q->w * t.z + c.z }};
+    *out = r;
+}
+
 void fm_mat4_mul_point(fm_vec3_t *out, const fm_mat4_t *m, const fm_vec3_t *p)
 {
     fm_vec3_t r;
@@ -255,4 +259,4 @@ bool fm_mat4_affine_inverse(fm_mat4_t *out, const fm_mat4_t *m)
     return true;
 }
 
-#endif /* COLL_USE_LIBDRAGON_FMATH */
+
