@@ -51,6 +51,8 @@ typedef struct char_body_s {
     fm_vec3_t velocity;            ///< resolved velocity, m/s
     fm_vec3_t floor_normal;        ///< world normal of the floor stood on
     fm_vec3_t floor_local_point;   ///< foot contact in the floor instance's local space
+    fm_vec3_t floor_world_point;   ///< the same contact in world space when it was recorded
+    fm_vec3_t origin;              ///< the body's own origin when owner_pos is NULL; last good position
     const coll_mesh_instance_t *floor_instance; ///< mesh instance stood on (carry), or NULL
     float cos_floor_max_angle;     ///< cached cos(settings.floor_max_angle)
     float inner_half_height;       ///< cached height / 2 - radius

@@ -1,0 +1,261 @@
+/**
+ * @file char_body.c
+ * @brief Character body: settings, state queries and the per-step driver.
+ *
+ * One step (char_body_move_and_slide_in) runs these phases in order:
+ *  1. carry      - move with the mesh instance stood on last step (char_body_floor.c)
+ *  2. recover    - push the sweep capsule out of anything it overlaps (char_body_slide.c)
+ *  3. velocity   - input across up, gravity along -up, slope following on walkable floors
+ *  4. slide      - sweep-and-slide of the shortened capsule, creases (char_body_slide.c)
+ *  5. foot guard - airborne: the foot point may not enter walls (char_body_slide.c)
+ *  6. probe      - floor ray at the foot: grounding, snapping, stair lift (char_body_floor.c)
+ */
+#include "char_body_internal.h"
+
+_Static_assert(sizeof(char_body_t) <= 256, "char_body_t must stay within 256 bytes");
+
+/* ---- settings ---- */
+
+/** v clamped to [lo, hi]; NaN gives fallback. */
+static float clampf(float v, float lo, float hi, float fallback)
+{
+    if (v != v) return fallback;
+    if (v < lo) return lo;
+    if (v > hi) return hi;
+    return v;
+}
+
+void char_body_init(char_body_t *body, fm_vec3_t *owner_pos)
+{
+    if (!body) return;
+    *body = (char_body_t){0};
+    body->owner_pos = owner_pos;
+    if (owner_pos && cb_finite(*owner_pos)) body->origin = *owner_pos;
+    body->settings.up = cb_v(0.0f, 1.0f, 0.0f);
+    body->floor_id = -1;
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    char_body_configure(body, &s);
+    body->floor_normal = body->settings.up;
+}
+
+void char_body_configure(char_body_t *body, const char_body_settings_t *settings)
+{
+    if (!body || !settings) return;
+    char_body_settings_t s = *settings;
+    fm_vec3_t prev_up = body->settings.up;
+
+    fm_vec3_t up = cb_norm(s.up);
+    if (!cb_finite(s.up) || cb_len(up) < 0.5f) {
+        up = cb_norm(prev_up);
+        if (cb_len(up) < 0.5f) up = cb_v(0.0f, 1.0f, 0.0f);
+    }
+    s.up = up;
+    if (!cb_finite(s.center_offset)) s.center_offset = cb_v(0.0f, 0.0f, 0.0f);
+
+    s.radius = clampf(s.radius, 0.001f, 1000.0f, 0.5f);
+    s.height = clampf(s.height, 2.0f * s.radius, 4000.0f, 2.0f * s.radius);
+    s.gravity = clampf(s.gravity, 0.0f, 1000.0f, 30.0f);
+    s.max_fall_speed = clampf(s.max_fall_speed, 0.0f, CB_MAX_SPEED, 55.0f);
+    s.floor_max_angle = clampf(s.floor_max_angle, 0.0f, 0.5f * FM_PI, 0.25f * FM_PI);
+    s.floor_snap_distance = clampf(s.floor_snap_distance, 0.0f, 1000.0f, 0.30f);
+    float inner = 0.5f * s.height - s.radius;
+    s.step_height = clampf(s.step_height, 0.0f, inner, 0.0f);
+    if (s.step_height > s.floor_snap_distance) s.step_height = s.floor_snap_distance;
+    if (s.max_slides < 1) s.max_slides = 1;
+    if (s.max_slides > CB_MAX_PLANES) s.max_slides = CB_MAX_PLANES;
+
+    body->settings = s;
+    body->cos_floor_max_angle = cosf(s.floor_max_angle);
+    body->inner_half_height = inner;
+}
+
+const char_body_settings_t *char_body_get_settings(const char_body_t *body)
+{
+    return body ? &body->settings : NULL;
+}
+
+void char_body_set_up(char_body_t *body, fm_vec3_t up)
+{
+    if (!body || !cb_finite(up)) return;
+    fm_vec3_t n = cb_norm(up);
+    if (cb_len(n) < 0.5f) return;
+    body->settings.up = n;
+}
+
+void char_body_set_center_offset(char_body_t *body, fm_vec3_t offset)
+{
+    if (!body || !cb_finite(offset)) return;
+    body->settings.center_offset = offset;
+}
+
+/* ---- state ---- */
+
+bool char_body_is_on_floor(const char_body_t *body)
+{
+    return body && (body->flags & CB_FLAG_GROUNDED);
+}
+
+bool char_body_is_on_steep_surface(const char_body_t *body)
+{
+    return body && (body->flags & CB_FLAG_GROUNDED) && (body->flags & CB_FLAG_STEEP);
+}
+
+fm_vec3_t char_body_floor_normal(const char_body_t *body)
+{
+    return body ? body->floor_normal : cb_v(0.0f, 0.0f, 0.0f);
+}
+
+fm_vec3_t char_body_get_velocity(const char_body_t *body)
+{
+    return body ? body->velocity : cb_v(0.0f, 0.0f, 0.0f);
+}
+
+void char_body_set_velocity(char_body_t *body, fm_vec3_t velocity)
+{
+    if (!body || !cb_finite(velocity)) return;
+    body->velocity = velocity;
+}
+
+static fm_vec3_t owner_position(const char_body_t *body)
+{
+    if (body->owner_pos && cb_finite(*body->owner_pos)) return *body->owner_pos;
+    return body->origin;
+}
+
+fm_vec3_t char_body_foot_pos(const char_body_t *body)
+{
+    if (!body) return cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t c = cb_add(owner_position(body), body->settings.center_offset);
+    return cb_madd(c, body->settings.up, -0.5f * body->settings.height);
+}
+
+int32_t char_body_floor_id(const char_body_t *body)
+{
+    return body ? body->floor_id : -1;
+}
+
+static void clear_floor(char_body_t *body)
+{
+    body->flags &= (uint8_t)~(CB_FLAG_GROUNDED | CB_FLAG_STEEP | CB_FLAG_CARRY);
+    body->floor_instance = NULL;
+    body->floor_id = -1;
+    body->floor_normal = body->settings.up;
+}
+
+void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_forces)
+{
+    if (!body || !cb_finite(owner_pos)) return;
+    body->origin = owner_pos;
+    if (body->owner_pos) *body->owner_pos = owner_pos;
+    /* The carry anchor belongs to the old place either way. */
+    body->flags &= (uint8_t)~CB_FLAG_CARRY;
+    body->floor_instance = NULL;
+    if (reset_forces) {
+        body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+        clear_floor(body);
+    }
+}
+
+/* ---- the step ---- */
+
+static fm_vec3_t clamp_speed(fm_vec3_t v)
+{
+    if (!cb_finite(v)) return cb_v(0.0f, 0.0f, 0.0f);
+    float l = cb_len(v);
+    if (l > CB_MAX_SPEED) v = cb_scale(v, CB_MAX_SPEED / l);
+    return v;
+}
+
+/**
+ * Input reshaped onto the floor plane: moved along up until it lies in the plane, then
+ * rescaled so the speed along the ground equals the input speed (up and down ramps alike).
+ */
+static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n)
+{
+    float speed = cb_len(in_h);
+    float nu = cb_dot(n, up);
+    if (speed <= 0.0f || nu < 1e-3f) return in_h;
+    fm_vec3_t v = cb_madd(in_h, up, -cb_dot(in_h, n) / nu);
+    float l = cb_len(v);
+    if (!(l > 1e-9f)) return in_h;
+    return cb_scale(v, speed / l);
+}
+
+void char_body_move_and_slide(char_body_t *body, float dt)
+{
+    const coll_scene_t *scene = coll_scene_current();
+    char_body_move_and_slide_in(body, scene, dt);
+}
+
+void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, float dt)
+{
+    if (!body || !scene) return;
+    if (!(dt > 0.0f) || !isfinite(dt)) return;
+    if (dt > CB_MAX_DT) dt = CB_MAX_DT;
+
+    const char_body_settings_t *s = &body->settings;
+    cb_ctx_t c;
+    c.scene = scene;
+    c.body = body;
+    c.up = s->up;
+    c.radius = s->radius;
+    c.half_height = 0.5f * s->height;
+    c.step = s->step_height;
+    c.snap = s->floor_snap_distance;
+    c.sweep_ihh = body->inner_half_height - 0.5f * s->step_height;
+    if (c.sweep_ihh < 0.0f) c.sweep_ihh = 0.0f;
+    c.sweep_lift = 0.5f * s->step_height;
+
+    fm_vec3_t pos = owner_position(body);
+    body->velocity = clamp_speed(body->velocity);
+    fm_vec3_t input = cb_finite(body->input_velocity) ? body->input_velocity : cb_v(0.0f, 0.0f, 0.0f);
+
+    bool was_grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
+    bool was_steep = (body->flags & CB_FLAG_STEEP) != 0;
+    fm_vec3_t up = c.up;
+
+    /* 1. carry */
+    if (was_grounded && s->follow_floor) cb_carry(&c, &pos);
+
+    /* 2. recover */
+    cb_recover(&c, &pos, &body->velocity);
+
+    /* 3. velocity: input across up, the along-up part from the resolved velocity */
+    fm_vec3_t in_h = cb_reject(input, up);
+    float v_up = cb_dot(body->velocity, up);
+    fm_vec3_t v;
+    bool walking = was_grounded && !was_steep && v_up <= 0.0f;
+    if (walking) {
+        v_up = 0.0f;
+        v = follow_slope(in_h, up, body->floor_normal);
+    } else {
+        v_up -= s->gravity * dt;
+        if (v_up < -s->max_fall_speed) v_up = -s->max_fall_speed;
+        if (was_grounded && was_steep) {
+            /* No walking up a steep slope: drop the input's uphill part. */
+            fm_vec3_t nh = cb_norm(cb_reject(body->floor_normal, up));
+            float into = cb_dot(in_h, nh);
+            if (into < 0.0f) in_h = cb_madd(in_h, nh, -into);
+        }
+        v = cb_madd(in_h, up, v_up);
+    }
+    bool jumping = v_up > 0.0f;
+    v = clamp_speed(v);
+    body->velocity = v;
+
+    /* 4. slide */
+    fm_vec3_t old_foot = cb_foot(&c, pos);
+    cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
+
+    /* 5. foot guard */
+    if (!walking) cb_foot_guard(&c, &pos, old_foot, &body->velocity);
+
+    /* 6. probe */
+    cb_probe_floor(&c, &pos, was_grounded, jumping);
+
+    body->velocity = clamp_speed(body->velocity);
+    if (cb_finite(pos)) {
+        body->origin = pos;
+        if (body->owner_pos) *body->owner_pos = pos;
+    }
+}

@@ -1,0 +1,103 @@
+/**
+ * @file char_body_internal.h
+ * @brief Private pieces of the character body shared by its source files: small by-value
+ *        vector helpers, the per-step context and the phase functions of one step.
+ */
+#ifndef COLL_CHAR_BODY_INTERNAL_H
+#define COLL_CHAR_BODY_INTERNAL_H
+
+#include <math.h>
+#include "coll/char_body.h"
+
+/** Private bits of char_body_t.flags. */
+enum {
+    CB_FLAG_GROUNDED = 1u << 0, ///< standing on a floor (walkable or steep)
+    CB_FLAG_STEEP    = 1u << 1, ///< the floor is steeper than floor_max_angle
+    CB_FLAG_CARRY    = 1u << 2, ///< floor_local_point / floor_world_point are valid
+};
+
+/* Tolerances. Each says why it exists. */
+/** Gap kept between the sweep capsule and what it hit: the next sweep starts clear, not touching. */
+#define CB_SKIN 0.001f
+/** Longest simulated step: larger dt (hitches, 10 s pauses) is clamped so nothing tunnels or explodes. */
+#define CB_MAX_DT 0.1f
+/** Speed limit of the resolved velocity, m/s: keeps sweeps short and numbers finite. */
+#define CB_MAX_SPEED 200.0f
+/** Floor this close below the foot counts as touching even when not snapping (landing). */
+#define CB_CONTACT_EPS 0.002f
+/** Overlaps shallower than this are touching contacts, not penetrations to recover from. */
+#define CB_MIN_DEPTH 0.0001f
+/** Most slide planes remembered in one step (max_slides is at most 8). */
+#define CB_MAX_PLANES 8
+/** Contacts used by the overlap recovery. */
+#define CB_MAX_CONTACTS 4
+
+static inline fm_vec3_t cb_v(float x, float y, float z) { fm_vec3_t r = {{x, y, z}}; return r; }
+static inline fm_vec3_t cb_add(fm_vec3_t a, fm_vec3_t b) { return cb_v(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline fm_vec3_t cb_sub(fm_vec3_t a, fm_vec3_t b) { return cb_v(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline fm_vec3_t cb_scale(fm_vec3_t a, float s) { return cb_v(a.x * s, a.y * s, a.z * s); }
+static inline fm_vec3_t cb_madd(fm_vec3_t a, fm_vec3_t b, float s) { return cb_v(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline float cb_dot(fm_vec3_t a, fm_vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline fm_vec3_t cb_cross(fm_vec3_t a, fm_vec3_t b)
+{
+    return cb_v(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline float cb_len(fm_vec3_t a) { return sqrtf(cb_dot(a, a)); }
+static inline bool cb_finite(fm_vec3_t a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+/** Unit vector, or the zero vector when a is (nearly) zero or not finite. */
+static inline fm_vec3_t cb_norm(fm_vec3_t a)
+{
+    float l = cb_len(a);
+    if (!(l > 1e-12f) || !isfinite(l)) return cb_v(0.0f, 0.0f, 0.0f);
+    return cb_scale(a, 1.0f / l);
+}
+/** a without its component along unit n. */
+static inline fm_vec3_t cb_reject(fm_vec3_t a, fm_vec3_t n) { return cb_madd(a, n, -cb_dot(a, n)); }
+
+/** What one step works with: the scene, the body's cached geometry and the current up. */
+typedef struct {
+    const coll_scene_t *scene;
+    char_body_t *body;
+    fm_vec3_t up;
+    float radius;
+    float half_height;   ///< full capsule half height (height / 2)
+    float sweep_ihh;     ///< inner half height of the sweep capsule
+    float sweep_lift;    ///< sweep capsule centre above the full capsule centre (step / 2)
+    float step;          ///< step height
+    float snap;          ///< floor snap distance
+} cb_ctx_t;
+
+/** Full capsule centre of an owner position. */
+static inline fm_vec3_t cb_center(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    return cb_add(pos, c->body->settings.center_offset);
+}
+/** Bottom point of the full capsule. */
+static inline fm_vec3_t cb_foot(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    return cb_madd(cb_center(c, pos), c->up, -c->half_height);
+}
+/** Centre of the shortened sweep capsule. */
+static inline fm_vec3_t cb_sweep_center(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    return cb_madd(cb_center(c, pos), c->up, c->sweep_lift);
+}
+
+/** World point of a mesh-local point (scale, rotate, translate). */
+fm_vec3_t cb_xf_apply(const coll_transform_t *xf, fm_vec3_t local);
+/** Mesh-local point of a world point; false when the transform is not invertible. */
+bool cb_xf_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local);
+
+/** Moves by disp with up to max_slides sweep-and-slide iterations, clipping *vel (may be NULL)
+ *  by the same planes. grounded: walls only (hits above the step zone act as vertical). */
+void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded);
+/** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts). */
+void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
+/** Airborne only: the foot point may not pass through walls on its way from old_foot. */
+void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
+/** Moves the body with the mesh instance it stood on last step. */
+void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos);
+/** Floor probe after the slide: grounding, steep state, snapping, stair lift, carry anchor. */
+void cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
+
+#endif
