@@ -1,0 +1,292 @@
+/* Mesh builder: dropped triangles, size bound, grid completeness (cells hold every
+ * triangle that passes through them), given cell size, quantization, bytes/triangle. */
+#include "unity.h"
+#include "alloc_guard.h"
+#include "core_gen.h"
+#include "coll/mesh.h"
+#include "coll/mesh_format.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#define BIG (8u << 20)
+static uint64_t g_buf[BIG / 8];
+static float g_verts[3 * 70000];
+static uint32_t g_idx[3 * 140000];
+
+static const coll_mesh_t *build(uint32_t nv, uint32_t nt, const coll_mesh_build_opts_t *o)
+{
+    const coll_mesh_t *m = NULL;
+    size_t need = coll_mesh_build_size(nv, nt, o);
+    TEST_ASSERT_TRUE(need > 0 && need <= sizeof g_buf);
+    coll_err_t e;
+    ASSERT_NO_ALLOC(e = coll_mesh_build(g_buf, need, g_verts, nv, g_idx, nt, o, &m));
+    TEST_ASSERT_EQUAL_INT(COLL_OK, e);
+    TEST_ASSERT_NOT_NULL(m);
+    TEST_ASSERT_TRUE(coll_mesh_size(m) <= need);
+    return m;
+}
+
+static bool cell_has(const coll_mesh_t *m, uint32_t cell, uint32_t tri)
+{
+    const uint32_t *cells = coll_mesh_cells(m);
+    for (uint32_t k = cells[cell]; k < cells[cell + 1]; k++)
+        if (coll_mesh_ref(m, k) == tri) return true;
+    return false;
+}
+
+static uint32_t cell_coord_d(double x, double origin, double cs, uint32_t dim)
+{
+    double f = floor((x - origin) / cs);
+    if (f < 0) f = 0;
+    if (f > dim - 1) f = dim - 1;
+    return (uint32_t)f;
+}
+
+/* Every point of every triangle (sampled densely, plus its corners and edge points) lies
+ * in a cell that lists the triangle. */
+static void check_grid_complete(const coll_mesh_t *m, int samples)
+{
+    for (uint32_t t = 0; t < coll_mesh_triangle_count(m); t++) {
+        fm_vec3_t v[3];
+        coll_mesh_triangle(m, t, v);
+        for (int i = 0; i <= samples; i++)
+            for (int j = 0; j <= samples - i; j++) {
+                double a = (double)i / samples, b = (double)j / samples, c = 1.0 - a - b;
+                uint32_t cc[3];
+                for (int k = 0; k < 3; k++) {
+                    double p = a * v[0].v[k] + b * v[1].v[k] + c * v[2].v[k];
+                    cc[k] = cell_coord_d(p, m->grid_origin[k], m->cell_size, m->dims[k]);
+                }
+                uint32_t cell = cc[0] + m->dims[0] * (cc[1] + m->dims[1] * cc[2]);
+                if (!cell_has(m, cell, t)) {
+                    char msg[128];
+                    snprintf(msg, sizeof msg, "triangle %u missing from cell %u", t, cell);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+    }
+}
+
+static void test_drops_degenerate_triangles(void)
+{
+    float v[] = { 0, 0, 0, 1, 0, 0, 0, 0, 1, 2, 0, 0, NAN, 0, 0, 1, 1, 1 };
+    memcpy(g_verts, v, sizeof v);
+    uint32_t idx[] = {
+        0, 1, 2,  /* ok */
+        0, 1, 3,  /* collinear: zero area */
+        0, 0, 2,  /* repeated index */
+        0, 1, 9,  /* out of range */
+        0, 4, 2,  /* NaN vertex */
+        1, 2, 5,  /* ok */
+    };
+    memcpy(g_idx, idx, sizeof idx);
+    const coll_mesh_t *m = build(6, 6, NULL);
+    TEST_ASSERT_EQUAL_UINT32(2, coll_mesh_triangle_count(m));
+    fm_vec3_t t[3];
+    coll_mesh_triangle(m, 1, t);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, t[0].x);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, t[2].y);
+    coll_mesh_triangle(m, 2, t); /* out of range: zeros */
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, t[0].x);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, t[2].z);
+    fm_vec3_t lo, hi;
+    coll_mesh_bounds(m, &lo, &hi);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, lo.x);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, hi.y);
+    check_grid_complete(m, 8);
+}
+
+static void test_all_degenerate_gives_empty_mesh(void)
+{
+    float v[] = { 0, 0, 0, 1, 0, 0, 2, 0, 0 };
+    memcpy(g_verts, v, sizeof v);
+    uint32_t idx[] = { 0, 1, 2 };
+    memcpy(g_idx, idx, sizeof idx);
+    const coll_mesh_t *m = build(3, 1, NULL);
+    TEST_ASSERT_EQUAL_UINT32(0, coll_mesh_triangle_count(m));
+    m = build(0, 0, NULL);
+    TEST_ASSERT_EQUAL_UINT32(0, coll_mesh_triangle_count(m));
+}
+
+static void test_argument_errors(void)
+{
+    const coll_mesh_t *m = NULL;
+    float v[] = { 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+    uint32_t idx[] = { 0, 1, 2 };
+    size_t need = coll_mesh_build_size(3, 1, NULL);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_INVALID_ARG, coll_mesh_build(NULL, need, v, 3, idx, 1, NULL, &m));
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_INVALID_ARG, coll_mesh_build(g_buf, need, NULL, 3, idx, 1, NULL, &m));
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_INVALID_ARG, coll_mesh_build(g_buf, need, v, 3, idx, 1, NULL, NULL));
+    coll_mesh_build_opts_t bad = { NAN, 0 };
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_INVALID_ARG, coll_mesh_build(g_buf, need, v, 3, idx, 1, &bad, &m));
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_ALIGNMENT,
+                          coll_mesh_build((uint8_t *)g_buf + 4, need, v, 3, idx, 1, NULL, &m));
+    TEST_ASSERT_NULL(m);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_BUFFER_TOO_SMALL, coll_mesh_build(g_buf, 100, v, 3, idx, 1, NULL, &m));
+    /* Any size from the exact need up works, anything below fails cleanly. */
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_build(g_buf, need, v, 3, idx, 1, NULL, &m));
+    size_t exact = coll_mesh_size(m);
+    for (size_t s = 0; s < exact; s += 4)
+        TEST_ASSERT_NOT_EQUAL(COLL_OK, coll_mesh_build(g_buf, s, v, 3, idx, 1, NULL, &m));
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_build(g_buf, exact, v, 3, idx, 1, NULL, &m));
+}
+
+/* Random soups (long thin triangles, clusters, far from the origin): the size bound
+ * holds for any cell size and the grid is complete. */
+static void test_size_bound_and_grid_complete_random(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 42);
+#ifdef __mips__
+    const int rounds = 12;
+#else
+    const int rounds = 60;
+#endif
+    for (int round = 0; round < rounds; round++) {
+        uint32_t nv = 3 + core_rng_u32(&r) % 300, nt = 1 + core_rng_u32(&r) % 300;
+        double off = (round % 3 == 0) ? core_rng_range(&r, -2000, 2000) : 0.0;
+        double spread = core_rng_range(&r, 0.5, 100);
+        for (uint32_t i = 0; i < nv; i++)
+            for (int k = 0; k < 3; k++)
+                g_verts[3 * i + k] = (float)(off + core_rng_range(&r, -spread, spread) *
+                                                       (round % 4 == 1 && k == 1 ? 0.01 : 1.0));
+        for (uint32_t i = 0; i < 3 * nt; i++) g_idx[i] = core_rng_u32(&r) % nv;
+        coll_mesh_build_opts_t o = { 0.0f, (round & 1) ? COLL_MESH_QUANTIZE : 0u };
+        if (round % 5 == 2) o.cell_size = (float)core_rng_range(&r, 0.01, 5.0); /* tiny cells: grid must grow */
+        const coll_mesh_t *m = build(nv, nt, &o);
+        TEST_ASSERT_TRUE(m->dims[0] * m->dims[1] * m->dims[2] <= 2 * nt + 64);
+        TEST_ASSERT_TRUE(m->nrefs <= 8 * nt + 64);
+        check_grid_complete(m, 6);
+    }
+}
+
+static void test_given_cell_size_is_used(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 20, 20, 1.0f, -10, 0, -10);
+    coll_mesh_build_opts_t o = { 2.5f, 0 };
+    const coll_mesh_t *m = build(nv, nt, &o);
+    TEST_ASSERT_EQUAL_FLOAT(2.5f, m->cell_size);
+    TEST_ASSERT_EQUAL_UINT32(8, m->dims[0]);
+    TEST_ASSERT_EQUAL_UINT32(8, m->dims[2]);
+    check_grid_complete(m, 6);
+}
+
+static void test_huge_triangle_spans_many_cells(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 16, 16, 1.0f, 0, 0, 0);
+    /* one huge sloped triangle over the whole level */
+    float big[] = { -1, -3, -1, 17, 5, -1, -1, 4, 17 };
+    memcpy(g_verts + 3 * nv, big, sizeof big);
+    g_idx[3 * nt] = nv; g_idx[3 * nt + 1] = nv + 1; g_idx[3 * nt + 2] = nv + 2;
+    coll_mesh_build_opts_t o = { 1.0f, 0 };
+    const coll_mesh_t *m = build(nv + 3, nt + 1, &o);
+    uint32_t count = 0, ncells = m->dims[0] * m->dims[1] * m->dims[2];
+    for (uint32_t c = 0; c < ncells; c++) count += cell_has(m, c, nt);
+    TEST_ASSERT_TRUE_MESSAGE(count > 50, "huge triangle should be listed in many cells");
+    /* ...but not in every cell of its box: the plane/box test trims it */
+    TEST_ASSERT_TRUE(count < ncells);
+    check_grid_complete(m, 40);
+}
+
+static void test_triangles_on_cell_boundaries(void)
+{
+    /* Axis-aligned triangles lying exactly on the planes x = 2, y = 2, z = 2 of a 1 m grid */
+    float v[] = { 0, 0, 0, 4, 0, 0, 0, 4, 4, /* spans, fixes bounds */
+                  2, 0, 0, 2, 4, 0, 2, 0, 4,
+                  0, 2, 0, 4, 2, 0, 0, 2, 4,
+                  0, 0, 2, 4, 0, 2, 0, 4, 2,
+                  1, 1, 1, 2, 1, 1, 1, 2, 1 };
+    memcpy(g_verts, v, sizeof v);
+    for (uint32_t i = 0; i < 15; i++) g_idx[i] = i;
+    /* small filler triangles so the grid budget (which scales with the count) keeps 1 m cells */
+    for (uint32_t i = 5; i < 60; i++) {
+        float f[] = { 0.1f, 0.1f, 0.1f + 0.01f * (float)i, 0.3f, 0.1f, 0.1f, 0.1f, 0.3f, 0.1f };
+        memcpy(g_verts + 9 * i, f, sizeof f);
+        for (uint32_t k = 0; k < 3; k++) g_idx[3 * i + k] = 3 * i + k;
+    }
+    coll_mesh_build_opts_t o = { 1.0f, 0 };
+    const coll_mesh_t *m = build(180, 60, &o);
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, m->cell_size);
+    check_grid_complete(m, 16);
+    /* The x = 2 triangle is registered on both sides of its plane. */
+    uint32_t c_lo = 1 + m->dims[0] * (1 + m->dims[1] * 1), c_hi = 2 + m->dims[0] * (1 + m->dims[1] * 1);
+    TEST_ASSERT_TRUE(cell_has(m, c_lo, 1));
+    TEST_ASSERT_TRUE(cell_has(m, c_hi, 1));
+}
+
+static void test_quantized_vertices_close(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 30, 30, 1.7f, 5000, 10, -5000);
+    coll_mesh_build_opts_t o = { 0.0f, COLL_MESH_QUANTIZE };
+    const coll_mesh_t *m = build(nv, nt, &o);
+    TEST_ASSERT_EQUAL_UINT32(nt, coll_mesh_triangle_count(m));
+    for (uint32_t t = 0; t < nt; t++) {
+        fm_vec3_t v[3];
+        coll_mesh_triangle(m, t, v);
+        for (int k = 0; k < 3; k++)
+            for (int a = 0; a < 3; a++) {
+                float want = g_verts[3 * g_idx[3 * t + k] + a];
+                /* step = extent / 65535: 51 m / 65535 < 1 mm, plus float rounding at 5 km */
+                TEST_ASSERT_FLOAT_WITHIN(1e-3f, want, v[k].v[a]);
+            }
+    }
+    check_grid_complete(m, 4);
+}
+
+/* Bytes per triangle on a welded 10k-triangle grid-like level (the memory target). */
+static void test_bytes_per_triangle(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 100, 50, 1.5f, -75, 0, -37);
+    TEST_ASSERT_EQUAL_UINT32(10000, nt);
+    const coll_mesh_t *m = build(nv, nt, NULL);
+    double bf = (double)coll_mesh_size(m) / nt;
+    coll_mesh_build_opts_t q = { 0.0f, COLL_MESH_QUANTIZE };
+    m = build(nv, nt, &q);
+    double bq = (double)coll_mesh_size(m) / nt;
+    char msg[160];
+    snprintf(msg, sizeof msg, "10k-tri welded level: %.2f B/tri float, %.2f B/tri quantized "
+             "(cells %ux%ux%u, %.2f refs/tri)", bf, bq, m->dims[0], m->dims[1], m->dims[2],
+             (double)m->nrefs / nt);
+    printf("%s\n", msg);
+    TEST_ASSERT_TRUE_MESSAGE(bf <= 24.0, msg);
+    TEST_ASSERT_TRUE_MESSAGE(bq <= 14.0, msg);
+}
+
+static void test_32bit_indices_when_many_vertices(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 300, 220, 1.0f, 0, 0, 0);
+    TEST_ASSERT_TRUE(nv > 65535);
+    const coll_mesh_t *m = build(nv, nt, NULL);
+    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDX16);
+    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_REF16);
+    fm_vec3_t v[3];
+    coll_mesh_triangle(m, nt - 1, v);
+    TEST_ASSERT_EQUAL_FLOAT(g_verts[3 * g_idx[3 * (nt - 1) + 2]], v[2].x);
+    TEST_ASSERT_EQUAL_FLOAT(g_verts[3 * g_idx[3 * (nt - 1) + 2] + 2], v[2].z);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_drops_degenerate_triangles);
+    RUN_TEST(test_all_degenerate_gives_empty_mesh);
+    RUN_TEST(test_argument_errors);
+    RUN_TEST(test_size_bound_and_grid_complete_random);
+    RUN_TEST(test_given_cell_size_is_used);
+    RUN_TEST(test_huge_triangle_spans_many_cells);
+    RUN_TEST(test_triangles_on_cell_boundaries);
+    RUN_TEST(test_quantized_vertices_close);
+    RUN_TEST(test_bytes_per_triangle);
+    RUN_TEST(test_32bit_indices_when_many_vertices);
+    return UNITY_END();
+}

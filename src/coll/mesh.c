@@ -1,0 +1,655 @@
+/**
+ * @file mesh.c
+ * @brief Collision meshes: allocation-free builder (triangles + uniform grid spatial hash
+ *        in one caller-owned block), hostile-input-safe loader of baked big-endian blobs,
+ *        and the blob writer used by the bake tool. Layout: mesh_format.h.
+ */
+#include "coll/mesh_format.h"
+#include <math.h>
+#include <string.h>
+
+/* Hard caps of the grid, which coll_mesh_build_size() budgets for: the builder grows the
+ * cell size until the grid fits (a single cell always does). */
+#define GRID_MAX_CELLS(n) (2u * (uint64_t)(n) + 64u)
+#define GRID_MAX_REFS(n)  (8u * (uint64_t)(n) + 64u)
+/* Softer targets for an automatically chosen cell size (smaller blobs). */
+#define GRID_AUTO_CELLS(n) ((uint64_t)(n) / 2u + 64u)
+#define GRID_AUTO_REFS(n)  (3u * (uint64_t)(n) + 64u)
+#define QMAX 65535.0f
+
+/* ------------------------------------------------------------------ byte order ---- */
+
+static bool host_is_le(void)
+{
+    const union { uint32_t u; uint8_t b[4]; } probe = { 1u };
+    return probe.b[0] == 1u;
+}
+
+static uint32_t bswap32(uint32_t v)
+{
+    return (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
+}
+
+static uint16_t bswap16(uint16_t v) { return (uint16_t)((v >> 8) | (v << 8)); }
+
+static uint32_t rd32(const uint8_t *p, bool swap)
+{
+    uint32_t v;
+    memcpy(&v, p, 4);
+    return swap ? bswap32(v) : v;
+}
+
+static uint16_t rd16(const uint8_t *p, bool swap)
+{
+    uint16_t v;
+    memcpy(&v, p, 2);
+    return swap ? bswap16(v) : v;
+}
+
+static float u2f(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, 4);
+    return f;
+}
+
+static void wr32be(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)(v >> 24); p[1] = (uint8_t)(v >> 16); p[2] = (uint8_t)(v >> 8); p[3] = (uint8_t)v;
+}
+
+static void wr16be(uint8_t *p, uint16_t v)
+{
+    p[0] = (uint8_t)(v >> 8); p[1] = (uint8_t)v;
+}
+
+/* ------------------------------------------------------------------ checksum ------- */
+
+#define FNV_BASIS 2166136261u
+#define FNV_PRIME 16777619u
+
+static uint32_t mix(uint32_t h, uint32_t v) { return (h ^ v) * FNV_PRIME; }
+
+/* Sections of a mesh as (offset, element size, count). */
+typedef struct { uint64_t off, count; uint32_t esize; } section_t;
+
+static void sections_of(uint32_t flags, const coll_mesh_layout_t *l, uint64_t nverts, uint64_t ntris,
+                        uint64_t ncells, uint64_t nrefs, section_t s[4])
+{
+    s[0].off = l->off_verts; s[0].esize = (flags & COLL_MESHF_QUANT) ? 2u : 4u; s[0].count = nverts * 3u;
+    s[1].off = l->off_tris;  s[1].esize = (flags & COLL_MESHF_IDX16) ? 2u : 4u; s[1].count = ntris * 3u;
+    s[2].off = l->off_cells; s[2].esize = 4u; s[2].count = ncells + 1u;
+    s[3].off = l->off_refs;  s[3].esize = (flags & COLL_MESHF_REF16) ? 2u : 4u; s[3].count = nrefs;
+}
+
+/* Header words from `version` on, checksum word excluded; then all section values. */
+static uint32_t checksum_of(const uint8_t *b, bool swap, const section_t s[4])
+{
+    uint32_t h = FNV_BASIS;
+    for (uint32_t w = 1; w < sizeof(struct coll_mesh_s) / 4u; w++)
+        if (w != offsetof(struct coll_mesh_s, checksum) / 4u) h = mix(h, rd32(b + 4u * w, swap));
+    for (int i = 0; i < 4; i++) {
+        const uint8_t *p = b + s[i].off;
+        if (s[i].esize == 2u) {
+            for (uint64_t k = 0; k < s[i].count; k++) h = mix(h, rd16(p + 2u * k, swap));
+        } else {
+            for (uint64_t k = 0; k < s[i].count; k++) h = mix(h, rd32(p + 4u * k, swap));
+        }
+    }
+    return h;
+}
+
+static uint64_t ncells_of(const coll_mesh_t *m)
+{
+    return (uint64_t)m->dims[0] * m->dims[1] * m->dims[2];
+}
+
+static coll_mesh_layout_t layout_of_mesh(const coll_mesh_t *m)
+{
+    return coll_mesh_layout_of(m->flags, m->nverts, m->ntris, ncells_of(m), m->nrefs);
+}
+
+static uint32_t checksum_native(const coll_mesh_t *m)
+{
+    coll_mesh_layout_t l = layout_of_mesh(m);
+    section_t s[4];
+    sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
+    return checksum_of((const uint8_t *)m, false, s);
+}
+
+/* ------------------------------------------------------------------ accessors ------ */
+
+static fm_vec3_t vertex_of(const coll_mesh_t *m, uint32_t v)
+{
+    const uint8_t *base = (const uint8_t *)m + m->off_verts;
+    fm_vec3_t p;
+    if (m->flags & COLL_MESHF_QUANT) {
+        const uint16_t *q = (const uint16_t *)(const void *)base + 3u * v;
+        for (int a = 0; a < 3; a++) p.v[a] = m->qorigin[a] + (float)q[a] * m->qscale[a];
+    } else {
+        const float *f = (const float *)(const void *)base + 3u * v;
+        p.x = f[0]; p.y = f[1]; p.z = f[2];
+    }
+    return p;
+}
+
+static void tri_indices(const coll_mesh_t *m, uint32_t i, uint32_t idx[3])
+{
+    const uint8_t *base = (const uint8_t *)m + m->off_tris;
+    if (m->flags & COLL_MESHF_IDX16) {
+        const uint16_t *t = (const uint16_t *)(const void *)base + 3u * i;
+        idx[0] = t[0]; idx[1] = t[1]; idx[2] = t[2];
+    } else {
+        const uint32_t *t = (const uint32_t *)(const void *)base + 3u * i;
+        idx[0] = t[0]; idx[1] = t[1]; idx[2] = t[2];
+    }
+}
+
+void coll_mesh_tri_local(const coll_mesh_t *m, uint32_t i, fm_vec3_t out[3])
+{
+    uint32_t idx[3];
+    tri_indices(m, i, idx);
+    out[0] = vertex_of(m, idx[0]);
+    out[1] = vertex_of(m, idx[1]);
+    out[2] = vertex_of(m, idx[2]);
+}
+
+size_t coll_mesh_size(const coll_mesh_t *mesh) { return mesh ? mesh->total_size : 0u; }
+
+uint32_t coll_mesh_triangle_count(const coll_mesh_t *mesh) { return mesh ? mesh->ntris : 0u; }
+
+void coll_mesh_triangle(const coll_mesh_t *mesh, uint32_t i, fm_vec3_t out[3])
+{
+    if (!out) return;
+    if (!mesh || i >= mesh->ntris) {
+        memset(out, 0, 3 * sizeof(fm_vec3_t));
+        return;
+    }
+    coll_mesh_tri_local(mesh, i, out);
+}
+
+void coll_mesh_bounds(const coll_mesh_t *mesh, fm_vec3_t *min, fm_vec3_t *max)
+{
+    for (int a = 0; a < 3; a++) {
+        if (min) min->v[a] = mesh ? mesh->bmin[a] : 0.0f;
+        if (max) max->v[a] = mesh ? mesh->bmax[a] : 0.0f;
+    }
+}
+
+/* ------------------------------------------------------------------ build ---------- */
+
+static bool vfinite(const float *p) { return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]); }
+
+/* Non-degenerate: the sine of the smallest corner angle is not vanishingly small. */
+static bool tri_has_area(const fm_vec3_t t[3])
+{
+    fm_vec3_t e1, e2, n;
+    fm_vec3_sub(&e1, &t[1], &t[0]);
+    fm_vec3_sub(&e2, &t[2], &t[0]);
+    fm_vec3_cross(&n, &e1, &e2);
+    float n2 = fm_vec3_len2(&n);
+    if (!(n2 > 1e-30f) || !isfinite(n2)) return false;
+    return n2 > 1e-12f * fm_vec3_len2(&e1) * fm_vec3_len2(&e2);
+}
+
+/* Input triangle passes index and finiteness checks. */
+static bool input_tri_ok(const float *verts, uint32_t nverts, const uint32_t *ix)
+{
+    if (ix[0] >= nverts || ix[1] >= nverts || ix[2] >= nverts) return false;
+    if (ix[0] == ix[1] || ix[1] == ix[2] || ix[0] == ix[2]) return false;
+    return vfinite(verts + 3u * ix[0]) && vfinite(verts + 3u * ix[1]) && vfinite(verts + 3u * ix[2]);
+}
+
+/* Separating-axis test of a triangle against a box (center c, half sizes h). */
+static bool axis_separates(const fm_vec3_t *a, const fm_vec3_t v[3], const float h[3])
+{
+    float p0 = fm_vec3_dot(a, &v[0]), p1 = fm_vec3_dot(a, &v[1]), p2 = fm_vec3_dot(a, &v[2]);
+    float lo = fminf(p0, fminf(p1, p2)), hi = fmaxf(p0, fmaxf(p1, p2));
+    float r = h[0] * fabsf(a->x) + h[1] * fabsf(a->y) + h[2] * fabsf(a->z);
+    return lo > r || hi < -r;
+}
+
+static bool tri_box_overlap(const fm_vec3_t tri[3], const float c[3], const float h[3])
+{
+    fm_vec3_t v[3], e[3];
+    for (int i = 0; i < 3; i++)
+        for (int a = 0; a < 3; a++) v[i].v[a] = tri[i].v[a] - c[a];
+    for (int a = 0; a < 3; a++) {
+        float lo = fminf(v[0].v[a], fminf(v[1].v[a], v[2].v[a]));
+        float hi = fmaxf(v[0].v[a], fmaxf(v[1].v[a], v[2].v[a]));
+        if (lo > h[a] || hi < -h[a]) return false;
+    }
+    fm_vec3_sub(&e[0], &v[1], &v[0]);
+    fm_vec3_sub(&e[1], &v[2], &v[1]);
+    fm_vec3_sub(&e[2], &v[0], &v[2]);
+    fm_vec3_t n;
+    fm_vec3_cross(&n, &e[0], &e[1]);
+    if (axis_separates(&n, v, h)) return false;
+    for (int i = 0; i < 3; i++) {
+        for (int a = 0; a < 3; a++) {
+            fm_vec3_t unit = {{0.0f, 0.0f, 0.0f}}, ax;
+            unit.v[a] = 1.0f;
+            fm_vec3_cross(&ax, &e[i], &unit);
+            if (axis_separates(&ax, v, h)) return false;
+        }
+    }
+    return true;
+}
+
+typedef struct {
+    float origin[3];
+    float cell;
+    float margin;
+    uint32_t dims[3];
+} grid_t;
+
+static uint32_t cell_coord(float x, float origin, float inv, uint32_t dim)
+{
+    float f = (x - origin) * inv;
+    if (!(f > 0.0f)) return 0;
+    if (f >= (float)dim) return dim - 1u;
+    uint32_t c = (uint32_t)f;
+    return c < dim ? c : dim - 1u;
+}
+
+/* Calls visit for every cell triangle tri (conservatively) intersects; stops and returns
+ * false as soon as visit does. The same predicate serves counting and filling. */
+typedef bool (*cell_visit_fn)(void *ctx, uint32_t cell);
+
+static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_visit_fn visit, void *ctx)
+{
+    uint32_t lo[3], hi[3];
+    float inv = 1.0f / g->cell;
+    for (int a = 0; a < 3; a++) {
+        float mn = fminf(tri[0].v[a], fminf(tri[1].v[a], tri[2].v[a])) - g->margin;
+        float mx = fmaxf(tri[0].v[a], fmaxf(tri[1].v[a], tri[2].v[a])) + g->margin;
+        lo[a] = cell_coord(mn, g->origin[a], inv, g->dims[a]);
+        hi[a] = cell_coord(mx, g->origin[a], inv, g->dims[a]);
+    }
+    bool single = lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2];
+    float h[3] = { 0.5f * g->cell + g->margin, 0.5f * g->cell + g->margin, 0.5f * g->cell + g->margin };
+    for (uint32_t z = lo[2]; z <= hi[2]; z++) {
+        for (uint32_t y = lo[1]; y <= hi[1]; y++) {
+            for (uint32_t x = lo[0]; x <= hi[0]; x++) {
+                if (!single) {
+                    float c[3] = { g->origin[0] + ((float)x + 0.5f) * g->cell,
+                                   g->origin[1] + ((float)y + 0.5f) * g->cell,
+                                   g->origin[2] + ((float)z + 0.5f) * g->cell };
+                    if (!tri_box_overlap(tri, c, h)) continue;
+                }
+                if (!visit(ctx, x + g->dims[0] * (y + g->dims[1] * z))) return false;
+            }
+        }
+    }
+    return true;
+}
+
+typedef struct { uint64_t count, limit; } count_ctx_t;
+
+static bool count_visit(void *ctx, uint32_t cell)
+{
+    (void)cell;
+    count_ctx_t *c = ctx;
+    return ++c->count <= c->limit;
+}
+
+typedef struct { uint32_t *cells; } hist_ctx_t;
+
+static bool hist_visit(void *ctx, uint32_t cell)
+{
+    ((hist_ctx_t *)ctx)->cells[cell]++;
+    return true;
+}
+
+typedef struct { uint32_t *cells; uint8_t *refs; bool ref16; uint32_t tri; } fill_ctx_t;
+
+static bool fill_visit(void *ctx, uint32_t cell)
+{
+    fill_ctx_t *f = ctx;
+    uint32_t k = --f->cells[cell];
+    if (f->ref16) ((uint16_t *)(void *)f->refs)[k] = (uint16_t)f->tri;
+    else ((uint32_t *)(void *)f->refs)[k] = f->tri;
+    return true;
+}
+
+static uint32_t mesh_flags_for(uint32_t nverts, uint32_t ntris, bool quant)
+{
+    uint32_t flags = quant ? COLL_MESHF_QUANT : 0u;
+    if (nverts <= 65535u) flags |= COLL_MESHF_IDX16;
+    if (ntris <= 65535u) flags |= COLL_MESHF_REF16;
+    return flags;
+}
+
+size_t coll_mesh_build_size(uint32_t nverts, uint32_t ntris, const coll_mesh_build_opts_t *opts)
+{
+    bool quant = opts && (opts->flags & COLL_MESH_QUANTIZE);
+    uint32_t flags = mesh_flags_for(nverts, ntris, quant);
+    coll_mesh_layout_t l = coll_mesh_layout_of(flags, nverts, ntris, GRID_MAX_CELLS(ntris), GRID_MAX_REFS(ntris));
+    if (l.total > 0xFFFFFFF8u || l.total > (uint64_t)SIZE_MAX) return 0;
+    return (size_t)l.total;
+}
+
+/* Chooses the cell size: from the triangle sizes (or opts), grown until the grid fits. */
+static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent, grid_t *g)
+{
+    float ext[3], maxabs = 0.0f, maxext = 0.0f;
+    for (int a = 0; a < 3; a++) {
+        ext[a] = m->bmax[a] - m->bmin[a];
+        maxext = fmaxf(maxext, ext[a]);
+        maxabs = fmaxf(maxabs, fmaxf(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
+        g->origin[a] = m->bmin[a];
+    }
+    bool automatic = !(want_cell > 0.0f);
+    float cell = automatic ? 4.0f * mean_extent : want_cell;
+    if (!(cell >= maxext * (1.0f / 4096.0f))) cell = maxext * (1.0f / 4096.0f);
+    if (!(cell > 1e-6f)) cell = 1e-6f;
+    uint64_t max_cells = automatic ? GRID_AUTO_CELLS(m->ntris) : GRID_MAX_CELLS(m->ntris);
+    uint64_t max_refs = automatic ? GRID_AUTO_REFS(m->ntris) : GRID_MAX_REFS(m->ntris);
+    for (;;) {
+        bool fits = true;
+        uint64_t ncells = 1;
+        for (int a = 0; a < 3; a++) {
+            float d = ceilf(ext[a] / cell);
+            if (d < 1.0f) d = 1.0f;
+            if (d > 1048576.0f) { fits = false; d = 1048576.0f; }
+            g->dims[a] = (uint32_t)d;
+            ncells *= g->dims[a];
+        }
+        g->cell = cell;
+        g->margin = cell * 1e-3f + maxabs * 2e-6f;
+        bool single = g->dims[0] == 1u && g->dims[1] == 1u && g->dims[2] == 1u;
+        if (fits && ncells <= max_cells) {
+            if (single) return;
+            count_ctx_t cc = { 0, max_refs };
+            bool ok = true;
+            for (uint32_t t = 0; t < m->ntris && ok; t++) {
+                fm_vec3_t tri[3];
+                coll_mesh_tri_local(m, t, tri);
+                ok = for_each_cell_of_tri(g, tri, count_visit, &cc);
+            }
+            if (ok) return;
+        }
+        if (single) return; /* cannot happen: one cell holds ntris <= max_refs refs */
+        cell *= 1.5f;
+        if (cell >= maxext) cell = fmaxf(maxext, 1e-6f) * 1.0001f;
+    }
+}
+
+coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint32_t nverts,
+                           const uint32_t *indices, uint32_t ntris,
+                           const coll_mesh_build_opts_t *opts, const coll_mesh_t **out)
+{
+    if (out) *out = NULL;
+    if (!buf || !out || (nverts && !verts) || (ntris && !indices)) return COLL_ERR_INVALID_ARG;
+    if (opts && ((opts->flags & ~(uint32_t)COLL_MESH_QUANTIZE) || isnan(opts->cell_size) ||
+                 isinf(opts->cell_size)))
+        return COLL_ERR_INVALID_ARG;
+    if ((uintptr_t)buf & 7u) return COLL_ERR_ALIGNMENT;
+    if (buf_size < sizeof(struct coll_mesh_s)) return COLL_ERR_BUFFER_TOO_SMALL;
+
+    bool quant = opts && (opts->flags & COLL_MESH_QUANTIZE);
+    uint32_t flags = mesh_flags_for(nverts, ntris, quant);
+    coll_mesh_t *m = buf;
+    memset(m, 0, sizeof *m);
+    m->flags = flags;
+    m->version = COLL_MESH_VERSION;
+    m->nverts = nverts;
+    coll_mesh_layout_t l = coll_mesh_layout_of(flags, nverts, 0, 0, 0);
+    m->off_verts = (uint32_t)l.off_verts;
+    m->off_tris = (uint32_t)l.off_tris;
+    if (l.off_tris > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
+    uint8_t *base = buf;
+
+    /* Vertices: floats as given (non-finite ones, never referenced, become 0), or
+     * quantized over the bounds of the usable input triangles. */
+    if (quant) {
+        float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+        for (uint32_t t = 0; t < ntris; t++) {
+            const uint32_t *ix = indices + 3u * t;
+            if (!input_tri_ok(verts, nverts, ix)) continue;
+            fm_vec3_t tri[3];
+            for (int k = 0; k < 3; k++) memcpy(&tri[k], verts + 3u * ix[k], 12);
+            if (!tri_has_area(tri)) continue;
+            for (int k = 0; k < 3; k++)
+                for (int a = 0; a < 3; a++) {
+                    lo[a] = fminf(lo[a], tri[k].v[a]);
+                    hi[a] = fmaxf(hi[a], tri[k].v[a]);
+                }
+        }
+        for (int a = 0; a < 3; a++) {
+            if (!(lo[a] <= hi[a])) lo[a] = hi[a] = 0.0f;
+            m->qorigin[a] = lo[a];
+            m->qscale[a] = (hi[a] - lo[a]) / QMAX;
+        }
+        uint16_t *q = (uint16_t *)(void *)(base + m->off_verts);
+        for (uint32_t v = 0; v < nverts; v++) {
+            for (int a = 0; a < 3; a++) {
+                float x = verts[3u * v + a];
+                float f = m->qscale[a] > 0.0f ? (x - m->qorigin[a]) / m->qscale[a] + 0.5f : 0.0f;
+                if (!(f > 0.0f)) f = 0.0f;
+                if (f > QMAX) f = QMAX;
+                q[3u * v + a] = (uint16_t)f;
+            }
+        }
+    } else {
+        float *f = (float *)(void *)(base + m->off_verts);
+        for (uint32_t v = 0; v < nverts; v++) {
+            bool ok = vfinite(verts + 3u * v);
+            for (int a = 0; a < 3; a++) f[3u * v + a] = ok ? verts[3u * v + a] : 0.0f;
+        }
+    }
+    memset(base + l.off_verts + (uint64_t)nverts * (quant ? 6u : 12u), 0,
+           (size_t)(l.off_tris - l.off_verts - (uint64_t)nverts * (quant ? 6u : 12u)));
+
+    /* Triangles: usable ones compacted in input order; bounds and mean size from the
+     * stored (possibly quantized) vertices. */
+    uint32_t nt = 0;
+    float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    float extent_sum = 0.0f;
+    size_t stride = (flags & COLL_MESHF_IDX16) ? 6u : 12u;
+    for (uint32_t t = 0; t < ntris; t++) {
+        const uint32_t *ix = indices + 3u * t;
+        if (!input_tri_ok(verts, nverts, ix)) continue;
+        fm_vec3_t tri[3] = { vertex_of(m, ix[0]), vertex_of(m, ix[1]), vertex_of(m, ix[2]) };
+        if (!tri_has_area(tri)) continue;
+        if (l.off_tris + (uint64_t)(nt + 1u) * stride > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
+        uint8_t *dst = base + l.off_tris + (size_t)nt * stride;
+        if (flags & COLL_MESHF_IDX16) {
+            uint16_t *d = (uint16_t *)(void *)dst;
+            d[0] = (uint16_t)ix[0]; d[1] = (uint16_t)ix[1]; d[2] = (uint16_t)ix[2];
+        } else {
+            uint32_t *d = (uint32_t *)(void *)dst;
+            d[0] = ix[0]; d[1] = ix[1]; d[2] = ix[2];
+        }
+        float e = 0.0f;
+        for (int a = 0; a < 3; a++) {
+            float mn = fminf(tri[0].v[a], fminf(tri[1].v[a], tri[2].v[a]));
+            float mx = fmaxf(tri[0].v[a], fmaxf(tri[1].v[a], tri[2].v[a]));
+            lo[a] = fminf(lo[a], mn);
+            hi[a] = fmaxf(hi[a], mx);
+            e = fmaxf(e, mx - mn);
+        }
+        extent_sum += e;
+        nt++;
+    }
+    if (nt == 0)
+        for (int a = 0; a < 3; a++) lo[a] = hi[a] = 0.0f;
+    m->ntris = nt;
+    if (nt <= 65535u) m->flags |= COLL_MESHF_REF16;
+    flags = m->flags;
+    for (int a = 0; a < 3; a++) { m->bmin[a] = lo[a]; m->bmax[a] = hi[a]; }
+
+    /* Grid. */
+    grid_t g;
+    choose_grid(m, opts ? opts->cell_size : 0.0f, nt ? extent_sum / (float)nt : 1.0f, &g);
+    uint64_t ncells = (uint64_t)g.dims[0] * g.dims[1] * g.dims[2];
+    l = coll_mesh_layout_of(flags, nverts, nt, ncells, 0);
+    if (l.off_refs > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
+    uint64_t tris_end = l.off_tris + (uint64_t)nt * stride;
+    memset(base + tris_end, 0, (size_t)(l.off_cells - tris_end));
+    uint32_t *cells = (uint32_t *)(void *)(base + l.off_cells);
+    memset(cells, 0, (size_t)(l.off_refs - l.off_cells));
+    hist_ctx_t hc = { cells };
+    for (uint32_t t = 0; t < nt; t++) {
+        fm_vec3_t tri[3];
+        coll_mesh_tri_local(m, t, tri);
+        for_each_cell_of_tri(&g, tri, hist_visit, &hc);
+    }
+    uint32_t run = 0;
+    for (uint64_t c = 0; c < ncells; c++) { run += cells[c]; cells[c] = run; }
+    cells[ncells] = run;
+    l = coll_mesh_layout_of(flags, nverts, nt, ncells, run);
+    if (l.total > buf_size || l.total > 0xFFFFFFF8u) return COLL_ERR_BUFFER_TOO_SMALL;
+    fill_ctx_t fc = { cells, base + l.off_refs, (flags & COLL_MESHF_REF16) != 0, 0 };
+    for (uint32_t t = nt; t-- > 0;) {
+        fm_vec3_t tri[3];
+        fc.tri = t;
+        coll_mesh_tri_local(m, t, tri);
+        for_each_cell_of_tri(&g, tri, fill_visit, &fc);
+    }
+    uint64_t refs_end = l.off_refs + (uint64_t)run * ((flags & COLL_MESHF_REF16) ? 2u : 4u);
+    memset(base + refs_end, 0, (size_t)(l.total - refs_end));
+
+    m->nrefs = run;
+    for (int a = 0; a < 3; a++) { m->grid_origin[a] = g.origin[a]; m->dims[a] = g.dims[a]; }
+    m->cell_size = g.cell;
+    m->off_cells = (uint32_t)l.off_cells;
+    m->off_refs = (uint32_t)l.off_refs;
+    m->total_size = (uint32_t)l.total;
+    m->checksum = checksum_native(m);
+    m->magic = COLL_MESH_MAGIC_NATIVE;
+    *out = m;
+    return COLL_OK;
+}
+
+/* ------------------------------------------------------------------ load ----------- */
+
+static bool hdr_float_ok(float f) { return isfinite(f); }
+
+/* Validates the blob read with or without byte swapping; touches nothing. */
+static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
+{
+    struct coll_mesh_s h;
+    for (uint32_t w = 0; w < sizeof h / 4u; w++) {
+        uint32_t v = rd32(b + 4u * w, swap);
+        memcpy((uint8_t *)&h + 4u * w, &v, 4);
+    }
+    if (h.version != COLL_MESH_VERSION) return COLL_ERR_VERSION;
+    if (h.total_size > size) return COLL_ERR_TRUNCATED;
+    if (h.total_size < sizeof h || (h.total_size & 7u)) return COLL_ERR_CORRUPT;
+    if ((h.flags & ~(uint32_t)COLL_MESHF_ALL) || h.reserved != 0u) return COLL_ERR_CORRUPT;
+    uint64_t limit = h.total_size;
+    if (h.nverts > limit || h.ntris > limit || h.nrefs > limit) return COLL_ERR_CORRUPT;
+    uint64_t ncells = 1;
+    for (int a = 0; a < 3; a++) {
+        if (h.dims[a] == 0u || h.dims[a] > limit) return COLL_ERR_CORRUPT;
+        ncells *= h.dims[a];
+        if (ncells > limit) return COLL_ERR_CORRUPT;
+    }
+    for (int a = 0; a < 3; a++) {
+        if (!hdr_float_ok(h.bmin[a]) || !hdr_float_ok(h.bmax[a]) || !hdr_float_ok(h.grid_origin[a]) ||
+            !hdr_float_ok(h.qorigin[a]) || !hdr_float_ok(h.qscale[a]))
+            return COLL_ERR_CORRUPT;
+        if (!(h.bmin[a] <= h.bmax[a]) || h.qscale[a] < 0.0f) return COLL_ERR_CORRUPT;
+    }
+    if (!hdr_float_ok(h.cell_size) || !(h.cell_size > 0.0f)) return COLL_ERR_CORRUPT;
+    if ((h.flags & COLL_MESHF_IDX16) && h.nverts > 65536u) return COLL_ERR_CORRUPT;
+    if ((h.flags & COLL_MESHF_REF16) && h.ntris > 65536u) return COLL_ERR_CORRUPT;
+    coll_mesh_layout_t l = coll_mesh_layout_of(h.flags, h.nverts, h.ntris, ncells, h.nrefs);
+    if (l.off_verts != h.off_verts || l.off_tris != h.off_tris || l.off_cells != h.off_cells ||
+        l.off_refs != h.off_refs || l.total != h.total_size)
+        return COLL_ERR_CORRUPT;
+
+    section_t s[4];
+    sections_of(h.flags, &l, h.nverts, h.ntris, ncells, h.nrefs, s);
+    if (checksum_of(b, swap, s) != h.checksum) return COLL_ERR_CORRUPT;
+
+    /* Contents. */
+    if (!(h.flags & COLL_MESHF_QUANT)) {
+        for (uint64_t k = 0; k < s[0].count; k++)
+            if (!isfinite(u2f(rd32(b + s[0].off + 4u * k, swap)))) return COLL_ERR_CORRUPT;
+    }
+    for (uint64_t k = 0; k < s[1].count; k++) {
+        uint32_t v = s[1].esize == 2u ? rd16(b + s[1].off + 2u * k, swap) : rd32(b + s[1].off + 4u * k, swap);
+        if (v >= h.nverts) return COLL_ERR_CORRUPT;
+    }
+    uint32_t prev = 0;
+    for (uint64_t k = 0; k <= ncells; k++) {
+        uint32_t v = rd32(b + s[2].off + 4u * k, swap);
+        if ((k == 0 && v != 0u) || v < prev || v > h.nrefs) return COLL_ERR_CORRUPT;
+        prev = v;
+    }
+    if (prev != h.nrefs) return COLL_ERR_CORRUPT;
+    for (uint64_t k = 0; k < s[3].count; k++) {
+        uint32_t v = s[3].esize == 2u ? rd16(b + s[3].off + 2u * k, swap) : rd32(b + s[3].off + 4u * k, swap);
+        if (v >= h.ntris) return COLL_ERR_CORRUPT;
+    }
+    return COLL_OK;
+}
+
+static void swap_in_place(uint8_t *b)
+{
+    uint32_t *w = (uint32_t *)(void *)b;
+    for (uint32_t i = 0; i < sizeof(struct coll_mesh_s) / 4u; i++) w[i] = bswap32(w[i]);
+    const coll_mesh_t *m = (const coll_mesh_t *)(void *)b;
+    coll_mesh_layout_t l = layout_of_mesh(m);
+    section_t s[4];
+    sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
+    for (int i = 0; i < 4; i++) {
+        if (s[i].esize == 2u) {
+            uint16_t *p = (uint16_t *)(void *)(b + s[i].off);
+            for (uint64_t k = 0; k < s[i].count; k++) p[k] = bswap16(p[k]);
+        } else {
+            uint32_t *p = (uint32_t *)(void *)(b + s[i].off);
+            for (uint64_t k = 0; k < s[i].count; k++) p[k] = bswap32(p[k]);
+        }
+    }
+}
+
+coll_err_t coll_mesh_load(void *blob, size_t size, const coll_mesh_t **out)
+{
+    if (out) *out = NULL;
+    if (!blob || !out) return COLL_ERR_INVALID_ARG;
+    if ((uintptr_t)blob & 7u) return COLL_ERR_ALIGNMENT;
+    if (size < 4u) return COLL_ERR_TRUNCATED;
+    uint8_t *b = blob;
+    bool le = host_is_le();
+    bool native;
+    if (rd32(b, false) == COLL_MESH_MAGIC_NATIVE) native = true;
+    else if (rd32(b, le) == COLL_MESH_MAGIC_BLOB) native = false;
+    else return COLL_ERR_BAD_MAGIC;
+    if (size < sizeof(struct coll_mesh_s)) return COLL_ERR_TRUNCATED;
+    bool swap = !native && le;
+    coll_err_t err = validate(b, size, swap);
+    if (err != COLL_OK) return err;
+    if (swap) swap_in_place(b);
+    ((coll_mesh_t *)blob)->magic = COLL_MESH_MAGIC_NATIVE;
+    *out = blob;
+    return COLL_OK;
+}
+
+/* ------------------------------------------------------------------ write ---------- */
+
+coll_err_t coll_mesh_write_blob(const coll_mesh_t *m, void *out, size_t out_size, size_t *written)
+{
+    if (written) *written = 0;
+    if (!m || m->magic != COLL_MESH_MAGIC_NATIVE) return COLL_ERR_INVALID_ARG;
+    if (written) *written = m->total_size;
+    if (!out) return COLL_ERR_INVALID_ARG;
+    if (out_size < m->total_size) return COLL_ERR_BUFFER_TOO_SMALL;
+    uint8_t *o = out;
+    const uint8_t *b = (const uint8_t *)m;
+    memset(o, 0, m->total_size);
+    for (uint32_t w = 0; w < sizeof(struct coll_mesh_s) / 4u; w++) wr32be(o + 4u * w, rd32(b + 4u * w, false));
+    wr32be(o, COLL_MESH_MAGIC_BLOB);
+    coll_mesh_layout_t l = layout_of_mesh(m);
+    section_t s[4];
+    sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
+    for (int i = 0; i < 4; i++) {
+        for (uint64_t k = 0; k < s[i].count; k++) {
+            if (s[i].esize == 2u) wr16be(o + s[i].off + 2u * k, rd16(b + s[i].off + 2u * k, false));
+            else wr32be(o + s[i].off + 4u * k, rd32(b + s[i].off + 4u * k, false));
+        }
+    }
+    return COLL_OK;
+}

@@ -1,0 +1,119 @@
+/**
+ * @file mesh_format.h
+ * @brief The one definition of the collision-mesh layout, shared by the runtime
+ *        (src/coll/mesh.c) and the bake tool.
+ *
+ * A mesh is one contiguous, relocatable block (offsets, never pointers), 8-byte aligned:
+ *
+ *     header (coll_mesh_s, 128 bytes)
+ *     vertices   nverts x {float x,y,z}            (12 B each), or, with COLL_MESHF_QUANT,
+ *                nverts x {uint16 x,y,z}           (6 B each): local = qorigin + q * qscale
+ *     triangles  ntris x 3 vertex indices, uint16 with COLL_MESHF_IDX16, else uint32
+ *     cells      (ncells + 1) x uint32 prefix array: the triangles of cell c are
+ *                refs[cells[c] .. cells[c+1]), ncells = dims[0] * dims[1] * dims[2],
+ *                cell (x,y,z) has index x + dims[0] * (y + dims[1] * z)
+ *     refs       nrefs triangle indices, uint16 with COLL_MESHF_REF16, else uint32
+ *
+ * Every section starts at an 8-byte aligned offset that is a pure function of the counts
+ * and flags (coll_mesh_layout_of()); loaders recompute it and demand equality; the gaps
+ * are zero. Per-triangle normals are not stored: they are recomputed exactly from the
+ * vertices when a triangle is tested (0 bytes instead of 6).
+ *
+ * Byte order: the baked file (coll_mesh_write_blob()) is big-endian with magic
+ * COLL_MESH_MAGIC_BLOB ("CMSH"). A mesh in use (built, or loaded and byte-swapped in
+ * place) is in the machine's byte order with magic COLL_MESH_MAGIC_NATIVE ("CMSN"), so a
+ * second coll_mesh_load() of the same buffer recognises it and only re-validates.
+ *
+ * Checksum: FNV-1a style over element VALUES (not bytes), so it is the same in both byte
+ * orders: h = 2166136261; for each 32-bit header word from `version` on (skipping
+ * `checksum` itself), then every vertex component, index, cell entry and ref in section
+ * order: h = (h ^ value) * 16777619. Every single-element change alters it.
+ */
+#ifndef COLL_MESH_FORMAT_H
+#define COLL_MESH_FORMAT_H
+
+#include "coll/mesh.h"
+
+#define COLL_MESH_MAGIC_BLOB   0x434D5348u /**< "CMSH": big-endian baked file, not yet loaded */
+#define COLL_MESH_MAGIC_NATIVE 0x434D534Eu /**< "CMSN": native byte order, ready to use */
+#define COLL_MESH_VERSION      1u
+
+enum {
+    COLL_MESHF_QUANT = 1u << 0, /**< vertices are uint16 fixed point */
+    COLL_MESHF_IDX16 = 1u << 1, /**< triangle vertex indices are uint16 (nverts <= 65535) */
+    COLL_MESHF_REF16 = 1u << 2, /**< grid refs are uint16 (ntris <= 65535) */
+    COLL_MESHF_ALL   = 7u,
+};
+
+/** Header. All fields are 32-bit words (floats are IEEE-754 binary32). */
+struct coll_mesh_s {
+    uint32_t magic;       /**< COLL_MESH_MAGIC_BLOB on disk, _NATIVE in use */
+    uint32_t version;     /**< COLL_MESH_VERSION */
+    uint32_t flags;       /**< COLL_MESHF_* */
+    uint32_t total_size;  /**< bytes of the whole block, header included */
+    uint32_t checksum;    /**< see file comment */
+    uint32_t nverts;
+    uint32_t ntris;
+    uint32_t nrefs;
+    float bmin[3];        /**< local bounds of the stored triangles */
+    float bmax[3];
+    float grid_origin[3]; /**< corner of cell (0,0,0) */
+    float cell_size;      /**< cubic cell edge, meters, > 0 */
+    uint32_t dims[3];     /**< cells per axis, each >= 1 */
+    float qorigin[3];     /**< quantization origin (COLL_MESHF_QUANT), else 0 */
+    float qscale[3];      /**< quantization step per axis (COLL_MESHF_QUANT), else 0 */
+    uint32_t off_verts;   /**< byte offsets from the start of the header */
+    uint32_t off_tris;
+    uint32_t off_cells;
+    uint32_t off_refs;
+    uint32_t reserved;    /**< 0 */
+};
+_Static_assert(sizeof(struct coll_mesh_s) == 128, "on-disk mesh header must stay 128 bytes");
+
+/** Offsets of a layout, computed from the counts (64-bit so nothing overflows). */
+typedef struct {
+    uint64_t off_verts, off_tris, off_cells, off_refs, total;
+} coll_mesh_layout_t;
+
+/** Canonical layout for these counts and flags. */
+static inline coll_mesh_layout_t coll_mesh_layout_of(uint32_t flags, uint64_t nverts, uint64_t ntris,
+                                                     uint64_t ncells, uint64_t nrefs)
+{
+    coll_mesh_layout_t l;
+#define COLL_MESH_ALIGN8(x) (((x) + 7u) & ~(uint64_t)7u)
+    l.off_verts = sizeof(struct coll_mesh_s);
+    l.off_tris  = COLL_MESH_ALIGN8(l.off_verts + nverts * ((flags & COLL_MESHF_QUANT) ? 6u : 12u));
+    l.off_cells = COLL_MESH_ALIGN8(l.off_tris + ntris * ((flags & COLL_MESHF_IDX16) ? 6u : 12u));
+    l.off_refs  = COLL_MESH_ALIGN8(l.off_cells + (ncells + 1u) * 4u);
+    l.total     = COLL_MESH_ALIGN8(l.off_refs + nrefs * ((flags & COLL_MESHF_REF16) ? 2u : 4u));
+#undef COLL_MESH_ALIGN8
+    return l;
+}
+
+/**
+ * Writes the big-endian, checksummed blob of a built (or loaded) mesh to out (any
+ * alignment). *written = coll_mesh_size(m) on success; COLL_ERR_BUFFER_TOO_SMALL when
+ * out_size is smaller (written still tells the size needed). This is what the bake tool
+ * stores; coll_mesh_load() takes it back.
+ */
+coll_err_t coll_mesh_write_blob(const coll_mesh_t *m, void *out, size_t out_size, size_t *written);
+
+/* ---- internal accessors for the scene queries (src/coll only) ---- */
+
+/** Grid cell triangles: refs[begin..end). */
+static inline uint32_t coll_mesh_ref(const coll_mesh_t *m, uint32_t k)
+{
+    const uint8_t *base = (const uint8_t *)m;
+    if (m->flags & COLL_MESHF_REF16) return ((const uint16_t *)(const void *)(base + m->off_refs))[k];
+    return ((const uint32_t *)(const void *)(base + m->off_refs))[k];
+}
+
+static inline const uint32_t *coll_mesh_cells(const coll_mesh_t *m)
+{
+    return (const uint32_t *)(const void *)((const uint8_t *)m + m->off_cells);
+}
+
+/** Local-space vertices of triangle i (i < ntris, unchecked). */
+void coll_mesh_tri_local(const coll_mesh_t *m, uint32_t i, fm_vec3_t out[3]);
+
+#endif
