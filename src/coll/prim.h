@@ -61,4 +61,21 @@ typedef bool (*coll_tri_sweep_fn)(void *ctx, const fm_vec3_t seg[2], float r, co
 /** Installs a triangle-sweep method; fn = NULL restores the exact analytic one. */
 void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
 
+/* ---- additions (prim part) ---- */
+
+/**
+ * Touch tolerance, meters: a capsule closer than r but no closer than r - tol (tol =
+ * min(COLL_PRIM_TOUCH_TOL, r/4)) is touching, not overlapping. Sweeps report a hit only
+ * when the motion takes the capsule deeper than tol, at the first time it reaches r: a
+ * capsule sliding along a surface it touches, or touching and moving away, is not blocked.
+ */
+#define COLL_PRIM_TOUCH_TOL 1e-4f
+
+/**
+ * The triangle sweep the scene code calls: runs the installed method, or
+ * coll_capsule_triangle_sweep when none is installed. Same contract as that function.
+ */
+bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                    const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
+
 #endif

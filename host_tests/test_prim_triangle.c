@@ -1,0 +1,694 @@
+/* Capsule and ray against one triangle: specific features and random agreement with a
+ * double-precision reference (prim_ref.c: convex minimisation + bisection of the exact
+ * segment-triangle distance, independent of the analytic method under test). */
+#include "unity.h"
+#include "alloc_guard.h"
+#include "prim_ref.h"
+#include "coll/prim.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdint.h>
+
+#ifdef __mips__
+#define N_RANDOM_SWEEPS 1500
+#define N_RANDOM_RAYS 4000
+#else
+#define N_RANDOM_SWEEPS 20000
+#define N_RANDOM_RAYS 100000
+#endif
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static fm_vec3_t V(float x, float y, float z) { fm_vec3_t v; v.x = x; v.y = y; v.z = z; return v; }
+static prim_ref_v3 R(fm_vec3_t v) { return prim_ref_v(v.x, v.y, v.z); }
+static double ang(fm_vec3_t a, prim_ref_v3 b)
+{
+    double la = sqrt((double)a.x * a.x + (double)a.y * a.y + (double)a.z * a.z), lb = prim_ref_len(b);
+    double c = ((double)a.x * b.x + (double)a.y * b.y + (double)a.z * b.z) / (la * lb);
+    if (c > 1) c = 1;
+    if (c < -1) c = -1;
+    return acos(c);
+}
+
+/* ---- small deterministic RNG ---- */
+static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
+static uint32_t rnd_u32(void)
+{
+    rng_state ^= rng_state << 13; rng_state ^= rng_state >> 7; rng_state ^= rng_state << 17;
+    return (uint32_t)(rng_state >> 32);
+}
+static double rnd(void) { return rnd_u32() / 4294967296.0; }
+static double rnd_range(double a, double b) { return a + (b - a) * rnd(); }
+static prim_ref_v3 rnd_unit(void)
+{
+    for (;;) {
+        prim_ref_v3 v = prim_ref_v(rnd_range(-1, 1), rnd_range(-1, 1), rnd_range(-1, 1));
+        double l = prim_ref_len(v);
+        if (l > 0.1 && l <= 1) return prim_ref_scale(v, 1 / l);
+    }
+}
+static fm_vec3_t F(prim_ref_v3 v) { return V((float)v.x, (float)v.y, (float)v.z); }
+
+static const fm_vec3_t floor_tri[3] = { {{-10, 0, -10}}, {{10, 0, -10}}, {{0, 0, 10}} };
+
+/* ------------------------------------------------------------------ specific cases */
+
+static void test_face_hit_vertical_capsule(void)
+{
+    fm_vec3_t seg[2] = { V(0, 2, 0), V(0, 3, 0) };
+    fm_vec3_t d = V(0, -4, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.5f / 4.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.0f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, h.point.y);
+    /* from below: normal flips (two-sided) */
+    fm_vec3_t seg2[2] = { V(0, -2, 0), V(0, -3, 0) };
+    fm_vec3_t up = V(0, 4, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg2, 0.5f, &up, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.5f / 4.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, -1.0f, h.normal.y);
+    /* short of reach: miss */
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 0.3f, &h));
+}
+
+static void test_tilted_capsule_face_hit_uses_lower_end(void)
+{
+    fm_vec3_t seg[2] = { V(-1, 2, 0), V(1, 4, 0) };   /* lower end at y = 2 */
+    fm_vec3_t d = V(0, -10, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.25f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.175f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, -1.0f, h.point.x);
+}
+
+static void test_edge_hit(void)
+{
+    /* triangle edge along z at x = 1, y = 0; horizontal capsule along x moving -x, at y = 0.3 */
+    fm_vec3_t tri[3] = { V(1, 0, -1), V(1, 0, 1), V(-2, 0, 0) };
+    fm_vec3_t seg[2] = { V(3, 0.3f, -0.2f), V(3, 0.3f, 0.2f) }; /* parallel to the edge */
+    fm_vec3_t d = V(-4, 0, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &d, tri, 1.0f, &h));
+    /* touches when horizontal distance = sqrt(0.25 - 0.09) = 0.4 */
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, (2.0f - 0.4f) / 4.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.8f, h.normal.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.6f, h.normal.y);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.point.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, h.point.y);
+    /* crossed edges: capsule axis along y crosses the edge line (edge-edge interior) */
+    fm_vec3_t seg2[2] = { V(3, -0.5f, 0.1f), V(3, 0.5f, 0.1f) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg2, 0.5f, &d, tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.5f / 4.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.normal.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.1f, h.point.z);
+}
+
+static void test_vertex_hit(void)
+{
+    fm_vec3_t tri[3] = { V(0, 0, 0), V(-1, 0, 1), V(-1, 0, -1) };  /* vertex at origin points +x */
+    /* vertical capsule at x = 2 moving -x, segment spans y in [-1, 1]: the side hits the vertex */
+    fm_vec3_t seg[2] = { V(2, -1, 0), V(2, 1, 0) };
+    fm_vec3_t d = V(-2, 0, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &d, tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.75f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.normal.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.0f, h.point.x);
+    /* the capsule's end sphere against the vertex */
+    fm_vec3_t seg2[2] = { V(2, 0.3f, 0), V(4, 0.3f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg2, 0.5f, &d, tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, (2.0f - 0.4f) / 2.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.8f, h.normal.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.6f, h.normal.y);
+}
+
+static void test_sliding_along_face_does_not_block(void)
+{
+    /* resting exactly on the floor, and slightly inside (within the touch tolerance) */
+    const float ys[] = { 0.5f, 0.5f - 1e-7f, 0.5f - 5e-5f, 0.5f + 1e-7f };
+    for (unsigned i = 0; i < sizeof ys / sizeof ys[0]; i++) {
+        fm_vec3_t seg[2] = { V(0, ys[i], 0), V(0, ys[i] + 1.0f, 0) };
+        fm_vec3_t d = V(3, 0, 1);
+        coll_prim_hit_t h;
+        TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+        /* lying capsule sliding along its own axis and sideways */
+        fm_vec3_t seg2[2] = { V(-1, ys[i], 0), V(1, ys[i], 0) };
+        fm_vec3_t d2 = V(2, 0, 0);
+        TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg2, 0.5f, &d2, floor_tri, 1.0f, &h));
+        d2 = V(0, 0, 3);
+        TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg2, 0.5f, &d2, floor_tri, 1.0f, &h));
+    }
+    /* sliding across the shared edge of a flat quad: no ghost hit on the neighbour */
+    fm_vec3_t q0[3] = { V(0, 0, 0), V(4, 0, 0), V(4, 0, 4) };
+    fm_vec3_t q1[3] = { V(0, 0, 0), V(4, 0, 4), V(0, 0, 4) };
+    for (int k = 0; k < 50; k++) {
+        float y = 0.3f - (float)k * 1e-6f;
+        fm_vec3_t seg[2] = { V(3.0f, y, 1.0f), V(3.0f, y + 0.8f, 1.0f) };
+        fm_vec3_t d = V(-2.0f, 0.0f, 2.0f + (float)k * 0.01f);
+        coll_prim_hit_t h;
+        TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.3f, &d, q0, 1.0f, &h));
+        TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.3f, &d, q1, 1.0f, &h));
+    }
+}
+
+static void test_touching_and_moving_away_does_not_block(void)
+{
+    fm_vec3_t seg[2] = { V(0, 0.5f, 0), V(0, 1.5f, 0) };
+    fm_vec3_t d = V(0.5f, 1.0f, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    fm_vec3_t seg2[2] = { V(0, 0.5f - 5e-5f, 0), V(0, 1.5f, 0) };
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg2, 0.5f, &d, floor_tri, 1.0f, &h));
+    /* touching an edge and moving away from it */
+    fm_vec3_t tri[3] = { V(1, 0, -1), V(1, 0, 1), V(-2, 0, 0) };
+    fm_vec3_t seg3[2] = { V(1.5f, 0, -0.2f), V(1.5f, 0, 0.2f) };
+    fm_vec3_t away = V(1, 0.2f, 0.3f);
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg3, 0.5f, &away, tri, 1.0f, &h));
+    /* touching and moving in: blocked at t = 0 with depth 0 */
+    fm_vec3_t in = V(0, -1, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &in, floor_tri, 1.0f, &h));
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
+    /* a motion that ends within the tolerance is not a hit either */
+    fm_vec3_t seg4[2] = { V(0, 1.0f, 0), V(0, 2.0f, 0) };
+    fm_vec3_t land = V(0, -0.50005f, 0);
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg4, 0.5f, &land, floor_tri, 1.0f, &h));
+    land = V(0, -0.5003f, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg4, 0.5f, &land, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.5f / 0.5003f, h.t);
+}
+
+static void test_initial_overlap(void)
+{
+    coll_prim_hit_t h, o;
+    fm_vec3_t d = V(1, -1, 0);
+    /* end sphere 0.2 into the floor */
+    fm_vec3_t seg[2] = { V(0, 0.3f, 0), V(0, 1.3f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.2f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_overlap(seg, 0.5f, floor_tri, &o));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.2f, o.depth);
+    /* moving away still reports the overlap */
+    fm_vec3_t up = V(0, 1, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &up, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.2f, h.depth);
+    /* segment crosses the plane: push to the centre's side, clearing the lower end by r */
+    fm_vec3_t cross[2] = { V(0, -0.3f, 0), V(0.2f, 1.0f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_overlap(cross, 0.5f, floor_tri, &o));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.8f, o.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, o.normal.y);
+    fm_vec3_t cross2[2] = { V(0, 0.3f, 0), V(0.2f, -1.0f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_overlap(cross2, 0.5f, floor_tri, &o));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.8f, o.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, -1.0f, o.normal.y);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(cross2, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.8f, h.depth);
+    /* overlapping an edge from the side: push-out away from the edge */
+    fm_vec3_t tri[3] = { V(1, 0, -1), V(1, 0, 1), V(-2, 0, 0) };
+    fm_vec3_t side[2] = { V(1.3f, 0.4f, -0.2f), V(1.3f, 0.4f, 0.2f) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_overlap(side, 0.6f, tri, &o));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.1f, o.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.6f, o.normal.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.8f, o.normal.y);
+    /* within the touch tolerance: not an overlap */
+    fm_vec3_t touch[2] = { V(0, 0.5f - 5e-5f, 0), V(0, 1.5f, 0) };
+    TEST_ASSERT_FALSE(coll_capsule_triangle_overlap(touch, 0.5f, floor_tri, &o));
+    fm_vec3_t pen[2] = { V(0, 0.5f - 3e-4f, 0), V(0, 1.5f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_overlap(pen, 0.5f, floor_tri, &o));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 3e-4f, o.depth);
+}
+
+static void test_sphere_and_zero_displacement(void)
+{
+    coll_prim_hit_t h;
+    fm_vec3_t sph[2] = { V(0, 2, 0), V(0, 2, 0) };
+    fm_vec3_t d = V(0, -4, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(sph, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.5f / 4.0f, h.t);
+    /* sphere against an edge */
+    fm_vec3_t tri[3] = { V(1, 0, -1), V(1, 0, 1), V(-2, 0, 0) };
+    fm_vec3_t s2[2] = { V(3, 0.3f, 0), V(3, 0.3f, 0) };
+    fm_vec3_t dx = V(-4, 0, 0);
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(s2, 0.5f, &dx, tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.4f, h.t);
+    /* zero displacement: only an overlap counts */
+    fm_vec3_t z = V(0, 0, 0);
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(sph, 0.5f, &z, floor_tri, 1.0f, &h));
+    fm_vec3_t low[2] = { V(0, 0.2f, 0), V(0, 0.2f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(low, 0.5f, &z, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.3f, h.depth);
+    /* t_max = 0 behaves like zero displacement */
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(sph, 0.5f, &d, floor_tri, 0.0f, &h));
+}
+
+static void test_degenerate_input_never_nan(void)
+{
+    coll_prim_hit_t h;
+    fm_vec3_t pt[3] = { V(1, 1, 1), V(1, 1, 1), V(1, 1, 1) };
+    fm_vec3_t line[3] = { V(0, 0, 0), V(1, 0, 0), V(2, 0, 0) };
+    fm_vec3_t seg[2] = { V(0, 3, 0), V(0, 4, 0) };
+    fm_vec3_t d = V(0.5f, -5, 0.2f);
+    const fm_vec3_t *tris[2] = { pt, line };
+    for (int i = 0; i < 2; i++) {
+        if (coll_capsule_triangle_sweep(seg, 0.5f, &d, tris[i], 1.0f, &h)) {
+            TEST_ASSERT_TRUE(isfinite(h.t) && isfinite(h.normal.x) && isfinite(h.normal.y) && isfinite(h.normal.z));
+            TEST_ASSERT_FLOAT_WITHIN(1e-4f, 1.0f, sqrtf(h.normal.x * h.normal.x + h.normal.y * h.normal.y + h.normal.z * h.normal.z));
+        }
+        fm_vec3_t on[2] = { V(1, 1, 1), V(1, 1, 1) };
+        if (coll_capsule_triangle_overlap(on, 0.5f, tris[i], &h)) {
+            TEST_ASSERT_TRUE(isfinite(h.depth) && isfinite(h.normal.x) && isfinite(h.normal.y));
+        }
+        fm_vec3_t o = V(0.5f, 5, 0), rd = V(0, -1, 0);
+        if (coll_ray_triangle(&o, &rd, tris[i], 100.0f, &h)) { TEST_ASSERT_TRUE(isfinite(h.t)); }
+    }
+    /* the degenerate (line) triangle is still hit as a segment */
+    TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg, 0.5f, &d, line, 1.0f, &h));
+    /* NaN / inf / negative radius: rejected */
+    fm_vec3_t nan_seg[2] = { V(NAN, 0, 0), V(0, 1, 0) };
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(nan_seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_overlap(nan_seg, 0.5f, floor_tri, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, -1.0f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, NAN, &d, floor_tri, 1.0f, &h));
+    fm_vec3_t inf_d = V(INFINITY, 0, 0);
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &inf_d, floor_tri, 1.0f, &h));
+    fm_vec3_t o = V(0, 5, 0), zero = V(0, 0, 0);
+    TEST_ASSERT_FALSE(coll_ray_triangle(&o, &zero, floor_tri, 10.0f, &h));
+}
+
+static bool g_custom_called;
+static bool custom_sweep(void *ctx, const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                         const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+    (void)seg; (void)r; (void)disp; (void)tri; (void)t_max;
+    g_custom_called = true;
+    hit->t = *(float *)ctx;
+    return true;
+}
+
+static void test_sweep_method_dispatch(void)
+{
+    fm_vec3_t seg[2] = { V(0, 2, 0), V(0, 3, 0) };
+    fm_vec3_t d = V(0, -4, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_tri_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.375f, h.t);
+    float magic = 0.125f;
+    coll_set_tri_sweep_method(custom_sweep, &magic);
+    TEST_ASSERT_TRUE(coll_tri_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_TRUE(g_custom_called);
+    TEST_ASSERT_EQUAL_FLOAT(0.125f, h.t);
+    coll_set_tri_sweep_method(NULL, NULL);
+    TEST_ASSERT_TRUE(coll_tri_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.375f, h.t);
+}
+
+static void test_no_allocation(void)
+{
+    fm_vec3_t seg[2] = { V(0, 2, 0), V(0.3f, 3, 0) };
+    fm_vec3_t d = V(0.2f, -4, 0.1f), o = V(0, 5, 0), rd = V(0.1f, -1, 0);
+    coll_prim_hit_t h;
+    ASSERT_NO_ALLOC(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    ASSERT_NO_ALLOC(coll_capsule_triangle_overlap(seg, 0.5f, floor_tri, &h));
+    ASSERT_NO_ALLOC(coll_ray_triangle(&o, &rd, floor_tri, 10.0f, &h));
+    ASSERT_NO_ALLOC(coll_tri_sweep(seg, 0.5f, &d, floor_tri, 1.0f, &h));
+}
+
+/* ------------------------------------------------------------------ random vs reference */
+
+static void random_triangle(prim_ref_v3 tri[3], double L)
+{
+    int kind = (int)(rnd() * 5);
+    prim_ref_v3 c = prim_ref_scale(rnd_unit(), L * rnd());
+    if (kind <= 1) {                       /* ordinary */
+        for (int i = 0; i < 3; i++) tri[i] = prim_ref_add(c, prim_ref_scale(rnd_unit(), L * rnd_range(0.2, 1)));
+    } else if (kind == 2) {                /* long thin needle */
+        prim_ref_v3 ax = rnd_unit(), side = prim_ref_cross(ax, rnd_unit());
+        side = prim_ref_scale(side, 1 / prim_ref_len(side));
+        double w = L * pow(10, rnd_range(-4, -1));
+        tri[0] = prim_ref_add(c, prim_ref_scale(ax, -L));
+        tri[1] = prim_ref_add(c, prim_ref_scale(ax, L));
+        tri[2] = prim_ref_add(tri[rnd() < 0.5 ? 0 : 1], prim_ref_scale(side, w));
+    } else if (kind == 3) {                /* flat sliver: apex near the long edge */
+        prim_ref_v3 ax = rnd_unit(), side = prim_ref_cross(ax, rnd_unit());
+        side = prim_ref_scale(side, 1 / prim_ref_len(side));
+        double h = L * pow(10, rnd_range(-4, -1));
+        tri[0] = prim_ref_add(c, prim_ref_scale(ax, -L));
+        tri[1] = prim_ref_add(c, prim_ref_scale(ax, L));
+        tri[2] = prim_ref_add(prim_ref_add(c, prim_ref_scale(ax, L * rnd_range(-0.9, 0.9))), prim_ref_scale(side, h));
+    } else {                               /* large floor-like */
+        prim_ref_v3 n = rnd_unit(), u = prim_ref_cross(n, rnd_unit());
+        u = prim_ref_scale(u, 1 / prim_ref_len(u));
+        prim_ref_v3 w = prim_ref_cross(n, u);
+        for (int i = 0; i < 3; i++) {
+            double a = 2.0944 * i + rnd_range(-0.5, 0.5);
+            tri[i] = prim_ref_add(c, prim_ref_add(prim_ref_scale(u, 3 * L * cos(a)), prim_ref_scale(w, 3 * L * sin(a))));
+        }
+    }
+}
+
+static void dump_case(const fm_vec3_t seg[2], float r, fm_vec3_t d, const fm_vec3_t tri[3])
+{
+    printf("case: seg {%.9g,%.9g,%.9g} {%.9g,%.9g,%.9g} r %.9g d {%.9g,%.9g,%.9g}\n      tri {%.9g,%.9g,%.9g} {%.9g,%.9g,%.9g} {%.9g,%.9g,%.9g}\n",
+           seg[0].x, seg[0].y, seg[0].z, seg[1].x, seg[1].y, seg[1].z, r, d.x, d.y, d.z,
+           tri[0].x, tri[0].y, tri[0].z, tri[1].x, tri[1].y, tri[1].z, tri[2].x, tri[2].y, tri[2].z);
+}
+
+typedef struct {
+    int n, hits, overlaps, grazing, ambiguous, checked_t;
+    double max_dt_rel, max_dt_rel_graze_perp, max_dn_face, max_dn_feat, max_depth_err, max_fdev;
+} sweep_stats_t;
+
+static void random_sweep_once(sweep_stats_t *st, double offset_scale)
+{
+    prim_ref_v3 rt[3];
+    double L = pow(10, rnd_range(-1, 1.2));
+    random_triangle(rt, L);
+    double r = exp(rnd_range(log(0.02), log(10.0)));
+    double hh = rnd() < 0.15 ? 0 : rnd_range(0, 2) * (rnd() < 0.5 ? r : 1);
+    prim_ref_v3 ax = rnd_unit();
+    /* a point on the triangle as target */
+    double b1 = rnd(), b2 = rnd();
+    if (b1 + b2 > 1) { b1 = 1 - b1; b2 = 1 - b2; }
+    prim_ref_v3 tp = prim_ref_add(rt[0], prim_ref_add(prim_ref_scale(prim_ref_sub(rt[1], rt[0]), b1),
+                                                       prim_ref_scale(prim_ref_sub(rt[2], rt[0]), b2)));
+    prim_ref_v3 start = prim_ref_add(tp, prim_ref_scale(rnd_unit(), (r + hh) * rnd_range(0.5, 3) + L * rnd_range(0, 0.5)));
+    prim_ref_v3 dir = prim_ref_sub(prim_ref_add(tp, prim_ref_scale(rnd_unit(), rnd_range(0, r + hh + 0.3 * L))), start);
+    double dl = prim_ref_len(dir);
+    prim_ref_v3 d = prim_ref_scale(dir, rnd_range(0.3, 2.5));
+    if (rnd() < 0.1) { /* motion parallel to the face */
+        prim_ref_v3 n = prim_ref_cross(prim_ref_sub(rt[1], rt[0]), prim_ref_sub(rt[2], rt[0]));
+        double nn = prim_ref_dot(n, n);
+        if (nn > 0) d = prim_ref_sub(d, prim_ref_scale(n, prim_ref_dot(d, n) / nn));
+    }
+    (void)dl;
+    /* World coordinates offset from the origin by up to offset_scale and rounded to float
+     * there, then made relative to the capsule centre in float, as the scene code does. */
+    prim_ref_v3 off = prim_ref_scale(rnd_unit(), offset_scale * rnd());
+    fm_vec3_t tri[3], seg[2], fd;
+    fm_vec3_t wc = F(prim_ref_add(start, off));
+    for (int i = 0; i < 3; i++) {
+        fm_vec3_t w = F(prim_ref_add(rt[i], off));
+        tri[i] = V(w.x - wc.x, w.y - wc.y, w.z - wc.z);
+    }
+    fm_vec3_t fax = F(prim_ref_scale(ax, hh));
+    seg[0] = V(-fax.x, -fax.y, -fax.z);
+    seg[1] = fax;
+    fd = F(d);
+    float fr = (float)r;
+    /* the reference sees exactly the float inputs */
+    prim_ref_captri_t ctx;
+    ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = R(fd);
+    for (int i = 0; i < 3; i++) ctx.tri[i] = R(tri[i]);
+    double rr = fr;
+    double tol = fmin(1e-4, rr / 4);
+    prim_ref_sweep_t ref;
+    prim_ref_sweep(prim_ref_captri_fn, &ctx, rr, 1.0, &ref);
+
+    double scale = 1.0;
+    for (int i = 0; i < 3; i++) {
+        scale = fmax(scale, fabs(tri[i].x)); scale = fmax(scale, fabs(tri[i].y)); scale = fmax(scale, fabs(tri[i].z));
+    }
+    for (int i = 0; i < 2; i++) {
+        scale = fmax(scale, fabs(seg[i].x)); scale = fmax(scale, fabs(seg[i].y)); scale = fmax(scale, fabs(seg[i].z));
+    }
+    scale = fmax(scale, rr);
+    double margin = 3e-6 * scale;  /* a few float ulps of the largest coordinate */
+
+    coll_prim_hit_t h;
+    bool got = coll_capsule_triangle_sweep(seg, fr, &fd, tri, 1.0f, &h);
+    st->n++;
+    bool expect = ref.fmin < rr - tol;
+    if (fabs(ref.fmin - (rr - tol)) < margin || fabs(ref.f0 - (rr - tol)) < margin) { st->ambiguous++; return; }
+    if (got != expect) {
+        char msg[400];
+        snprintf(msg, sizeof msg, "hit mismatch: got %d expect %d f0=%.9g fmin=%.9g r=%.9g t_first=%.9g",
+                 got, expect, ref.f0, ref.fmin, rr, ref.t_first);
+        TEST_FAIL_MESSAGE(msg);
+    }
+    if (!got) return;
+    st->hits++;
+    TEST_ASSERT_TRUE(isfinite(h.t) && h.t >= 0 && h.t <= 1);
+    double nl = sqrt((double)h.normal.x * h.normal.x + (double)h.normal.y * h.normal.y + (double)h.normal.z * h.normal.z);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5, 1.0, nl);
+    if (ref.f0 < rr - tol) {          /* overlap */
+        st->overlaps++;
+        TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
+        TEST_ASSERT_TRUE(h.depth > 0);
+        if (ref.f0 > 1e-3 * fmax(1, rr)) {
+            double e = fabs(h.depth - (rr - ref.f0));
+            if (e > st->max_depth_err) st->max_depth_err = e;
+            TEST_ASSERT_TRUE_MESSAGE(e < 2 * margin + 1e-6, "overlap depth");
+            prim_ref_v3 n0;
+            prim_ref_captri_fn(&ctx, 0, &n0);
+            double a = ang(h.normal, n0);
+            if (a > st->max_dn_feat) st->max_dn_feat = a;
+            if (!(a < 2e-3)) {
+                char msg[400];
+                snprintf(msg, sizeof msg, "overlap normal err %.3g: f0 %.9g r %.9g n (%g %g %g) ref (%g %g %g)",
+                         a, ref.f0, rr, h.normal.x, h.normal.y, h.normal.z, n0.x, n0.y, n0.z);
+                dump_case(seg, fr, fd, tri);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        } else {
+            TEST_ASSERT_TRUE(h.depth >= rr - ref.f0 - margin);
+        }
+        return;
+    }
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.depth);
+    /* the reported time is a touching time: distance == r there (or t = 0 and <= r) */
+    double ft = prim_ref_captri_fn(&ctx, h.t, NULL);
+    double dev = h.t > 0 ? fabs(ft - rr) : fmax(0, ft - rr);
+    if (dev > st->max_fdev) st->max_fdev = dev;
+    TEST_ASSERT_TRUE_MESSAGE(dev < 4 * margin + 1e-6, "distance at reported t is not r");
+    double dlen = prim_ref_len(ctx.d);
+    double vn = -prim_ref_dot(ref.n, ctx.d) / dlen; /* approach speed along the normal, unit d */
+    double dt = fabs(h.t - ref.t_first);
+    if (vn > 0.05) {
+        st->checked_t++;
+        /* error in meters along d, relative to |d| */
+        double rel = dt;
+        if (rel > st->max_dt_rel) st->max_dt_rel = rel;
+        char msg[300];
+        snprintf(msg, sizeof msg, "t %.9g vs ref %.9g (vn %.3g |d| %.3g r %.3g)", h.t, ref.t_first, vn, dlen, rr);
+        TEST_ASSERT_TRUE_MESSAGE(dt * dlen <= 1e-4 * fmax(1.0, dlen) * 0.1 + 4 * margin / vn, msg);
+        double a = ang(h.normal, ref.n);
+        if (a > st->max_dn_feat) st->max_dn_feat = a;
+        if (!(a < 2e-3)) {
+            char msg2[400];
+            snprintf(msg2, sizeof msg2, "contact normal err %.3g: t %.9g ref %.9g vn %.3g r %.9g n (%g %g %g) ref (%g %g %g)",
+                     a, h.t, ref.t_first, vn, rr, h.normal.x, h.normal.y, h.normal.z, ref.n.x, ref.n.y, ref.n.z);
+            dump_case(seg, fr, fd, tri);
+            TEST_FAIL_MESSAGE(msg2);
+        }
+    } else {
+        st->grazing++;
+        double perp = dt * dlen * fmax(vn, 0);
+        if (perp > st->max_dt_rel_graze_perp) st->max_dt_rel_graze_perp = perp;
+    }
+}
+
+static void report_sweep(const char *name, const sweep_stats_t *st)
+{
+    printf("%s: %d sweeps, %d hits (%d overlaps, %d grazing), %d ambiguous; t checked on %d: max |dt| %.3g, "
+           "max normal err %.3g rad, max depth err %.3g m, max |dist(t)-r| %.3g m, grazing max dt*vn*|d| %.3g m\n",
+           name, st->n, st->hits, st->overlaps, st->grazing, st->ambiguous, st->checked_t, st->max_dt_rel,
+           st->max_dn_feat, st->max_depth_err, st->max_fdev, st->max_dt_rel_graze_perp);
+}
+
+static void test_random_sweeps_match_reference(void)
+{
+    sweep_stats_t st = { 0 };
+    for (int i = 0; i < N_RANDOM_SWEEPS; i++) random_sweep_once(&st, 0.0);
+    report_sweep("near origin", &st);
+    TEST_ASSERT_TRUE(st.hits > N_RANDOM_SWEEPS / 4);
+    TEST_ASSERT_TRUE(st.ambiguous < N_RANDOM_SWEEPS / 100);
+}
+
+static void test_random_sweeps_far_from_origin(void)
+{
+    sweep_stats_t st = { 0 };
+    for (int i = 0; i < N_RANDOM_SWEEPS / 4; i++) random_sweep_once(&st, 1000.0);
+    report_sweep("world offset up to 1 km, relative to the capsule", &st);
+    TEST_ASSERT_TRUE(st.hits > N_RANDOM_SWEEPS / 20);
+}
+
+/* ------------------------------------------------------------------ ray */
+
+static bool ref_ray_tri(prim_ref_v3 o, prim_ref_v3 d, const prim_ref_v3 t[3], double *s, double *bmin)
+{
+    prim_ref_v3 e1 = prim_ref_sub(t[1], t[0]), e2 = prim_ref_sub(t[2], t[0]);
+    prim_ref_v3 p = prim_ref_cross(d, e2);
+    double det = prim_ref_dot(e1, p);
+    if (det == 0) return false;
+    prim_ref_v3 tv = prim_ref_sub(o, t[0]);
+    double u = prim_ref_dot(tv, p) / det;
+    prim_ref_v3 q = prim_ref_cross(tv, e1);
+    double v = prim_ref_dot(d, q) / det;
+    *s = prim_ref_dot(e2, q) / det;
+    *bmin = fmin(u, fmin(v, 1 - u - v));
+    return *bmin >= 0;
+}
+
+static void test_random_rays_match_reference(void)
+{
+    int hits = 0, amb = 0;
+    double max_ds = 0, max_pt = 0, max_perp = 0;
+    for (int i = 0; i < N_RANDOM_RAYS; i++) {
+        prim_ref_v3 rt[3];
+        double L = pow(10, rnd_range(-1, 1.2));
+        random_triangle(rt, L);
+        fm_vec3_t tri[3];
+        for (int k = 0; k < 3; k++) { tri[k] = F(rt[k]); rt[k] = R(tri[k]); }
+        prim_ref_v3 target = prim_ref_add(rt[0], prim_ref_add(prim_ref_scale(prim_ref_sub(rt[1], rt[0]), rnd_range(-0.2, 1)),
+                                                               prim_ref_scale(prim_ref_sub(rt[2], rt[0]), rnd_range(-0.2, 1))));
+        fm_vec3_t o = F(prim_ref_add(target, prim_ref_scale(rnd_unit(), L * rnd_range(0.1, 3))));
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(target, R(o)), rnd_range(0.5, 2)));
+        double s_ref = -1, bmin = -1;
+        bool expect = ref_ray_tri(R(o), R(d), rt, &s_ref, &bmin) && s_ref >= 0 && s_ref <= 1;
+        coll_prim_hit_t h;
+        bool got = coll_ray_triangle(&o, &d, tri, 1.0f, &h);
+        prim_ref_v3 n = prim_ref_cross(prim_ref_sub(rt[1], rt[0]), prim_ref_sub(rt[2], rt[0]));
+        double cosang = fabs(prim_ref_dot(n, R(d))) / (prim_ref_len(n) * prim_ref_len(R(d)));
+        double lm = 0;
+        for (int k = 0; k < 3; k++) lm = fmax(lm, prim_ref_len(prim_ref_sub(rt[(k + 1) % 3], rt[k])));
+        /* barycentric resolution of float edge functions on the projected triangle */
+        double bres = 1e-5 + 16 * 1.2e-7 * lm * lm / (prim_ref_len(n) * fmax(cosang, 1e-9));
+        if (fabs(bmin) < bres || fabs(s_ref) < 1e-5 || fabs(s_ref - 1) < 1e-5 || cosang < 1e-3 ||
+            !isfinite(s_ref)) { amb++; continue; }
+        if (expect != got) {
+            char msg[300];
+            snprintf(msg, sizeof msg, "ray hit mismatch: got %d expect %d (bmin %.3g s_ref %.9g s %.9g cos %.3g L %.3g)",
+                     got, expect, bmin, s_ref, got ? h.t : -1.0f, cosang, L);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        if (!got) continue;
+        hits++;
+        double ds = fabs(h.t - s_ref) * prim_ref_len(R(d));
+        if (ds > max_ds) max_ds = ds;
+        /* float conditioning of the plane of a sliver: tilt ~ eps * Lmax / height */
+        double lmax = 0;
+        for (int k = 0; k < 3; k++) lmax = fmax(lmax, prim_ref_len(prim_ref_sub(rt[(k + 1) % 3], rt[k])));
+        double height = prim_ref_len(n) / lmax;
+        double bound = (1e-5 * fmax(1, L) + 8 * 1.2e-7 * lmax * lmax / height) / cosang;
+        if (ds * cosang > max_perp) max_perp = ds * cosang;
+        if (!(ds < bound)) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "ray distance err %.3g (L %.3g cos %.3g s %.9g ref %.9g)", ds, L, cosang, h.t, s_ref);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        TEST_ASSERT_TRUE(prim_ref_dot(R(h.normal), R(d)) <= 0);
+        prim_ref_v3 p = prim_ref_add(R(o), prim_ref_scale(R(d), s_ref));
+        double pe = prim_ref_len(prim_ref_sub(p, R(h.point)));
+        if (pe > max_pt) max_pt = pe;
+    }
+    printf("rays: %d random, %d hits, %d near edges/grazing skipped; max distance err %.3g m "
+           "(perpendicular to the plane %.3g m), max point err %.3g m\n", N_RANDOM_RAYS, hits, amb, max_ds, max_perp, max_pt);
+    TEST_ASSERT_TRUE(hits > N_RANDOM_RAYS / 10);
+}
+
+static void test_ray_watertight_on_shared_edge(void)
+{
+    int trials = 0, both = 0, fails = 0;
+    for (int i = 0; i < N_RANDOM_RAYS / 4; i++) {
+        double L = pow(10, rnd_range(-1, 1.5));
+        prim_ref_v3 c = prim_ref_scale(rnd_unit(), L * rnd_range(0, 10));
+        fm_vec3_t A = F(prim_ref_add(c, prim_ref_scale(rnd_unit(), L)));
+        fm_vec3_t B = F(prim_ref_add(c, prim_ref_scale(rnd_unit(), L)));
+        fm_vec3_t P = F(prim_ref_add(c, prim_ref_scale(rnd_unit(), L)));
+        fm_vec3_t Q = F(prim_ref_add(c, prim_ref_scale(rnd_unit(), L)));
+        /* a folded quad with consistent winding: (A,B,P) and (B,A,Q), the second rotated so
+         * the shared edge sits in different vertex slots */
+        fm_vec3_t t1[3] = { A, B, P };
+        fm_vec3_t t2[3];
+        switch (i % 3) {
+        case 0: t2[0] = B; t2[1] = A; t2[2] = Q; break;
+        case 1: t2[0] = Q; t2[1] = B; t2[2] = A; break;
+        default: t2[0] = A; t2[1] = Q; t2[2] = B; break;
+        }
+        prim_ref_v3 n1 = prim_ref_cross(prim_ref_sub(R(B), R(A)), prim_ref_sub(R(P), R(A)));
+        prim_ref_v3 n2 = prim_ref_cross(prim_ref_sub(R(A), R(B)), prim_ref_sub(R(Q), R(B)));
+        double w = rnd_range(0.02, 0.98);
+        fm_vec3_t e = F(prim_ref_add(R(A), prim_ref_scale(prim_ref_sub(R(B), R(A)), w)));
+        fm_vec3_t o = F(prim_ref_add(R(e), prim_ref_scale(rnd_unit(), L * rnd_range(0.5, 5))));
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(R(e), R(o)), 2.0));
+        /* Seen along the ray, the two halves lie on opposite sides of the shared edge when
+         * the ray meets both from the same side (both front or both back): then the closed
+         * union covers the edge and the ray must hit. Otherwise the ray looks into the fold's
+         * gap and may miss both in exact arithmetic too. */
+        double c1 = prim_ref_dot(n1, R(d)) / (prim_ref_len(n1) * prim_ref_len(R(d)));
+        double c2 = prim_ref_dot(n2, R(d)) / (prim_ref_len(n2) * prim_ref_len(R(d)));
+        if (!(c1 * c2 > 0) || fabs(c1) < 1e-3 || fabs(c2) < 1e-3) continue;
+        trials++;
+        coll_prim_hit_t h1, h2;
+        bool g1 = coll_ray_triangle(&o, &d, t1, 1.0f, &h1);
+        bool g2 = coll_ray_triangle(&o, &d, t2, 1.0f, &h2);
+        if (g1 && g2) both++;
+        if (!g1 && !g2) fails++;
+    }
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, fails, "ray slipped through the shared edge of a folded quad");
+    TEST_ASSERT_TRUE(trials > N_RANDOM_RAYS / 20);
+    /* coplanar quad, rays aimed at points on the diagonal from many directions */
+    fm_vec3_t q0[3] = { V(0, 0, 0), V(1.3f, 0.1f, 0.2f), V(1.1f, 0.7f, 2.9f) };
+    fm_vec3_t q1[3] = { V(0, 0, 0), V(1.1f, 0.7f, 2.9f), V(0.58f, 0.66f, 2.82f) }; /* planar */
+    int slips = 0;
+    for (int i = 0; i < N_RANDOM_RAYS / 4; i++) {
+        float w = (float)rnd_range(0.001, 0.999);
+        fm_vec3_t e = V(q0[2].x * w, q0[2].y * w, q0[2].z * w);
+        prim_ref_v3 dir = rnd_unit();
+        fm_vec3_t o = F(prim_ref_add(R(e), prim_ref_scale(dir, rnd_range(0.1, 30))));
+        fm_vec3_t d = V(e.x - o.x, e.y - o.y, e.z - o.z);
+        coll_prim_hit_t h;
+        if (!coll_ray_triangle(&o, &d, q0, 2.0f, &h) && !coll_ray_triangle(&o, &d, q1, 2.0f, &h)) slips++;
+    }
+    printf("watertight: %d folded-edge rays (%d hit both), %d coplanar-diagonal rays, %d slipped\n",
+           trials, both, N_RANDOM_RAYS / 4, slips);
+    TEST_ASSERT_EQUAL_INT(0, slips);
+}
+
+static void test_ray_triangle_basics(void)
+{
+    coll_prim_hit_t h;
+    fm_vec3_t o = V(1, 5, 1), d = V(0, -2, 0);
+    TEST_ASSERT_TRUE(coll_ray_triangle(&o, &d, floor_tri, 10.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 2.5f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.point.x);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, h.point.y);
+    TEST_ASSERT_FALSE(coll_ray_triangle(&o, &d, floor_tri, 2.0f, &h));
+    fm_vec3_t o2 = V(1, -5, 1), d2 = V(0, 1, 0);
+    TEST_ASSERT_TRUE(coll_ray_triangle(&o2, &d2, floor_tri, 10.0f, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, -1.0f, h.normal.y);
+    fm_vec3_t away = V(0, 1, 0);
+    TEST_ASSERT_FALSE(coll_ray_triangle(&o, &away, floor_tri, 10.0f, &h));
+    fm_vec3_t par = V(1, 0, 0), o3 = V(-20, 0, 0);
+    TEST_ASSERT_FALSE(coll_ray_triangle(&o3, &par, floor_tri, 100.0f, &h));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_face_hit_vertical_capsule);
+    RUN_TEST(test_tilted_capsule_face_hit_uses_lower_end);
+    RUN_TEST(test_edge_hit);
+    RUN_TEST(test_vertex_hit);
+    RUN_TEST(test_sliding_along_face_does_not_block);
+    RUN_TEST(test_touching_and_moving_away_does_not_block);
+    RUN_TEST(test_initial_overlap);
+    RUN_TEST(test_sphere_and_zero_displacement);
+    RUN_TEST(test_degenerate_input_never_nan);
+    RUN_TEST(test_sweep_method_dispatch);
+    RUN_TEST(test_no_allocation);
+    RUN_TEST(test_ray_triangle_basics);
+    RUN_TEST(test_random_rays_match_reference);
+    RUN_TEST(test_ray_watertight_on_shared_edge);
+    RUN_TEST(test_random_sweeps_match_reference);
+    RUN_TEST(test_random_sweeps_far_from_origin);
+    return UNITY_END();
+}

@@ -1,0 +1,453 @@
+/**
+ * @file prim_triangle.c
+ * @brief Ray and capsule against one triangle: watertight ray test, exact capsule sweep
+ *        (time of impact) and static overlap with minimum-translation push-out.
+ *
+ * The sweep works in configuration space: the capsule (segment S, radius r) moving by d
+ * touches triangle T at the first t where dist(S + t d, T) = r, i.e. where the point t*d
+ * enters K = T (+) -S (+) ball(r). K is convex; its boundary is covered by pieces that are
+ * each a subset of K, so the earliest entry over all pieces is the exact entry into K:
+ *  - the triangle's two offset faces, for the segment's endpoints (ray vs offset face),
+ *  - the triangle edges' cylinders, for the segment's endpoints (ray vs cylinder side),
+ *  - the capsule (S, r) for each triangle vertex moving by -d (ray vs capsule),
+ *  - the offset parallelogram faces edge x S (edge-edge interior contacts).
+ * Each piece's normal at the entry point is K's normal there (K is C1), so the contact
+ * normal is exact too.
+ *
+ * Touch tolerance (COLL_PRIM_TOUCH_TOL): a capsule whose distance to the triangle is at
+ * least r - tol is touching, not overlapping. A sweep only reports a hit when the motion
+ * within [0, t_max] brings the capsule deeper than tol into the triangle; it then reports
+ * the first time the distance reaches r (clamped at 0). So sliding exactly along a
+ * surface, or touching and moving away, never blocks, while a real approach is blocked
+ * at the exact touching time.
+ */
+#include "prim_util.h"
+
+/* ---------------------------------------------------------------- elementary ray tests */
+
+bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+{
+    fm_vec3_t m = pv_sub(o, c);
+    float cc = pv_dot(m, m) - r * r;
+    if (cc <= 0.0f) {
+        out->s = 0.0f;
+        out->n = pv_unit_or(m, pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
+        return true;
+    }
+    float b = pv_dot(m, d);
+    if (b >= 0.0f) return false;
+    float a = pv_dot(d, d);
+    float disc = b * b - a * cc;
+    if (disc < 0.0f) return false;
+    float s = cc / (-b + sqrtf(disc)); /* smaller root without cancellation */
+    if (!(s <= s_max)) return false;
+    out->s = s;
+    out->n = pv_unit_or(pv_madd(m, d, s), pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
+    return true;
+}
+
+bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                            prim_ray_t *out)
+{
+    fm_vec3_t ax = pv_sub(c1, c0);
+    float ss = pv_dot(ax, ax);
+    if (!(ss > 1e-20f)) return false;
+    fm_vec3_t m = pv_sub(o, c0);
+    float md = pv_dot(m, ax), dd = pv_dot(d, ax);
+    fm_vec3_t mp = pv_madd(m, ax, -md / ss);   /* components perpendicular to the axis */
+    fm_vec3_t dp = pv_madd(d, ax, -dd / ss);
+    float cc = pv_dot(mp, mp) - r * r;
+    if (cc <= 0.0f) {
+        if (md < 0.0f || md > ss) return false; /* the end spheres cover this */
+        out->s = 0.0f;
+        out->n = pv_unit_or(mp, pv_unit_or(pv_neg(dp), pv_make(0.0f, 1.0f, 0.0f)));
+        return true;
+    }
+    float b = pv_dot(mp, dp);
+    if (b >= 0.0f) return false;
+    float a = pv_dot(dp, dp);
+    float disc = b * b - a * cc;
+    if (disc < 0.0f) return false;
+    float s = cc / (-b + sqrtf(disc));
+    if (!(s <= s_max)) return false;
+    float axial = md + s * dd;
+    if (axial < 0.0f || axial > ss) return false;
+    out->s = s;
+    out->n = pv_unit_or(pv_madd(mp, dp, s), pv_unit_or(pv_neg(dp), pv_make(0.0f, 1.0f, 0.0f)));
+    return true;
+}
+
+bool prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                      prim_ray_t *out)
+{
+    prim_ray_t h;
+    bool any = false;
+    if (prim_ray_cylinder_side(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
+    if (prim_ray_sphere(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
+    if (prim_ray_sphere(o, d, c1, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; any = true; }
+    return any;
+}
+
+float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                           float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
+{
+    const float eps = 1e-20f;
+    fm_vec3_t d1 = pv_sub(p1, p0), d2 = pv_sub(q1, q0), w = pv_sub(p0, q0);
+    float a = pv_dot(d1, d1), e = pv_dot(d2, d2), f = pv_dot(d2, w);
+    float s, t;
+    if (a <= eps && e <= eps) {
+        s = 0.0f; t = 0.0f;
+    } else if (a <= eps) {
+        s = 0.0f; t = pv_clamp01(f / e);
+    } else {
+        float c = pv_dot(d1, w);
+        if (e <= eps) {
+            t = 0.0f; s = pv_clamp01(-c / a);
+        } else {
+            float b = pv_dot(d1, d2);
+            float denom = pv_len2(pv_cross(d1, d2)); /* = a e - b^2 without cancellation */
+            s = denom > 1e-12f * a * e ? pv_clamp01((b * f - c * e) / denom) : 0.0f;
+            t = (b * s + f) / e;
+            if (t < 0.0f) { t = 0.0f; s = pv_clamp01(-c / a); }
+            else if (t > 1.0f) { t = 1.0f; s = pv_clamp01((b - c) / a); }
+        }
+    }
+    fm_vec3_t x = pv_madd(p0, d1, s), y = pv_madd(q0, d2, t);
+    if (u_out) *u_out = s;
+    if (v_out) *v_out = t;
+    if (cp) *cp = x;
+    if (cq) *cq = y;
+    return pv_len2(pv_sub(x, y));
+}
+
+/* ---------------------------------------------------------------- triangle helpers */
+
+typedef struct {
+    fm_vec3_t v[3];
+    fm_vec3_t e[3];    /* v[i+1] - v[i] */
+    fm_vec3_t nraw;    /* (v1 - v0) x (v2 - v0) */
+    fm_vec3_t n;       /* unit normal when has_face */
+    bool has_face;
+} tri_t;
+
+static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
+{
+    for (int i = 0; i < 3; i++) t->v[i] = tri[i];
+    for (int i = 0; i < 3; i++) t->e[i] = pv_sub(t->v[(i + 1) % 3], t->v[i]);
+    /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
+    float l0 = pv_len2(t->e[0]), l1 = pv_len2(t->e[1]), l2 = pv_len2(t->e[2]);
+    if (l0 >= l1 && l0 >= l2)      t->nraw = pv_cross(t->e[1], t->e[2]);
+    else if (l1 >= l0 && l1 >= l2) t->nraw = pv_cross(t->e[2], t->e[0]);
+    else                           t->nraw = pv_cross(t->e[0], t->e[1]);
+    float nn = pv_len2(t->nraw);
+    float lmax = pv_maxf(l0, pv_maxf(l1, l2));
+    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && pv_finite(nn);
+    t->n = t->has_face ? pv_scale(t->nraw, 1.0f / sqrtf(nn)) : pv_make(0.0f, 0.0f, 0.0f);
+}
+
+/** Point q (on or near the plane) inside the closed triangle. */
+static bool tri_contains(const tri_t *t, fm_vec3_t q)
+{
+    for (int i = 0; i < 3; i++)
+        if (pv_dot(pv_cross(t->e[i], pv_sub(q, t->v[i])), t->nraw) < 0.0f) return false;
+    return true;
+}
+
+/** Squared distance of segment a..b to the triangle with closest points. */
+static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+{
+    float best = 3.0e38f;
+    if (t->has_face) {
+        float ha = pv_dot(t->n, pv_sub(a, t->v[0]));
+        float hb = pv_dot(t->n, pv_sub(b, t->v[0]));
+        if ((ha <= 0.0f && hb >= 0.0f) || (ha >= 0.0f && hb <= 0.0f)) {
+            float den = ha - hb;
+            fm_vec3_t x = den != 0.0f ? pv_madd(a, pv_sub(b, a), ha / den) : a;
+            x = pv_madd(x, t->n, -pv_dot(t->n, pv_sub(x, t->v[0])));
+            if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
+        }
+        fm_vec3_t q = pv_madd(a, t->n, -ha);
+        if (tri_contains(t, q)) { best = ha * ha; *ps = a; *pt = q; }
+        q = pv_madd(b, t->n, -hb);
+        if (hb * hb < best && tri_contains(t, q)) { best = hb * hb; *ps = b; *pt = q; }
+    }
+    for (int i = 0; i < 3; i++) {
+        fm_vec3_t cp, cq;
+        float d2 = prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], NULL, NULL, &cp, &cq);
+        if (d2 < best) { best = d2; *ps = cp; *pt = cq; }
+    }
+    return best;
+}
+
+/** Overlap result from the closest points at distance sqrt(d2) < r. */
+static void overlap_result(const tri_t *t, fm_vec3_t a, fm_vec3_t b, float r, float d2,
+                           fm_vec3_t ps, fm_vec3_t pt, coll_prim_hit_t *hit)
+{
+    float dist = sqrtf(d2);
+    hit->t = 0.0f;
+    hit->point = pt;
+    if (dist > 1e-6f || !t->has_face) {
+        fm_vec3_t fb = t->has_face ? t->n : pv_make(0.0f, 1.0f, 0.0f);
+        hit->normal = pv_unit_or(pv_sub(ps, pt), fb);
+        hit->depth = r - dist;
+        return;
+    }
+    /* The segment touches or crosses the face: push along the face normal to the side of
+     * the segment's centre, far enough that the endpoint behind the plane clears it by r. */
+    float ha = pv_dot(t->n, pv_sub(a, t->v[0]));
+    float hb = pv_dot(t->n, pv_sub(b, t->v[0]));
+    float hc = ha + hb;
+    float sig = hc > 0.0f ? 1.0f : (hc < 0.0f ? -1.0f : (ha >= hb ? 1.0f : -1.0f));
+    if (ha == hb) sig = 1.0f;
+    hit->normal = pv_scale(t->n, sig);
+    hit->depth = r - pv_minf(sig * ha, sig * hb);
+}
+
+/* ---------------------------------------------------------------- sweep */
+
+typedef struct {
+    tri_t tri;
+    fm_vec3_t a, b, s, d;
+    float ss;
+    bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
+} sweep_ctx_t;
+
+typedef struct {
+    float t;
+    fm_vec3_t n, p;
+    bool hit;
+} feat_hit_t;
+
+static void take(feat_hit_t *best, float t, fm_vec3_t n, fm_vec3_t p)
+{
+    if (!best->hit || t < best->t) { best->hit = true; best->t = t; best->n = n; best->p = p; }
+}
+
+/** Endpoint p moving by d against the offset face on its side. */
+static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, feat_hit_t *best)
+{
+    const tri_t *t = &c->tri;
+    float h = pv_dot(t->n, pv_sub(p, t->v[0]));
+    float dn = pv_dot(t->n, c->d);
+    float sig = 1.0f;
+    if (h < 0.0f) { sig = -1.0f; h = -h; dn = -dn; }
+    if (dn >= 0.0f) return;
+    float tt = (h - r) / -dn;
+    if (tt < 0.0f) tt = 0.0f;
+    if (!(tt <= t_max) || (best->hit && tt >= best->t)) return;
+    fm_vec3_t q = pv_madd(pv_madd(p, c->d, tt), t->n, -sig * (h + tt * dn));
+    if (!tri_contains(t, q)) return;
+    take(best, tt, pv_scale(t->n, sig), q);
+}
+
+/** Interior of the inner segment against the interior of triangle edge i. */
+static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, feat_hit_t *best)
+{
+    fm_vec3_t e = c->tri.e[i], e0 = c->tri.v[i];
+    fm_vec3_t m = pv_cross(c->s, e);
+    float mm = pv_dot(m, m);
+    if (!(mm > 1e-10f * c->ss * pv_dot(e, e)) || !(mm > 1e-30f)) return; /* parallel: cylinders cover it */
+    fm_vec3_t mu = pv_scale(m, 1.0f / sqrtf(mm));
+    float h = pv_dot(mu, pv_sub(c->a, e0));
+    float dn = pv_dot(mu, c->d);
+    float sig = 1.0f;
+    if (h < 0.0f) { sig = -1.0f; h = -h; dn = -dn; }
+    if (dn >= 0.0f) return;
+    float tt = (h - r) / -dn;
+    if (tt < 0.0f) tt = 0.0f;
+    if (!(tt <= t_max) || (best->hit && tt >= best->t)) return;
+    fm_vec3_t w = pv_sub(e0, pv_madd(c->a, c->d, tt));
+    float u = pv_dot(pv_cross(w, e), m) / mm;
+    float v = pv_dot(pv_cross(w, c->s), m) / mm;
+    if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) return;
+    take(best, tt, pv_scale(mu, sig), pv_madd(e0, e, v));
+}
+
+/** Earliest entry of t*d into K(r) over [0, t_max]; any = stop at the first piece found. */
+static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any, feat_hit_t *best)
+{
+    const tri_t *t = &c->tri;
+    int nend = c->sphere ? 1 : 2;
+    fm_vec3_t ends[2] = { c->a, c->b };
+    best->hit = false;
+    prim_ray_t h;
+    for (int k = 0; k < nend; k++) {
+        if (t->has_face) {
+            face_test(c, ends[k], r, t_max, best);
+            if (any && best->hit) return true;
+        }
+        for (int i = 0; i < 3; i++) {
+            float lim = best->hit ? best->t : t_max;
+            if (prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
+                take(best, h.s, h.n, pv_madd(pv_madd(ends[k], c->d, h.s), h.n, -r));
+                if (any) return true;
+            }
+        }
+    }
+    fm_vec3_t nd = pv_neg(c->d);
+    for (int i = 0; i < 3; i++) {
+        float lim = best->hit ? best->t : t_max;
+        bool got = c->sphere ? prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
+                             : prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
+        if (got) {
+            take(best, h.s, pv_neg(h.n), t->v[i]);
+            if (any) return true;
+        }
+    }
+    if (!c->sphere) {
+        for (int i = 0; i < 3; i++) {
+            edge_edge_test(c, i, r, t_max, best);
+            if (any && best->hit) return true;
+        }
+    }
+    return best->hit;
+}
+
+bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                                 const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+    if (!seg || !disp || !tri || !hit) return false;
+    if (!(r >= 0.0f) || !pv_finite(r) || !(t_max >= 0.0f) || !pv_finite(t_max)) return false;
+    if (!pv_finite3(seg[0]) || !pv_finite3(seg[1]) || !pv_finite3(*disp) ||
+        !pv_finite3(tri[0]) || !pv_finite3(tri[1]) || !pv_finite3(tri[2])) return false;
+
+    sweep_ctx_t c;
+    tri_setup(&c.tri, tri);
+    c.a = seg[0]; c.b = seg[1]; c.d = *disp;
+    c.s = pv_sub(c.b, c.a);
+    c.ss = pv_dot(c.s, c.s);
+    c.sphere = !(c.ss > 1e-14f);
+    if (c.sphere) { c.a = pv_madd(c.a, c.s, 0.5f); c.b = c.a; c.s = pv_make(0.0f, 0.0f, 0.0f); c.ss = 0.0f; }
+    bool moving = pv_dot(c.d, c.d) * t_max * t_max > 1e-24f;
+
+    /* Cull: both endpoints beyond the same offset plane over the whole motion. */
+    if (c.tri.has_face) {
+        float ha = pv_dot(c.tri.n, pv_sub(c.a, c.tri.v[0]));
+        float hb = pv_dot(c.tri.n, pv_sub(c.b, c.tri.v[0]));
+        float dd = moving ? pv_dot(c.tri.n, c.d) * t_max : 0.0f;
+        float lo = pv_minf(pv_minf(ha, hb), pv_minf(ha + dd, hb + dd));
+        float hi = pv_maxf(pv_maxf(ha, hb), pv_maxf(ha + dd, hb + dd));
+        if (lo > r || hi < -r) return false;
+    }
+
+    const float tol = pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    fm_vec3_t ps, pt;
+    float d2 = seg_tri_closest(&c.tri, c.a, c.b, &ps, &pt);
+    float rin = r - tol;
+    if (d2 < rin * rin) {
+        overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
+        return true;
+    }
+    if (!moving) return false;
+
+    feat_hit_t best;
+    if (d2 <= r * r) {
+        best.hit = true;
+        best.t = 0.0f;
+        best.n = pv_unit_or(pv_sub(ps, pt), c.tri.has_face ? c.tri.n : pv_make(0.0f, 1.0f, 0.0f));
+        best.p = pt;
+    } else if (!sweep_features(&c, r, t_max, false, &best)) {
+        return false;
+    }
+
+    /* Count the contact only when the motion goes deeper than the touch tolerance. */
+    fm_vec3_t off = pv_scale(c.d, t_max);
+    float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+    if (!(d2e < rin * rin)) {
+        feat_hit_t conf;
+        if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
+    }
+    hit->t = best.t;
+    hit->depth = 0.0f;
+    hit->normal = best.n;
+    hit->point = best.p;
+    if (best.t > 0.0f) {
+        /* The pieces meet tangentially, so which one won is decided by rounding near a
+         * junction; the closest points at the contact time give the normal smoothly. */
+        off = pv_scale(c.d, best.t);
+        d2 = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        if (d2 > 0.25f * r * r) {
+            hit->normal = pv_unit_or(pv_sub(ps, pt), best.n);
+            hit->point = pt;
+        }
+    }
+    return true;
+}
+
+bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                   coll_prim_hit_t *hit)
+{
+    if (!seg || !tri || !hit) return false;
+    if (!(r >= 0.0f) || !pv_finite(r)) return false;
+    if (!pv_finite3(seg[0]) || !pv_finite3(seg[1]) ||
+        !pv_finite3(tri[0]) || !pv_finite3(tri[1]) || !pv_finite3(tri[2])) return false;
+    tri_t t;
+    tri_setup(&t, tri);
+    fm_vec3_t ps, pt;
+    float d2 = seg_tri_closest(&t, seg[0], seg[1], &ps, &pt);
+    float rin = r - pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    if (!(d2 < rin * rin)) return false;
+    overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
+    return true;
+}
+
+/* ---------------------------------------------------------------- ray */
+
+/*
+ * Watertight ray/triangle (Woop, Benthin, Wald 2013): the ray is sheared to +z and the
+ * three edge functions are evaluated on the translated vertices. A shared edge is
+ * evaluated from the same two vertices in both triangles, giving exactly negated values,
+ * so a ray through the edge cannot slip between them.
+ */
+bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t tri[3],
+                       float s_max, coll_prim_hit_t *hit)
+{
+    if (!o || !d || !tri || !hit) return false;
+    if (!pv_finite3(*o) || !pv_finite3(*d) || !(s_max >= 0.0f)) return false;
+    int kz = 0;
+    float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
+    if (ay > ax && ay >= az) kz = 1;
+    else if (az > ax && az > ay) kz = 2;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d->v[kz] < 0.0f) { int tmp = kx; kx = ky; ky = tmp; }
+    float dz = d->v[kz];
+    if (dz == 0.0f) return false; /* zero direction */
+    float sx = d->v[kx] / dz, sy = d->v[ky] / dz, sz = 1.0f / dz;
+
+    fm_vec3_t A = pv_sub(tri[0], *o), B = pv_sub(tri[1], *o), C = pv_sub(tri[2], *o);
+    float Ax = A.v[kx] - sx * A.v[kz], Ay = A.v[ky] - sy * A.v[kz];
+    float Bx = B.v[kx] - sx * B.v[kz], By = B.v[ky] - sy * B.v[kz];
+    float Cx = C.v[kx] - sx * C.v[kz], Cy = C.v[ky] - sy * C.v[kz];
+    float U = Cx * By - Cy * Bx;
+    float V = Ax * Cy - Ay * Cx;
+    float W = Bx * Ay - By * Ax;
+    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
+    float det = U + V + W;
+    if (det == 0.0f || !pv_finite(det)) return false;
+    (void)sz;
+    /* The distance from the plane through the vertex shared by the two shortest edges:
+     * better conditioned than the sheared-z interpolation for slivers. */
+    tri_t t;
+    tri_setup(&t, tri);
+    int apex = 0;
+    {
+        float l0 = pv_len2(t.e[0]), l1 = pv_len2(t.e[1]), l2 = pv_len2(t.e[2]);
+        if (l0 >= l1 && l0 >= l2) apex = 2;
+        else if (l1 >= l0 && l1 >= l2) apex = 0;
+        else apex = 1;
+    }
+    float dn = pv_dot(t.nraw, *d);
+    if (dn == 0.0f) return false;
+    float s = pv_dot(t.nraw, pv_sub(tri[apex], *o)) / dn;
+    if (!(s >= 0.0f) || !(s <= s_max) || !pv_finite(s)) return false;
+
+    fm_vec3_t n = pv_unit_or(t.nraw, pv_unit_or(pv_neg(*d), pv_make(0.0f, 1.0f, 0.0f)));
+    if (pv_dot(n, *d) > 0.0f) n = pv_neg(n);
+    hit->t = s;
+    hit->depth = 0.0f;
+    hit->normal = n;
+    /* Barycentric point: exact on the triangle, even for grazing rays. */
+    float inv = 1.0f / det;
+    hit->point = pv_add(pv_add(pv_scale(tri[0], U * inv), pv_scale(tri[1], V * inv)), pv_scale(tri[2], W * inv));
+    return true;
+}

@@ -1,0 +1,63 @@
+/**
+ * @file prim_util.h
+ * @brief Private inline vector helpers and shared building blocks of prim_*.c
+ *        (ray vs sphere / cylinder / capsule, closest points of two segments).
+ *        Not part of any public header; float only.
+ */
+#ifndef COLL_PRIM_UTIL_H
+#define COLL_PRIM_UTIL_H
+
+#include <math.h>
+#include "coll/prim.h"
+
+static inline fm_vec3_t pv_make(float x, float y, float z) { fm_vec3_t v; v.x = x; v.y = y; v.z = z; return v; }
+static inline fm_vec3_t pv_add(fm_vec3_t a, fm_vec3_t b) { return pv_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline fm_vec3_t pv_sub(fm_vec3_t a, fm_vec3_t b) { return pv_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline fm_vec3_t pv_scale(fm_vec3_t a, float s) { return pv_make(a.x * s, a.y * s, a.z * s); }
+/** a + b * s */
+static inline fm_vec3_t pv_madd(fm_vec3_t a, fm_vec3_t b, float s) { return pv_make(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline float pv_dot(fm_vec3_t a, fm_vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline float pv_len2(fm_vec3_t a) { return pv_dot(a, a); }
+static inline fm_vec3_t pv_cross(fm_vec3_t a, fm_vec3_t b)
+{
+    return pv_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline fm_vec3_t pv_neg(fm_vec3_t a) { return pv_make(-a.x, -a.y, -a.z); }
+static inline float pv_clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
+static inline float pv_minf(float a, float b) { return a < b ? a : b; }
+static inline float pv_maxf(float a, float b) { return a > b ? a : b; }
+/** True for a finite float (NaN and infinities give false); needs no libm. */
+static inline bool pv_finite(float x) { return (x - x) == 0.0f; }
+static inline bool pv_finite3(fm_vec3_t v) { return pv_finite(v.x) && pv_finite(v.y) && pv_finite(v.z); }
+/** Unit vector along a, or `fallback` when a is (nearly) zero. */
+static inline fm_vec3_t pv_unit_or(fm_vec3_t a, fm_vec3_t fallback)
+{
+    float l2 = pv_len2(a);
+    if (!(l2 > 1e-30f) || !pv_finite(l2)) return fallback;
+    return pv_scale(a, 1.0f / sqrtf(l2));
+}
+
+/** Result of one elementary ray test: parameter, unit outward normal of the primitive. */
+typedef struct {
+    float s;
+    fm_vec3_t n;
+} prim_ray_t;
+
+/*
+ * Elementary ray tests, shared by the triangle sweep and the bodies. All return the
+ * earliest s in [0, s_max] at which o + s*d is on the primitive's surface while entering;
+ * an origin already inside gives s = 0 with the normal at the nearest surface point.
+ * The normal is the primitive's outward unit normal at the hit.
+ */
+bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out);
+/** Side of the finite cylinder around c0..c1 only (no caps). */
+bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                            prim_ray_t *out);
+/** Capsule = side + two spheres. */
+bool prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                      prim_ray_t *out);
+/** Closest points of segments p0..p1 and q0..q1 (degenerate segments allowed); returns dist^2. */
+float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                           float *u, float *v, fm_vec3_t *cp, fm_vec3_t *cq);
+
+#endif
