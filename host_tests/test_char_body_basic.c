@@ -25,7 +25,7 @@ static void report(const char *what, double value, const char *unit)
 static void test_fall_lands_on_floor(void)
 {
     cb_level_floor(50.0f);
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, 10.0f, 0.0f));
     char_body_settings_t s = cb_foot_settings();
     s.max_fall_speed = 12.0f; /* low enough to be reached within a 10 m fall */
@@ -55,7 +55,7 @@ static void test_fall_lands_on_floor(void)
 static void test_walk_flat(void)
 {
     cb_level_floor(60.0f);
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(-20.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
@@ -81,7 +81,7 @@ static void test_wall_slide_45(void)
 {
     cb_level_floor(60.0f);
     cb_geo_box(cb_vec(0.0f, 2.0f, 2.0f), cb_vec(60.0f, 2.0f, 0.5f), 0.0f); /* wall face at z = 1.5 */
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(-20.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     const float sp = 4.0f, c45 = 0.70710678f;
@@ -122,7 +122,7 @@ static void v_corner(float opening_deg)
         float yaw = atan2f(-dirz, dirx); /* box local +x along the wall direction */
         cb_geo_box(c, cb_vec(10.5f, 2.0f, 0.5f), yaw);
     }
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(-8.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
@@ -169,7 +169,7 @@ static void test_ceiling_cancels_jump(void)
 {
     cb_level_floor(20.0f);
     cb_geo_box(cb_vec(0.0f, 3.0f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f); /* underside at 2.5 */
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
@@ -195,7 +195,7 @@ static void test_ceiling_cancels_jump(void)
 static void test_teleport(void)
 {
     cb_level_floor(50.0f);
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
@@ -224,7 +224,7 @@ static void test_recover_from_wall(void)
 {
     cb_level_floor(50.0f);
     cb_geo_box(cb_vec(5.0f, 2.0f, 0.0f), cb_vec(0.5f, 2.0f, 20.0f), 0.0f); /* face at x = 4.5 */
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
     char_body_teleport(&body, cb_vec(4.2f, 0.0f, 0.0f), false); /* 0.2 m inside */
@@ -248,7 +248,7 @@ static void test_recover_from_wall(void)
 static void test_recover_from_floor(void)
 {
     cb_level_floor(50.0f);
-    cb_world_add_geo(1);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, -0.2f, 0.0f));
     int frames = 0;
     do { CB_STEP(&body, DT); frames++; } while (frames < 10 && !(char_body_is_on_floor(&body) && pos.y > -1e-4f));

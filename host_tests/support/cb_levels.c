@@ -3,19 +3,20 @@
 #include <math.h>
 #include <string.h>
 
-#define CB_GEO_MAX_V 16384
-#define CB_GEO_MAX_T 16384
+#define CB_GEO_MAX_V 65536
+#define CB_GEO_MAX_T 32768
 #define CB_ARENA_BYTES (8u << 20)
 
 static float geo_v[CB_GEO_MAX_V * 3];
 static uint32_t geo_i[CB_GEO_MAX_T * 3];
 static uint32_t geo_nv, geo_nt;
+static bool geo_overflow;
 static uint64_t arena_store[CB_ARENA_BYTES / 8];
 static size_t arena_used;
 
 cb_world_t cb_world;
 
-void cb_geo_begin(void) { geo_nv = geo_nt = 0; }
+void cb_geo_begin(void) { geo_nv = geo_nt = 0; geo_overflow = false; }
 
 static uint32_t vert(fm_vec3_t p)
 {
@@ -28,7 +29,7 @@ static uint32_t vert(fm_vec3_t p)
 
 void cb_geo_tri(fm_vec3_t a, fm_vec3_t b, fm_vec3_t c)
 {
-    if (geo_nt >= CB_GEO_MAX_T || geo_nv + 3 > CB_GEO_MAX_V) return;
+    if (geo_nt >= CB_GEO_MAX_T || geo_nv + 3 > CB_GEO_MAX_V) { geo_overflow = true; return; }
     uint32_t ia = vert(a), ib = vert(b), ic = vert(c);
     geo_i[geo_nt * 3 + 0] = ia;
     geo_i[geo_nt * 3 + 1] = ib;
@@ -93,6 +94,7 @@ void cb_geo_sphere(fm_vec3_t c, float r, int slices, int stacks)
 
 const coll_mesh_t *cb_geo_end(void)
 {
+    if (geo_overflow) return NULL;
     size_t need = coll_mesh_build_size(geo_nv, geo_nt, NULL);
     need = (need + 7u) & ~(size_t)7u;
     if (need == 0 || arena_used + need > sizeof arena_store) return NULL;

@@ -96,8 +96,29 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     return true;
 }
 
+/**
+ * Walking, blocked by something above the step zone: if the foot point has already moved
+ * over a higher tread (within step_height), stand on it now and report true, so the rest
+ * of this step's motion continues from there instead of stopping at the next riser's edge.
+ */
+static bool step_up_now(const cb_ctx_t *c, fm_vec3_t *pos)
+{
+    const char_body_t *b = c->body;
+    float above = c->radius + c->step;
+    fm_vec3_t origin = cb_madd(cb_foot(c, *pos), c->up, above);
+    coll_ray_hit_t rh;
+    if (!coll_raycast(c->scene, origin, cb_scale(c->up, -1.0f), above, b->settings.read_mask,
+                      b->settings.coll_types, &rh))
+        return false;
+    float lift = above - rh.distance;
+    if (!(lift > 1e-4f) || cb_dot(rh.normal, c->up) < b->cos_floor_max_angle) return false;
+    *pos = cb_madd(*pos, c->up, lift);
+    return true;
+}
+
 void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
 {
+    int step_ups = 0;
     const char_body_t *b = c->body;
     fm_vec3_t planes[CB_MAX_PLANES];
     int np = 0;
@@ -128,6 +149,11 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
             continue;
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        if (grounded && step_ups < 2 && cb_dot(n, hit.normal) < 0.9999f && step_up_now(c, pos)) {
+            step_ups++;
+            rem = left;
+            continue;
+        }
         bool known = false;
         for (int i = 0; i < np; i++)
             if (cb_dot(planes[i], n) > 0.9999f) known = true;

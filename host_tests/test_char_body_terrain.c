@@ -1,0 +1,340 @@
+/* Character body on terrain: ramps, drops, stairs, slopes, ledges, coplanar seams.
+ * Every step runs under the allocation guard (CB_STEP). */
+#include "unity.h"
+#include "alloc_guard.h"
+#include "cb_levels.h"
+#include <math.h>
+#include <stdio.h>
+
+#define DT (1.0f / 30.0f)
+#define DEG (3.14159265f / 180.0f)
+
+static char_body_t body;
+static fm_vec3_t pos;
+
+void setUp(void) { cb_world_reset(); }
+void tearDown(void) {}
+
+static void report(const char *what, double value, const char *unit)
+{
+    printf("MEASURED %s = %.6g %s\n", what, value, unit);
+}
+
+/* 5. Ramps: up and down at 4 m/s, on floor every frame, ground speed within 5 %. */
+static void ramp(float deg)
+{
+    cb_world_reset();
+    const float len = 6.0f, h = len * tanf(deg * DEG);
+    const float xs[4] = {-30.0f, 0.0f, len, len + 30.0f};
+    const float ys[4] = {0.0f, 0.0f, h, h};
+    cb_geo_profile(xs, ys, 4, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-4.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    float worst_up = 0.0f, worst_down = 0.0f, max_gap = 0.0f;
+    for (int dir = 1; dir >= -1; dir -= 2) {
+        body.input_velocity = cb_vec(4.0f * (float)dir, 0.0f, 0.0f);
+        for (int i = 0; i < 150; i++) {
+            fm_vec3_t before = pos;
+            CB_STEP(&body, DT);
+            TEST_ASSERT_TRUE_MESSAGE(char_body_is_on_floor(&body), "left the ground on a ramp walk");
+            /* foot on the surface */
+            float surf = pos.x <= 0.0f ? 0.0f : (pos.x >= len ? h : pos.x * tanf(deg * DEG));
+            float gap = fabsf(pos.y - surf);
+            if (gap > max_gap) max_gap = gap;
+            /* ground speed while both ends of the step are on the slope */
+            if (before.x > 0.05f && before.x < len - 0.05f && pos.x > 0.05f && pos.x < len - 0.05f) {
+                float dx = pos.x - before.x, dy = pos.y - before.y;
+                float err = fabsf(sqrtf(dx * dx + dy * dy) / DT / 4.0f - 1.0f);
+                if (dir > 0 && err > worst_up) worst_up = err;
+                if (dir < 0 && err > worst_down) worst_down = err;
+            }
+        }
+        TEST_ASSERT_TRUE(dir > 0 ? pos.x > len + 5.0f : pos.x < -3.0f);
+    }
+    char name[96];
+    snprintf(name, sizeof name, "ramp %.0f deg: worst ground speed error up", deg);
+    report(name, worst_up * 100.0f, "%");
+    snprintf(name, sizeof name, "ramp %.0f deg: worst ground speed error down", deg);
+    report(name, worst_down * 100.0f, "%");
+    snprintf(name, sizeof name, "ramp %.0f deg: worst foot-surface gap", deg);
+    report(name, max_gap, "m");
+    TEST_ASSERT_TRUE(worst_up < 0.05f);
+    TEST_ASSERT_TRUE(worst_down < 0.05f);
+    TEST_ASSERT_TRUE(max_gap < 0.001f);
+}
+static void test_ramp_20(void) { ramp(20.0f); }
+static void test_ramp_40(void) { ramp(40.0f); }
+
+/* 6. Drops: larger than floor_snap_distance falls, smaller snaps and stays grounded. */
+static int walk_off_drop(float drop, float *min_y)
+{
+    cb_world_reset();
+    const float xs[4] = {-20.0f, 0.0f, 0.0f, 20.0f};
+    const float ys[4] = {0.0f, 0.0f, -drop, -drop};
+    cb_geo_profile(xs, ys, 4, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+    int airborne = 0;
+    *min_y = 1e9f;
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, DT);
+        if (!char_body_is_on_floor(&body)) airborne++;
+        if (pos.y < *min_y) *min_y = pos.y;
+    }
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, -drop, pos.y);
+    return airborne;
+}
+static void test_drop_large_falls(void)
+{
+    float min_y;
+    int air = walk_off_drop(0.5f, &min_y);
+    report("drop 0.5 m: airborne frames", air, "");
+    report("drop 0.5 m: lowest foot (floor -0.5)", min_y, "m");
+    TEST_ASSERT_TRUE(air >= 2);
+    TEST_ASSERT_TRUE(min_y > -0.501f);
+}
+static void test_drop_small_snaps(void)
+{
+    float min_y;
+    int air = walk_off_drop(0.2f, &min_y);
+    report("drop 0.2 m: airborne frames", air, "");
+    TEST_ASSERT_EQUAL_INT(0, air);
+    TEST_ASSERT_TRUE(min_y > -0.201f);
+}
+
+/* 7. Stairs: climbed and descended at 4 m/s without stopping, grounded on every tread. */
+static void stairs(float riser)
+{
+    cb_world_reset();
+    const int steps = 8;
+    const float tread = 0.5f;
+    float xs[2 * 8 + 4], ys[2 * 8 + 4];
+    int n = 0;
+    xs[n] = -30.0f; ys[n++] = 0.0f;
+    for (int k = 0; k < steps; k++) {
+        xs[n] = (float)k * tread; ys[n++] = (float)k * riser;
+        xs[n] = (float)k * tread; ys[n++] = (float)(k + 1) * riser;
+    }
+    xs[n] = 30.0f; ys[n++] = (float)steps * riser;
+    cb_geo_profile(xs, ys, n, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    float top = (float)steps * riser;
+    int slow_frames = 0, air_frames = 0;
+    float worst_tread_err = 0.0f;
+    for (int dir = 1; dir >= -1; dir -= 2) {
+        body.input_velocity = cb_vec(4.0f * (float)dir, 0.0f, 0.0f);
+        for (int i = 0; i < 90; i++) {
+            float x0 = pos.x;
+            CB_STEP(&body, DT);
+            if (fabsf(pos.x - x0) < 0.9f * 4.0f * DT) slow_frames++;
+            if (!char_body_is_on_floor(&body)) air_frames++;
+            /* the foot stands on the tread under the axis */
+            float expect = pos.x < 0.0f ? 0.0f : (pos.x >= (float)steps * tread ? top : (floorf(pos.x / tread) + 1.0f) * riser);
+            float err = fabsf(pos.y - expect);
+            if (err > worst_tread_err) worst_tread_err = err;
+        }
+        TEST_ASSERT_TRUE(dir > 0 ? pos.x > (float)steps * tread + 3.0f : pos.x < -2.0f);
+    }
+    char name[96];
+    snprintf(name, sizeof name, "stairs %.2f m: frames slower than 90%% of 4 m/s", riser);
+    report(name, slow_frames, "");
+    snprintf(name, sizeof name, "stairs %.2f m: airborne frames", riser);
+    report(name, air_frames, "");
+    snprintf(name, sizeof name, "stairs %.2f m: worst foot-tread error", riser);
+    report(name, worst_tread_err, "m");
+    TEST_ASSERT_EQUAL_INT(0, slow_frames);
+    TEST_ASSERT_EQUAL_INT(0, air_frames);
+    TEST_ASSERT_TRUE(worst_tread_err < 0.001f);
+}
+static void test_stairs_010(void) { stairs(0.10f); }
+static void test_stairs_020(void) { stairs(0.20f); }
+static void test_stairs_025(void) { stairs(0.25f); }
+
+static void test_riser_035_blocks(void)
+{
+    const float xs[4] = {-20.0f, 0.0f, 0.0f, 20.0f};
+    const float ys[4] = {0.0f, 0.0f, 0.35f, 0.35f};
+    cb_geo_profile(xs, ys, 4, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+    float max_x = -1e9f, max_y = -1e9f;
+    for (int i = 0; i < 90; i++) {
+        CB_STEP(&body, DT);
+        if (pos.x > max_x) max_x = pos.x;
+        if (pos.y > max_y) max_y = pos.y;
+    }
+    /* The sweep capsule's bottom ball (centre 0.75 m up) meets the riser's top edge 0.3 m out. */
+    report("riser 0.35 m: furthest x (contact at -0.3)", max_x, "m");
+    report("riser 0.35 m: highest foot", max_y, "m");
+    TEST_ASSERT_TRUE(max_x < -0.3f);
+    TEST_ASSERT_TRUE(max_x > -0.31f);
+    TEST_ASSERT_TRUE(max_y < 0.001f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+}
+
+/* 8. Slopes: standing on 44 degrees does not drift; on 50 degrees the body slides. */
+static void slope_level(float deg)
+{
+    float t = tanf(deg * DEG);
+    const float xs[2] = {-20.0f, 20.0f};
+    const float ys[2] = {-20.0f * t, 20.0f * t};
+    cb_geo_profile(xs, ys, 2, -10.0f, 10.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+static void test_slope_44_no_drift(void)
+{
+    slope_level(44.0f);
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.05f, 0.0f));
+    for (int i = 0; i < 15; i++) CB_STEP(&body, DT);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    fm_vec3_t start = pos;
+    for (int i = 0; i < 300; i++) {
+        CB_STEP(&body, DT);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    float dx = pos.x - start.x, dy = pos.y - start.y, dz = pos.z - start.z;
+    float drift = sqrtf(dx * dx + dy * dy + dz * dz);
+    report("slope 44 deg: drift over 10 s", drift, "m");
+    report("slope 44 deg: foot-surface gap", pos.y - pos.x * tanf(44.0f * DEG), "m");
+    TEST_ASSERT_TRUE(drift < 0.001f);
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, pos.x * tanf(44.0f * DEG), pos.y);
+}
+static void test_slope_50_slides(void)
+{
+    slope_level(50.0f);
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.05f, 0.0f));
+    int steep_frames = 0;
+    float max_pen = -1e9f;
+    const float t50 = tanf(50.0f * DEG);
+    for (int i = 0; i < 45; i++) {
+        CB_STEP(&body, DT);
+        if (i >= 5 && char_body_is_on_steep_surface(&body) && char_body_is_on_floor(&body)) steep_frames++;
+        /* the sweep capsule's bottom ball must stay out of the plane */
+        float cx = pos.x, cy = pos.y + 0.75f;
+        float dist = (cy - cx * t50) * cosf(50.0f * DEG);
+        if (0.5f - dist > max_pen) max_pen = 0.5f - dist;
+    }
+    report("slope 50 deg: steep frames (of 40)", steep_frames, "");
+    report("slope 50 deg: drop after 1.5 s", -pos.y, "m");
+    report("slope 50 deg: sweep capsule penetration", max_pen, "m");
+    TEST_ASSERT_TRUE(steep_frames >= 38);
+    TEST_ASSERT_TRUE(pos.y < -1.0f);
+    TEST_ASSERT_TRUE(pos.x < -0.8f);
+    TEST_ASSERT_TRUE(max_pen < 0.001f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(char_body_is_on_steep_surface(&body));
+}
+
+/* 9. Walking slowly off a ledge: falls once past the edge, cannot walk back up. */
+static void test_ledge(void)
+{
+    cb_geo_box(cb_vec(-10.0f, -2.5f, 0.0f), cb_vec(10.0f, 2.5f, 10.0f), 0.0f); /* top y 0, edge x 0 */
+    cb_geo_box(cb_vec(0.0f, -5.5f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f);   /* ground y -5 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-1.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    body.input_velocity = cb_vec(0.5f, 0.0f, 0.0f);
+    int past = -1, left_floor = -1, grounded_past = 0;
+    float prev_y = 0.0f;
+    for (int i = 0; i < 300 && left_floor < 0; i++) {
+        CB_STEP(&body, DT);
+        if (past < 0 && pos.x > 0.0f) past = i;
+        if (past >= 0 && char_body_is_on_floor(&body)) grounded_past++;
+        if (past >= 0 && !char_body_is_on_floor(&body)) left_floor = i;
+    }
+    TEST_ASSERT_TRUE(past >= 0 && left_floor >= 0);
+    report("ledge: frames on floor with the centre past the edge", grounded_past, "");
+    TEST_ASSERT_TRUE(grounded_past <= 2);
+    /* keeps falling: never stalls on the edge */
+    int stalled = 0;
+    prev_y = pos.y;
+    float x_fall = pos.x;
+    for (int i = 0; i < 12; i++) {
+        CB_STEP(&body, DT);
+        if (pos.y >= prev_y - 1e-4f) stalled++;
+        prev_y = pos.y;
+    }
+    report("ledge: frames without descending in the first 12 of the fall", stalled, "");
+    report("ledge: sideways push while falling off", pos.x - x_fall, "m");
+    TEST_ASSERT_TRUE(stalled <= 2);
+    TEST_ASSERT_TRUE(pos.y < -0.8f);
+    /* walking back towards the ledge while falling never gets back onto it */
+    body.input_velocity = cb_vec(-4.0f, 0.0f, 0.0f);
+    float max_y_back = -1e9f;
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, DT);
+        if (pos.y > max_y_back) max_y_back = pos.y;
+        TEST_ASSERT_TRUE(pos.x > -0.001f || pos.y > -0.001f); /* foot never inside the block */
+    }
+    report("ledge: highest foot while pushing back (ledge top 0)", max_y_back, "m");
+    TEST_ASSERT_TRUE(max_y_back < -0.5f);
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, -5.0f, pos.y);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+}
+
+/* A ledge that starts the fall early: right at the edge with the full capsule half over it. */
+static void test_ledge_rejump_from_falling(void)
+{
+    cb_geo_box(cb_vec(-10.0f, -2.5f, 0.0f), cb_vec(10.0f, 2.5f, 10.0f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, -5.5f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.05f, 0.0f, 0.0f)); /* centre just past the edge */
+    for (int i = 0; i < 3; i++) CB_STEP(&body, DT);
+    TEST_ASSERT_FALSE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y < 0.0f);
+}
+
+/* Coplanar seams: a floor of many small triangles is as smooth as one quad. */
+static void test_coplanar_seams(void)
+{
+    cb_geo_grid(20.0f, 80, 0.0f); /* 0.5 m cells, 12800 triangles */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-10.0f, 0.0f, -10.0f)); /* on a vertex */
+    CB_STEP(&body, DT);
+    const float sp = 4.0f, c45 = 0.70710678f;
+    body.input_velocity = cb_vec(sp * c45, 0.0f, sp * c45); /* diagonal: through vertices and edges */
+    float min_y = 1e9f, max_y = -1e9f;
+    const int frames = 120;
+    for (int i = 0; i < frames; i++) {
+        CB_STEP(&body, DT);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        if (pos.y < min_y) min_y = pos.y;
+        if (pos.y > max_y) max_y = pos.y;
+    }
+    float dx = pos.x + 10.0f, dz = pos.z + 10.0f;
+    float dist = sqrtf(dx * dx + dz * dz), expect = sp * DT * (float)frames;
+    report("seams: height variation", max_y - min_y, "m");
+    report("seams: distance error", (dist / expect - 1.0f) * 100.0f, "%");
+    report("seams: lateral error", dx - dz, "m");
+    TEST_ASSERT_TRUE(max_y - min_y < 0.0001f);
+    TEST_ASSERT_FLOAT_WITHIN(0.001f * expect, expect, dist);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_ramp_20);
+    RUN_TEST(test_ramp_40);
+    RUN_TEST(test_drop_large_falls);
+    RUN_TEST(test_drop_small_snaps);
+    RUN_TEST(test_stairs_010);
+    RUN_TEST(test_stairs_020);
+    RUN_TEST(test_stairs_025);
+    RUN_TEST(test_riser_035_blocks);
+    RUN_TEST(test_slope_44_no_drift);
+    RUN_TEST(test_slope_50_slides);
+    RUN_TEST(test_ledge);
+    RUN_TEST(test_ledge_rejump_from_falling);
+    RUN_TEST(test_coplanar_seams);
+    return UNITY_END();
+}
