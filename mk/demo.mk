@@ -77,5 +77,8 @@ else
 	@echo "n64-rom: set N64_INST to a libdragon toolchain (see examples/char_body/n64/Makefile)"; exit 1
 endif
 
-# The replay test reads the baked levels (COLL_ASSET_DIR, exported by mk/bake.mk).
+# The replay test reads the baked levels (COLL_ASSET_DIR, exported by mk/bake.mk, which
+# holds the rules that bake them).
+ifneq ($(wildcard mk/bake.mk),)
 TEST_PREREQS += $(DEMO_ASSETS)
+endif

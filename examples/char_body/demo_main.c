@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define BG 0x101418FFu
 
@@ -297,6 +298,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    mkdir(out, 0777); /* may exist already */
     demo_assets_t a;
     if (!demo_assets_load(&a, assets)) return 1;
     game_level_t level;

@@ -59,7 +59,7 @@ fm_vec3_t game_v3_slerp(fm_vec3_t a, fm_vec3_t b, float t)
     return game_v3_norm(game_v3_add(game_v3_scale(a, cosf(s)), game_v3_scale(perp, sinf(s))));
 }
 
-static float clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
+float game_clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
 /* Any unit vector across up, preferring `hint`. */
 static fm_vec3_t across(fm_vec3_t hint, fm_vec3_t up)
@@ -231,7 +231,7 @@ void game_step(game_t *g, const game_input_t *in, float dt)
     g->toggle_held_prev = in->toggle_gravity;
     fm_vec3_t target = gravity_target(g);
     if (g->blend_t < 1.0f) {
-        g->blend_t = clampf(g->blend_t + dt / tu->gravity_blend, 0.0f, 1.0f);
+        g->blend_t = game_clampf(g->blend_t + dt / tu->gravity_blend, 0.0f, 1.0f);
         set_up(g, game_v3_slerp(g->blend_from, target, g->blend_t));
     } else {
         set_up(g, target);
@@ -239,10 +239,10 @@ void game_step(game_t *g, const game_input_t *in, float dt)
 
     /* Camera orbit. */
     fm_quat_t yaw;
-    fm_quat_from_axis_angle(&yaw, &g->up, -clampf(in->cam_x, -1, 1) * tu->cam_yaw_rate * dt);
+    fm_quat_from_axis_angle(&yaw, &g->up, -game_clampf(in->cam_x, -1, 1) * tu->cam_yaw_rate * dt);
     fm_quat_rotate_vec3(&g->cam_fwd, &yaw, &g->cam_fwd);
     g->cam_fwd = across(g->cam_fwd, g->up);
-    g->cam_pitch = clampf(g->cam_pitch + clampf(in->cam_y, -1, 1) * tu->cam_pitch_rate * dt, -0.3f, 1.35f);
+    g->cam_pitch = game_clampf(g->cam_pitch + game_clampf(in->cam_y, -1, 1) * tu->cam_pitch_rate * dt, -0.3f, 1.35f);
 
     /* Grounded state of the last step. */
     bool on_floor = char_body_is_on_floor(&g->body);
@@ -253,14 +253,14 @@ void game_step(game_t *g, const game_input_t *in, float dt)
     if (on_floor) {
         float goal = steep ? tu->steep_min_factor : 1.0f;
         float stepv = tu->steep_rate * dt;
-        g->speed_factor = g->speed_factor < goal ? clampf(g->speed_factor + stepv, 0.0f, goal)
-                                                 : clampf(g->speed_factor - stepv, goal, 1.0f);
+        g->speed_factor = g->speed_factor < goal ? game_clampf(g->speed_factor + stepv, 0.0f, goal)
+                                                 : game_clampf(g->speed_factor - stepv, goal, 1.0f);
     }
     if (steep) g->stats.steep_time += dt;
     if (g->speed_factor < g->stats.min_speed_factor) g->stats.min_speed_factor = g->speed_factor;
 
     /* Camera-relative stick -> wished velocity; accelerate towards it. */
-    float sx = clampf(in->stick_x, -1, 1), sy = clampf(in->stick_y, -1, 1);
+    float sx = game_clampf(in->stick_x, -1, 1), sy = game_clampf(in->stick_y, -1, 1);
     float mag = sqrtf(sx * sx + sy * sy);
     if (mag > 1.0f) { sx /= mag; sy /= mag; }
     fm_vec3_t fwd, right;
@@ -305,12 +305,18 @@ void game_step(game_t *g, const game_input_t *in, float dt)
 
     char_body_move_and_slide_in(&g->body, &g->scene, dt);
 
-    /* Ride measurement: how far the platform stood on carried the player this step. */
+    /* Ride measurement: how far the player actually moved along with the platform stood on
+     * (its motion at the player's position), not counting the player's own walking. */
     int32_t fid = char_body_floor_id(&g->body);
     int32_t pi = g->prev_floor_id - GAME_PLATFORM_ID0;
     if (fid == g->prev_floor_id && pi >= 0 && pi < g->level.platform_count) {
-        fm_vec3_t c = carry_point(&prev_xf[pi], &g->level.platforms[pi].inst.xf, g->prev_pos);
-        g->stats.ride_distance[pi] += game_v3_len(game_v3_sub(c, g->prev_pos));
+        fm_vec3_t plat = game_v3_sub(carry_point(&prev_xf[pi], &g->level.platforms[pi].inst.xf, g->prev_pos),
+                                     g->prev_pos);
+        float pl = game_v3_len(plat);
+        if (pl > 1e-6f) {
+            float along = game_v3_dot(game_v3_sub(g->pos, g->prev_pos), plat) / pl;
+            g->stats.ride_distance[pi] += game_clampf(along, 0.0f, pl);
+        }
         g->stats.ride_time[pi] += dt;
     }
 

@@ -173,6 +173,7 @@ fm_vec3_t game_v3_norm(fm_vec3_t a);
 fm_vec3_t game_v3_reject(fm_vec3_t a, fm_vec3_t n);
 /** Rotates v by the shortest arc that takes unit a onto unit b. */
 fm_vec3_t game_v3_transport(fm_vec3_t v, fm_vec3_t a, fm_vec3_t b);
+float game_clampf(float x, float lo, float hi);
 /** Spherical interpolation between unit vectors. */
 fm_vec3_t game_v3_slerp(fm_vec3_t a, fm_vec3_t b, float t);
 

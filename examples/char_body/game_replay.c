@@ -136,21 +136,19 @@ const replay_mark_t *replay_find_mark(const replay_t *r, const char *name)
 
 /* ---- autopilot ---- */
 
-static float clampf(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
-
 /* Stick for a world-space wish direction (across up) at `speed` m/s. */
 static void steer(const game_t *g, game_input_t *in, fm_vec3_t dir, float speed)
 {
     fm_vec3_t fwd, right;
     game_move_basis(g, &fwd, &right);
     dir = game_v3_norm(game_v3_reject(dir, g->up));
-    float s = clampf(speed / g->tuning.run_speed, 0.0f, 1.0f);
+    float s = game_clampf(speed / g->tuning.run_speed, 0.0f, 1.0f);
     in->stick_y = game_v3_dot(dir, fwd) * s;
     in->stick_x = game_v3_dot(dir, right) * s;
     /* Swing the camera round behind the motion, as a player would. */
     float side = game_v3_dot(dir, right), ahead = game_v3_dot(dir, fwd);
     float ang = atan2f(side, ahead);
-    in->cam_x = clampf(ang * 0.8f, -0.6f, 0.6f);
+    in->cam_x = game_clampf(ang * 0.8f, -0.6f, 0.6f);
 }
 
 /* Horizontal offset from the player to a point, across up. */
@@ -166,7 +164,7 @@ static bool go_to(const game_t *g, game_input_t *in, fm_vec3_t p, float speed, f
     float dist = game_v3_len(d);
     if (dist < radius) return true;
     if (speed <= 0.0f) speed = g->tuning.run_speed;
-    steer(g, in, d, clampf(0.6f + 4.0f * dist, 0.0f, speed));
+    steer(g, in, d, game_clampf(0.6f + 4.0f * dist, 0.0f, speed));
     return false;
 }
 
@@ -297,7 +295,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             /* Travel along the great circle; pull back towards its plane when drifting. */
             fm_vec3_t along = game_v3_cross(r->lap_axis, radial);
             float off = game_v3_dot(game_v3_sub(g->pos, g->level.planet_center), r->lap_axis);
-            fm_vec3_t dir = game_v3_sub(along, game_v3_scale(r->lap_axis, clampf(off * 0.3f, -0.7f, 0.7f)));
+            fm_vec3_t dir = game_v3_sub(along, game_v3_scale(r->lap_axis, game_clampf(off * 0.3f, -0.7f, 0.7f)));
             steer(g, in, dir, c->a[0] > 0.0f ? c->a[0] : g->tuning.run_speed);
             fm_vec3_t a = game_v3_norm(game_v3_reject(r->lap_prev, r->lap_axis));
             fm_vec3_t b = game_v3_norm(game_v3_reject(radial, r->lap_axis));
