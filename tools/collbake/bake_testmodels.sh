@@ -60,6 +60,24 @@ check_refused() {  # name, args...
     rm -f "$blob"
     printf '%s\t%d\t-\tmust-refuse:%s\t%s\n' "$status" "$rc" "$name" "$msg" >> "$tmp"
 }
+# Welding: two triangles sharing an edge whose copies differ by 20-30 um must share 2 vertices
+# (4 in total; the pair at x = 1 straddles a weld-grid cell boundary); at --weld 0 they stay 6.
+printf 'v 0 0 0\nv 0.99999 0 0\nv 0 0 1\nv 1.00002 0 0\nv 0 0.00002 1\nv 1 0 1\nf 1 2 3\nf 4 6 5\n' > "$syn/weld.obj"
+check_welds() {  # name, expected vertex count, args...
+    local name=$1 want=$2; shift 2
+    n=$((n + 1))
+    local log="$out/$n.log" blob="$out/$n.coll" status msg
+    timeout 120 "$bake" "$@" -o "$blob" > "$log" 2>&1
+    local rc=$?
+    msg=$(grep -m1 -E '^  welding' "$log" | sed 's/^ *//')
+    if grep -qE 'Sanitizer|runtime error:' "$log" || [ $rc != 0 ]; then status=crash; msg="exit $rc: $(tail -n 1 "$log")"
+    elif echo "$msg" | grep -q -- "-> $want vertices"; then status=baked
+    else status=wrong; fi
+    case $status in baked) baked=$((baked + 1));; *) crashed=$((crashed + 1));; esac
+    printf '%s\t%d\t%s\tmust-weld:%s\t%s\n' "$status" "$rc" "$([ $status = baked ] && echo "$n.coll" || echo -)" "$name" "$msg" >> "$tmp"
+}
+check_welds weld-default 4 "$syn/weld.obj"
+check_welds weld-exact-only 6 --weld 0 "$syn/weld.obj"
 check_refused missing-file "$syn/no_such_file.gltf"
 check_refused unreadable "$syn/garbage.obj"
 check_refused degenerate-only "$syn/degenerate.obj"
@@ -68,6 +86,6 @@ check_refused no-meshes "$syn/empty.gltf"
 check_refused only-matches-nothing --only 'nothing_*' "$syn/tri.obj"
 check_refused bad-scale --scale -1 "$syn/tri.obj"
 mv "$tmp" "$results"
-echo "assimp-testmodels (+7 must-refuse inputs): $n runs: $baked baked, $refused refused with a message, $crashed crashed"
+echo "assimp-testmodels (+7 must-refuse, +2 must-weld inputs): $n runs: $baked baked, $refused refused with a message, $crashed crashed"
 grep -E '^crash' "$results" | cut -f4,5 | sed 's/^/  CRASH: /'
 exit 0
