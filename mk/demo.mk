@@ -5,7 +5,7 @@
 #                       planet, prints a status line per simulated second, writes pictures
 #                       to $(BUILD)/demo/{course,planet}_{top,side}.png; fails on a problem
 #   make preview        interactive SDL2 window (WASD / arrows / space / G, or a gamepad)
-#   make preview-shot   the preview under xvfb-run: plays 900 replay frames, saves
+#   make preview-shot   the preview under xvfb-run: plays 1190 replay frames, saves
 #                       $(BUILD)/demo/preview.png and exits
 #   make n64            also compiles the game logic with the console flags (-Werror)
 #   make n64-rom        with N64_INST set (libdragon): builds examples/char_body/n64 ROM
@@ -57,7 +57,7 @@ preview: $(PREVIEW_BIN) $(DEMO_ASSETS)
 preview-shot: $(PREVIEW_BIN) $(DEMO_ASSETS)
 	@mkdir -p $(DEMO_OUT)
 	xvfb-run -a -s "-screen 0 1024x768x24" $(PREVIEW_BIN) --assets $(BUILD)/assets \
-	    --replays $(DEMO_DIR)/replay --shot 900 --out $(DEMO_OUT)/preview.png
+	    --replays $(DEMO_DIR)/replay --shot 1190 --out $(DEMO_OUT)/preview.png
 
 # ---- console: the game logic must build unchanged with the VR4300 flags ----
 DEMO_N64_OBJS := $(patsubst $(DEMO_DIR)/%.c,$(BUILD)/n64/example/%.o,$(DEMO_GAME))

@@ -160,17 +160,22 @@ static const uint8_t font_rows[][7] = {
     {0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x1f}, /* _ */
 };
 
+const uint8_t *img_font_glyph(char c)
+{
+    if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
+    for (int i = 0; font_chars[i]; i++)
+        if (font_chars[i] == c) return font_rows[i];
+    return NULL;
+}
+
 int img_text(img_t *im, int x, int y, const char *s, uint32_t rgba, int scale)
 {
     for (; *s; s++) {
-        char c = *s >= 'a' && *s <= 'z' ? (char)(*s - 'a' + 'A') : *s;
-        int gi = -1;
-        for (int i = 0; font_chars[i]; i++)
-            if (font_chars[i] == c) gi = i;
-        if (gi >= 0)
+        const uint8_t *rows = img_font_glyph(*s);
+        if (rows)
             for (int row = 0; row < 7; row++)
                 for (int col = 0; col < 5; col++)
-                    if (font_rows[gi][row] & (0x10 >> col))
+                    if (rows[row] & (0x10 >> col))
                         img_rect(im, x + col * scale, y + row * scale, x + (col + 1) * scale, y + (row + 1) * scale, rgba);
         x += 6 * scale;
     }

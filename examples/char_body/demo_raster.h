@@ -26,6 +26,8 @@ void img_disc(img_t *im, float cx, float cy, float r, uint32_t rgba);
 void img_rect(img_t *im, int x0, int y0, int x1, int y1, uint32_t rgba);
 /** Text with the built-in 5x7 font; scale = pixels per font dot. Returns the end x. */
 int img_text(img_t *im, int x, int y, const char *s, uint32_t rgba, int scale);
+/** The 5x7 glyph of c (7 rows, bit 4 = leftmost dot), or NULL; letters are upper case. */
+const uint8_t *img_font_glyph(char c);
 /** 8-bit RGB PNG. */
 bool img_write_png(const img_t *im, const char *path);
 /** Writes rows of RGB pixels (stride in bytes) as PNG; used by the SDL screenshot too. */
