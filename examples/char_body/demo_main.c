@@ -143,13 +143,16 @@ static void draw_view(img_t *im, const view_t *v, const game_t *g, const record_
 
     /* Trajectory of the feet, coloured by state. */
     static const uint32_t col[3] = {CHAR_BODY_COLOR_FLOOR, CHAR_BODY_COLOR_STEEP, CHAR_BODY_COLOR_AIRBORNE};
-    for (int i = 1; i < rec->nsamples; i++) {
-        float x0, y0, x1, y1;
-        project(v, rec->samples[i - 1].foot, &x0, &y0);
-        project(v, rec->samples[i].foot, &x1, &y1);
-        if (fabsf(x1 - x0) + fabsf(y1 - y0) > 200.0f) continue; /* respawn jump */
-        img_line(im, x0, y0, x1, y1, col[rec->samples[i].state], 2.0f);
-    }
+    for (int pass = 0; pass < 2; pass++) /* airborne (jumps, falls) on top, a little wider */
+        for (int i = 1; i < rec->nsamples; i++) {
+            int st = rec->samples[i].state;
+            if ((st == 2) != (pass == 1)) continue;
+            float x0, y0, x1, y1;
+            project(v, rec->samples[i - 1].foot, &x0, &y0);
+            project(v, rec->samples[i].foot, &x1, &y1);
+            if (fabsf(x1 - x0) + fabsf(y1 - y0) > 200.0f) continue; /* respawn jump */
+            img_line(im, x0, y0, x1, y1, col[st], st == 2 ? 2.6f : 2.0f);
+        }
     /* Capsule snapshots (char_body_debug_draw lines). */
     for (int i = 0; i < rec->nlines; i++) {
         float x0, y0, x1, y1;

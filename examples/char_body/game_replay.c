@@ -7,7 +7,7 @@
 
 static const char *const op_names[] = {
     "walk_to", "jump", "coyote_jump", "wait", "board", "ride", "wait_phase", "gravity",
-    "planet_lap", "mark", "push",
+    "planet_lap", "mark", "push", "land_jump",
 };
 
 const char *replay_op_name(replay_op_t op)
@@ -83,6 +83,7 @@ static const op_syntax_t syntax[] = {
     {"planet_lap", REPLAY_PLANET_LAP, 0, 1, false},
     {"mark", REPLAY_MARK, 0, 0, true},
     {"push", REPLAY_PUSH, 3, 4, false},
+    {"land_jump", REPLAY_LAND_JUMP, 0, 1, false},
 };
 
 bool replay_parse(replay_t *r, const char *text, uint32_t len)
@@ -116,6 +117,7 @@ bool replay_parse(replay_t *r, const char *text, uint32_t len)
         if (sx->op == REPLAY_JUMP && n < 1) cmd->a[0] = 0.5f;
         if (sx->op == REPLAY_COYOTE_JUMP && n < 3) cmd->a[2] = 0.07f;
         if (sx->op == REPLAY_PLANET_LAP && n < 1) cmd->a[0] = -1.0f;
+        if (sx->op == REPLAY_LAND_JUMP && n < 1) cmd->a[0] = 0.4f;
         if (sx->op == REPLAY_GRAVITY && !str_eq(cmd->name, "planet") && !str_eq(cmd->name, "normal")) {
             r->error_line = line;
             return false;
@@ -237,6 +239,19 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             (void)go_to(g, in, game_v3(c->a[0], g->pos.y, c->a[1]), c->a[3], 0.05f);
             done = r->cmd_time + 0.5f * dt >= c->a[2];
             break;
+        case REPLAY_LAND_JUMP: {
+            /* Keep the current heading; press jump just before touching down. */
+            fm_vec3_t v = char_body_get_velocity(&g->body);
+            if (game_v3_len(game_v3_reject(v, g->up)) > 0.5f) steer(g, in, v, game_v3_len(game_v3_reject(v, g->up)));
+            coll_ray_hit_t hit;
+            fm_vec3_t down = game_v3_scale(g->up, -1.0f);
+            if (game_body_state(g) == 2 && game_v3_dot(v, g->up) < 0.0f &&
+                coll_raycast(&g->scene, char_body_foot_pos(&g->body), down, c->a[0], 0x01, COLL_TYPE_MESH, &hit)) {
+                r->jump_hold = 0.5f;
+                done = true;
+            }
+            break;
+        }
         case REPLAY_WAIT:
             done = r->cmd_time + 0.5f * dt >= c->a[0];
             break;

@@ -9,6 +9,8 @@
  *   push X Z S [SPEED]           steer towards (X, Z) for S seconds, arriving or not
  *   jump [HOLD]                  press jump, hold it HOLD s (0.5); next command starts at once
  *   coyote_jump X Z [DELAY]      run towards (X, Z); DELAY s (0.07) after leaving the floor, jump
+ *   land_jump [H]                in the air, press jump once falling with the ground H m (0.4)
+ *                                below the feet: the game buffers it and jumps on landing
  *   wait S                       stand still S seconds
  *   board N [DX DZ]              walk onto platform N (at local offset DX, DZ) until on it
  *   ride N S [DX DZ]             board N, then stand still on it for S seconds
@@ -32,7 +34,7 @@ extern "C" {
 
 typedef enum {
     REPLAY_WALK_TO = 0, REPLAY_JUMP, REPLAY_COYOTE_JUMP, REPLAY_WAIT, REPLAY_BOARD, REPLAY_RIDE,
-    REPLAY_WAIT_PHASE, REPLAY_GRAVITY, REPLAY_PLANET_LAP, REPLAY_MARK, REPLAY_PUSH,
+    REPLAY_WAIT_PHASE, REPLAY_GRAVITY, REPLAY_PLANET_LAP, REPLAY_MARK, REPLAY_PUSH, REPLAY_LAND_JUMP,
 } replay_op_t;
 
 typedef struct {
