@@ -235,6 +235,26 @@ static void test_slope_50_slides(void)
     TEST_ASSERT_TRUE(char_body_is_on_steep_surface(&body));
 }
 
+/* Pushing uphill on a steep slope does not climb it. */
+static void test_slope_50_no_climbing(void)
+{
+    slope_level(50.0f);
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.05f, 0.0f));
+    for (int i = 0; i < 3; i++) CB_STEP(&body, DT);
+    TEST_ASSERT_TRUE(char_body_is_on_steep_surface(&body));
+    float y0 = pos.y, max_y = pos.y;
+    body.input_velocity = cb_vec(6.0f, 0.0f, 1.0f); /* uphill, a little sideways */
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, DT);
+        if (pos.y > max_y) max_y = pos.y;
+    }
+    report("slope 50 deg pushing uphill: highest rise", max_y - y0, "m");
+    report("slope 50 deg pushing uphill: height change after 2 s", pos.y - y0, "m");
+    TEST_ASSERT_TRUE(max_y - y0 < 0.001f);
+    TEST_ASSERT_TRUE(pos.y < y0 - 0.5f);
+    TEST_ASSERT_TRUE(pos.z > 1.0f); /* the sideways part still moves */
+}
+
 /* 9. Walking slowly off a ledge: falls once past the edge, cannot walk back up. */
 static void test_ledge(void)
 {
@@ -294,6 +314,36 @@ static void test_ledge_rejump_from_falling(void)
     TEST_ASSERT_TRUE(pos.y < 0.0f);
 }
 
+/* Walking off the ledge fast and turning back at once, while the foot is still within the
+ * step zone below the ledge top: the foot point may not re-enter the ledge from the side. */
+static void test_ledge_no_walk_back_early(void)
+{
+    cb_geo_box(cb_vec(-10.0f, -2.5f, 0.0f), cb_vec(10.0f, 2.5f, 10.0f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, -5.5f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-1.0f, 0.0f, 0.0f));
+    CB_STEP(&body, DT);
+    body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+    int guard = 0;
+    while (char_body_is_on_floor(&body) && guard++ < 60) CB_STEP(&body, DT);
+    CB_STEP(&body, DT);
+    float turn_y = pos.y;
+    body.input_velocity = cb_vec(-4.0f, 0.0f, 0.0f);
+    float max_y = -1e9f;
+    int on_ledge = 0;
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, DT);
+        if (pos.y > max_y) max_y = pos.y;
+        if (char_body_is_on_floor(&body) && pos.y > -1.0f) on_ledge++;
+    }
+    report("ledge early turn-back: foot height when turning (ledge top 0)", turn_y, "m");
+    report("ledge early turn-back: highest foot afterwards", max_y, "m");
+    TEST_ASSERT_TRUE(turn_y < 0.0f && turn_y > -0.25f);
+    TEST_ASSERT_EQUAL_INT(0, on_ledge);
+    TEST_ASSERT_TRUE(max_y < 0.0f);
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, -5.0f, pos.y);
+}
+
 /* Coplanar seams: a floor of many small triangles is as smooth as one quad. */
 static void test_coplanar_seams(void)
 {
@@ -335,6 +385,8 @@ int main(void)
     RUN_TEST(test_slope_50_slides);
     RUN_TEST(test_ledge);
     RUN_TEST(test_ledge_rejump_from_falling);
+    RUN_TEST(test_ledge_no_walk_back_early);
+    RUN_TEST(test_slope_50_no_climbing);
     RUN_TEST(test_coplanar_seams);
     return UNITY_END();
 }

@@ -134,6 +134,7 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         }
         if (!cb_finite(hit.normal) || !isfinite(hit.t)) break;
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
+        float done = 0.0f; /* fraction of rem actually travelled */
         if (t <= 0.0f && hit.depth > 0.0f) {
             /* Started inside: step out along the push-out direction first. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
@@ -141,9 +142,13 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         } else {
             /* Advance to the contact, backing off CB_SKIN along the motion. */
             float travel = len * t - CB_SKIN;
-            if (travel > 0.0f) *pos = cb_madd(*pos, rem, travel / len);
+            if (travel > 0.0f) {
+                done = travel / len;
+                *pos = cb_madd(*pos, rem, done);
+            }
         }
-        fm_vec3_t left = cb_scale(rem, 1.0f - t);
+        /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
+        fm_vec3_t left = cb_scale(rem, 1.0f - done);
         if (!grounded && cb_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit)) {
             rem = left;
             continue;
