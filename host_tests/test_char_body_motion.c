@@ -175,6 +175,55 @@ static void test_collider_body_not_carried(void)
     TEST_ASSERT_TRUE(dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)) < 0.001f);
 }
 
+/* A wall instance moving into the standing body pushes it (overlap recovery every step). */
+static void test_moving_wall_pushes(void)
+{
+    cb_level_floor(30.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_geo_box(cb_vec(0.0f, 2.0f, 0.0f), cb_vec(0.5f, 2.0f, 5.0f), 0.0f);
+    const coll_mesh_t *m = cb_geo_end();
+    TEST_ASSERT_NOT_NULL(m);
+    coll_transform_t xf = COLL_TRANSFORM_IDENTITY;
+    xf.pos = cb_vec(-3.0f, 0.0f, 0.0f); /* face at x = -2.5 */
+    coll_mesh_instance_t *wall = cb_world_add_mesh(m, xf, 2);
+    TEST_ASSERT_NOT_NULL(wall);
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+    settle();
+    float worst = 0.0f;
+    for (int i = 1; i <= 60; i++) {
+        wall->xf.pos.x = -3.0f + 1.5f * DT * (float)i; /* 1.5 m/s, face reaches the body at 1.33 s */
+        CB_STEP(&body, DT);
+        float pen = (wall->xf.pos.x + 0.5f) - (pos.x - 0.5f);
+        if (pen > worst) worst = pen;
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    report("moving wall: worst penetration after a step (1.5 m/s push)", worst, "m");
+    report("moving wall: body pushed to x", pos.x, "m");
+    TEST_ASSERT_TRUE(worst < 0.001f);
+    TEST_ASSERT_FLOAT_WITHIN(0.01f, -3.0f + 1.5f * 2.0f + 1.0f, pos.x);
+    /* removed from the scene: a platform no longer carries */
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_remove_mesh(&cb_world.scene, wall));
+}
+
+/* A platform removed from the scene stops carrying at once. */
+static void test_removed_platform_does_not_carry(void)
+{
+    coll_mesh_instance_t *in = platform();
+    cb_level_floor(30.0f); /* ground below at y = 0 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 1.0f, 0.0f));
+    settle();
+    TEST_ASSERT_EQUAL_INT32(7, char_body_floor_id(&body));
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_remove_mesh(&cb_world.scene, in));
+    in->xf.pos.x = 100.0f; /* would carry the body 100 m */
+    CB_STEP(&body, DT);
+    report("removed platform: x after its instance moved 100 m", pos.x, "m");
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.x);
+    for (int i = 0; i < 30; i++) CB_STEP(&body, DT);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+}
+
 /* 11a. Planet: walking a full great circle of a 20 m sphere with up = radial. */
 static void test_planet_walk_around(void)
 {
@@ -306,6 +355,8 @@ int main(void)
     RUN_TEST(test_platform_elevator);
     RUN_TEST(test_platform_no_follow);
     RUN_TEST(test_collider_body_not_carried);
+    RUN_TEST(test_moving_wall_pushes);
+    RUN_TEST(test_removed_platform_does_not_carry);
     RUN_TEST(test_planet_walk_around);
     RUN_TEST(test_up_change_midair);
     RUN_TEST(test_far_from_origin);

@@ -35,6 +35,11 @@ void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
 {
     char_body_t *b = c->body;
     if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return;
+    /* Only an instance still in the scene carries (it may have been removed since). */
+    bool present = false;
+    for (uint16_t i = 0; i < c->scene->mesh_count && i < COLL_SCENE_MAX_MESHES; i++)
+        if (c->scene->meshes[i] == b->floor_instance) present = true;
+    if (!present) return;
     fm_vec3_t now = cb_xf_apply(&b->floor_instance->xf, b->floor_local_point);
     fm_vec3_t delta = cb_sub(now, b->floor_world_point);
     if (!cb_finite(delta)) return;
