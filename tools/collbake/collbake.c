@@ -636,9 +636,9 @@ int main(int argc, char **argv)
     coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, gs.ncells, m->nrefs);
 
     printf("collbake: %s -> %s\n", o.input, o.output);
-    printf("  input      %u nodes, %u meshes baked, %u skipped%s%s; %u triangles",
-           soup.nodes, soup.meshes_taken, soup.meshes_skipped, o.nonly ? " by --only " : "",
-           o.nonly ? o.only[0] : "", w.in_tris);
+    printf("  input      %u nodes, %u meshes baked, %u skipped", soup.nodes, soup.meshes_taken, soup.meshes_skipped);
+    for (int i = 0; i < o.nonly; i++) printf("%s%s", i ? " " : " (--only ", o.only[i]);
+    printf("%s; %u triangles", o.nonly ? ")" : "", w.in_tris);
     if (soup.nontri_faces) printf(", %u point/line faces ignored", soup.nontri_faces);
     if (soup.bad_faces || soup.nonfinite) printf(", %u bad indices, %u non-finite vertices dropped", soup.bad_faces, soup.nonfinite);
     printf("\n");
@@ -694,11 +694,11 @@ int main(int argc, char **argv)
         char *txt = xmalloc(4096);
         int n = snprintf(txt, 4096,
             "input %s\ntriangles_in %u\ntriangles %u\nvertices %u\nbounds %.9g %.9g %.9g %.9g %.9g %.9g\n"
-            "cell_size %.9g\ncells %llu\nmax_per_cell %u\nbytes %u\nquantized %d\nquant_error %.9g\n"
+            "cell_size %.9g\ncell_size_requested %.9g\ncells %llu\nmax_per_cell %u\nbytes %u\nquantized %d\nquant_error %.9g\n"
             "slivers %u\nnonmanifold_edges %u\nbig_triangles %u\n",
             base_name(o.input), w.in_tris, m->ntris, m->nverts, (double)m->bmin[0], (double)m->bmin[1],
             (double)m->bmin[2], (double)m->bmax[0], (double)m->bmax[1], (double)m->bmax[2], (double)m->cell_size,
-            (unsigned long long)gs.ncells, gs.max_per_cell, m->total_size, quantized, qerr, ss.slivers,
+            (double)o.cell_size, (unsigned long long)gs.ncells, gs.max_per_cell, m->total_size, quantized, qerr, ss.slivers,
             ss.nonmanifold, gs.big_tris);
         write_file(o.report, txt, (size_t)n);
         free(txt);
