@@ -578,6 +578,9 @@ int main(int argc, char **argv)
         die("level too large for the format: coordinates reach %.3g m (limit %.0g m for float precision); "
             "is --scale right?", maxabs, COORD_MAX);
 
+    if (o.weld > 0.0f && maxabs / o.weld > 1e15)
+        die("--weld %g is too small for coordinates up to %.0f m (use --weld 0 to merge exact duplicates only)",
+            (double)o.weld, maxabs);
     welded_t w;
     weld(&soup, o.weld, &w);
     free(soup.p);
