@@ -1,0 +1,681 @@
+/**
+ * @file query.c
+ * @brief Scene queries: raycast (3D DDA through each instance's grid), capsule sweep and
+ *        capsule overlaps (grid cells under the swept box), all exact and allocation-free.
+ *
+ * Precision: every candidate triangle is moved into world orientation RELATIVE TO THE
+ * QUERY ORIGIN before it is tested: w = M * (v - o_local), where M = R * S and o_local is
+ * the query origin in mesh-local space. Near the query the differences are small and
+ * exact-ish, so levels kilometres from the world origin keep sub-millimetre accuracy, and
+ * non-uniform scale stays exact (no approximation of the scaled capsule).
+ * The grid is walked in mesh-local space; the game may change any transform every frame,
+ * so everything derived from it is recomputed per query.
+ */
+#include "coll/scene.h"
+#include "coll/mesh_format.h"
+#include "coll/prim.h"
+#include <math.h>
+#include <string.h>
+
+/* ------------------------------------------------------------------ transforms ----- */
+
+typedef struct {
+    float m[3][3];   /* world_rel = m * local_delta (m[row][col]) */
+    float inv[3][3]; /* inverse of m */
+    bool simple;     /* identity rotation and unit scale */
+} xf3_t;
+
+static bool vfin(const fm_vec3_t *v) { return isfinite(v->x) && isfinite(v->y) && isfinite(v->z); }
+
+static bool xf_prepare(const coll_transform_t *xf, xf3_t *o)
+{
+    const fm_quat_t *q = &xf->rot;
+    const fm_vec3_t *s = &xf->scale;
+    if (!vfin(&xf->pos) || !vfin(s) || !isfinite(q->x) || !isfinite(q->y) || !isfinite(q->z) ||
+        !isfinite(q->w))
+        return false;
+    if (s->x == 0.0f || s->y == 0.0f || s->z == 0.0f) return false;
+    float n2 = q->x * q->x + q->y * q->y + q->z * q->z + q->w * q->w;
+    if (!(n2 > 1e-12f)) return false;
+    o->simple = q->x == 0.0f && q->y == 0.0f && q->z == 0.0f && s->x == 1.0f && s->y == 1.0f &&
+                s->z == 1.0f;
+    float k = 1.0f / sqrtf(n2);
+    float x = q->x * k, y = q->y * k, z = q->z * k, w = q->w * k;
+    float r[3][3] = {
+        { 1.0f - 2.0f * (y * y + z * z), 2.0f * (x * y - z * w), 2.0f * (x * z + y * w) },
+        { 2.0f * (x * y + z * w), 1.0f - 2.0f * (x * x + z * z), 2.0f * (y * z - x * w) },
+        { 2.0f * (x * z - y * w), 2.0f * (y * z + x * w), 1.0f - 2.0f * (x * x + y * y) },
+    };
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            o->m[i][j] = r[i][j] * s->v[j];
+            o->inv[i][j] = r[j][i] / s->v[i];
+        }
+    return true;
+}
+
+static fm_vec3_t mul3(const float m[3][3], const fm_vec3_t *v)
+{
+    fm_vec3_t o;
+    for (int i = 0; i < 3; i++) o.v[i] = m[i][0] * v->x + m[i][1] * v->y + m[i][2] * v->z;
+    return o;
+}
+
+static fm_vec3_t mul3_abs(const float m[3][3], const fm_vec3_t *v)
+{
+    fm_vec3_t o;
+    for (int i = 0; i < 3; i++)
+        o.v[i] = fabsf(m[i][0]) * v->x + fabsf(m[i][1]) * v->y + fabsf(m[i][2]) * v->z;
+    return o;
+}
+
+/* Query origin in mesh-local space. */
+static fm_vec3_t to_local_point(const xf3_t *x, const coll_transform_t *xf, const fm_vec3_t *p)
+{
+    fm_vec3_t d;
+    fm_vec3_sub(&d, p, &xf->pos);
+    return x->simple ? d : mul3(x->inv, &d);
+}
+
+static fm_vec3_t to_local_dir(const xf3_t *x, const fm_vec3_t *d)
+{
+    return x->simple ? *d : mul3(x->inv, d);
+}
+
+/* Triangle i of the instance in world orientation, as its first vertex relative to the
+ * query origin (*w0) plus a shape whose first vertex is the origin. The edges are
+ * transformed from exact local differences, so the triangle's shape (and normal) stays
+ * exact even when it is far from the query; only its placement carries rounding. */
+static void tri_rel(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_local, uint32_t i,
+                    fm_vec3_t *w0, fm_vec3_t out[3])
+{
+    fm_vec3_t v[3], d;
+    coll_mesh_tri_local(m, i, v);
+    fm_vec3_sub(&d, &v[0], o_local);
+    *w0 = x->simple ? d : mul3(x->m, &d);
+    out[0].x = out[0].y = out[0].z = 0.0f;
+    for (int k = 1; k < 3; k++) {
+        fm_vec3_sub(&d, &v[k], &v[0]);
+        out[k] = x->simple ? d : mul3(x->m, &d);
+    }
+}
+
+/* Query-relative copy of a triangle given as w0 + shape. */
+static void tri_abs(const fm_vec3_t *w0, const fm_vec3_t shape[3], fm_vec3_t out[3])
+{
+    for (int k = 0; k < 3; k++) fm_vec3_add(&out[k], w0, &shape[k]);
+}
+
+/* Registration margin of the grid (same formula as the builder) plus rounding slack. */
+static float mesh_margin(const coll_mesh_t *m)
+{
+    float maxabs = 0.0f;
+    for (int a = 0; a < 3; a++) maxabs = fmaxf(maxabs, fmaxf(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
+    return m->cell_size * 1e-3f + maxabs * 2e-6f;
+}
+
+static uint32_t cell_of(float x, float origin, float inv, uint32_t dim)
+{
+    float f = (x - origin) * inv;
+    if (!(f > 0.0f)) return 0;
+    if (f >= (float)dim) return dim - 1u;
+    uint32_t c = (uint32_t)f;
+    return c < dim ? c : dim - 1u;
+}
+
+/* ------------------------------------------------------------------ dedup ---------- */
+
+/* Per-instance set of triangles already tested by this query: open addressing over a
+ * fixed table. When it fills up, further triangles are simply tested again (harmless,
+ * exact) and the query counts one overflow in scene->overflow_count. */
+#define SEEN_BITS 9
+#define SEEN_SLOTS (1u << SEEN_BITS)
+#define SEEN_MAX 384u
+
+typedef struct {
+    uint32_t slot[SEEN_SLOTS]; /* tri + 1, 0 = empty */
+    uint16_t used[SEEN_MAX];
+    uint32_t n;
+    bool overflow;
+} seen_t;
+
+static void seen_init(seen_t *s)
+{
+    memset(s->slot, 0, sizeof s->slot);
+    s->n = 0;
+    s->overflow = false;
+}
+
+static void seen_clear(seen_t *s)
+{
+    for (uint32_t i = 0; i < s->n; i++) s->slot[s->used[i]] = 0;
+    s->n = 0;
+}
+
+enum { SEEN_BEFORE = 0, SEEN_NEW = 1, SEEN_UNKNOWN = 2 };
+
+/* SEEN_NEW when tri has not been seen yet (so it must be tested), SEEN_UNKNOWN when the
+ * table is full and tri is not in it (test it; it may be a repeat). */
+static int seen_check(seen_t *s, uint32_t tri)
+{
+    uint32_t key = tri + 1u;
+    uint32_t h = (key * 2654435761u) >> (32 - SEEN_BITS);
+    for (;;) {
+        uint32_t v = s->slot[h];
+        if (v == key) return SEEN_BEFORE;
+        if (v == 0u) break;
+        h = (h + 1u) & (SEEN_SLOTS - 1u);
+    }
+    if (s->n >= SEEN_MAX) {
+        s->overflow = true;
+        return SEEN_UNKNOWN;
+    }
+    s->slot[h] = key;
+    s->used[s->n++] = (uint16_t)h;
+    return SEEN_NEW;
+}
+
+static bool seen_first(seen_t *s, uint32_t tri) { return seen_check(s, tri) != SEEN_BEFORE; }
+
+/* Exact fallback for the overlap list when the table is full: tri is new in cell
+ * (cx,cy,cz) unless a cell visited earlier in the same box walk lists it (cells keep
+ * their triangles in ascending order: binary search). */
+static bool in_cell(const coll_mesh_t *m, uint32_t ci, uint32_t tri)
+{
+    const uint32_t *cells = coll_mesh_cells(m);
+    uint32_t lo = cells[ci], hi = cells[ci + 1u];
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2u, v = coll_mesh_ref(m, mid);
+        if (v == tri) return true;
+        if (v < tri) lo = mid + 1u; else hi = mid;
+    }
+    return false;
+}
+
+static bool listed_earlier(const coll_mesh_t *m, const uint32_t clo[3], const uint32_t chi[3], uint32_t cx,
+                           uint32_t cy, uint32_t cz, uint32_t tri)
+{
+    for (uint32_t z = clo[2]; z <= cz; z++)
+        for (uint32_t y = clo[1]; y <= chi[1]; y++)
+            for (uint32_t x = clo[0]; x <= chi[0]; x++) {
+                if (z == cz && (y > cy || (y == cy && x >= cx))) return false;
+                if (in_cell(m, x + m->dims[0] * (y + m->dims[1] * z), tri)) return true;
+            }
+    return false;
+}
+
+static void note_overflow(const coll_scene_t *scene, seen_t *s)
+{
+    if (s->overflow) {
+        /* Queries take the scene as const for their geometry; the counter is the one
+         * field they update (the scene object itself is never const). */
+        ((coll_scene_t *)(uintptr_t)scene)->overflow_count++;
+        s->overflow = false;
+    }
+}
+
+/* ------------------------------------------------------------------ raycast -------- */
+
+typedef struct {
+    bool have;
+    float best;          /* current nearest distance */
+    coll_prim_hit_t ph;
+    const coll_mesh_instance_t *inst;
+    const coll_body_t *body;
+    int32_t tri;
+} ray_best_t;
+
+/* Slab clip of o + d s, s in [*s0, *s1], against a box. */
+static bool clip_box(const fm_vec3_t *o, const fm_vec3_t *d, const float lo[3], const float hi[3],
+                     float *s0, float *s1)
+{
+    for (int a = 0; a < 3; a++) {
+        if (d->v[a] == 0.0f) {
+            if (o->v[a] < lo[a] || o->v[a] > hi[a]) return false;
+            continue;
+        }
+        float inv = 1.0f / d->v[a];
+        float t0 = (lo[a] - o->v[a]) * inv, t1 = (hi[a] - o->v[a]) * inv;
+        if (t0 > t1) { float t = t0; t0 = t1; t1 = t; }
+        if (t0 > *s0) *s0 = t0;
+        if (t1 < *s1) *s1 = t1;
+        if (*s0 > *s1) return false;
+    }
+    return true;
+}
+
+static void ray_test_tri(const coll_mesh_instance_t *inst, const xf3_t *x, const fm_vec3_t *o_l,
+                         const fm_vec3_t *dir, uint32_t t, ray_best_t *rb)
+{
+    fm_vec3_t tri[3], w0, o;
+    coll_prim_hit_t ph;
+    tri_rel(inst->mesh, x, o_l, t, &w0, tri);
+    fm_vec3_negate(&o, &w0);
+    if (coll_ray_triangle(&o, dir, tri, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
+        fm_vec3_add(&ph.point, &ph.point, &w0);
+        rb->have = true;
+        rb->best = ph.t;
+        rb->ph = ph;
+        rb->inst = inst;
+        rb->body = NULL;
+        rb->tri = (int32_t)t;
+    }
+}
+
+static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *origin,
+                         const fm_vec3_t *dir, seen_t *seen, ray_best_t *rb)
+{
+    const coll_mesh_t *m = inst->mesh;
+    xf3_t x;
+    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, origin);
+    fm_vec3_t d_l = to_local_dir(&x, dir);
+    float mg = mesh_margin(m);
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; a++) { lo[a] = m->bmin[a] - mg; hi[a] = m->bmax[a] + mg; }
+    float s0 = 0.0f, s1 = rb->best;
+    if (!clip_box(&o_l, &d_l, lo, hi, &s0, &s1)) return;
+
+    /* 3D DDA from the entry point. */
+    const uint32_t *cells = coll_mesh_cells(m);
+    float cs = m->cell_size, inv_cs = 1.0f / cs;
+    uint32_t c[3];
+    int step[3];
+    float inv_d[3];
+    for (int a = 0; a < 3; a++) {
+        float p = o_l.v[a] + d_l.v[a] * s0;
+        c[a] = cell_of(p, m->grid_origin[a], inv_cs, m->dims[a]);
+        step[a] = d_l.v[a] > 0.0f ? 1 : (d_l.v[a] < 0.0f ? -1 : 0);
+        inv_d[a] = step[a] ? 1.0f / d_l.v[a] : 0.0f;
+    }
+    for (;;) {
+        uint32_t ci = c[0] + m->dims[0] * (c[1] + m->dims[1] * c[2]);
+        for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+            uint32_t t = coll_mesh_ref(m, k);
+            if (seen_first(seen, t)) ray_test_tri(inst, &x, &o_l, dir, t, rb);
+        }
+        /* Parameter where the ray leaves this cell: recomputed from the cell index (no
+         * accumulated error). A hit no farther than that is the nearest: every point of
+         * the ray before it lies in a visited cell. */
+        float s_exit = INFINITY;
+        int axis = -1;
+        for (int a = 0; a < 3; a++) {
+            if (!step[a]) continue;
+            float bound = m->grid_origin[a] + (float)(c[a] + (step[a] > 0 ? 1u : 0u)) * cs;
+            float s = (bound - o_l.v[a]) * inv_d[a];
+            if (s < s_exit) { s_exit = s; axis = a; }
+        }
+        if (axis < 0 || s_exit >= s1 || s_exit >= rb->best) break;
+        if (step[axis] > 0) {
+            if (c[axis] + 1u >= m->dims[axis]) break;
+            c[axis]++;
+        } else {
+            if (c[axis] == 0u) break;
+            c[axis]--;
+        }
+    }
+    seen_clear(seen);
+    note_overflow(scene, seen);
+}
+
+static float body_bound_radius(const coll_body_t *b)
+{
+    return fabsf(b->half_extents.x) + fabsf(b->half_extents.y) + fabsf(b->half_extents.z);
+}
+
+static bool body_visible(const coll_body_t *b, uint8_t read_mask)
+{
+    return b && (b->write_mask & read_mask) && vfin(&b->xf.pos);
+}
+
+bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, float max_dist,
+                  uint8_t read_mask, uint8_t coll_types, coll_ray_hit_t *hit)
+{
+    if (!scene || !vfin(&origin) || !vfin(&dir) || !isfinite(max_dist) || !(max_dist > 0.0f))
+        return false;
+    if (!(fm_vec3_len2(&dir) > 0.0f)) return false;
+    ray_best_t rb;
+    memset(&rb, 0, sizeof rb);
+    rb.best = max_dist;
+    rb.tri = -1;
+    seen_t seen;
+    if (coll_types & COLL_TYPE_MESH) {
+        seen_init(&seen);
+        for (uint16_t i = 0; i < scene->mesh_count; i++) {
+            const coll_mesh_instance_t *inst = scene->meshes[i];
+            if (inst && (inst->write_mask & read_mask)) ray_instance(scene, inst, &origin, &dir, &seen, &rb);
+        }
+    }
+    if (coll_types & COLL_TYPE_BODY) {
+        static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
+        float dl2 = fm_vec3_len2(&dir);
+        for (uint16_t i = 0; i < scene->body_count; i++) {
+            const coll_body_t *b = scene->bodies[i];
+            if (!body_visible(b, read_mask)) continue;
+            fm_vec3_t rel;
+            fm_vec3_sub(&rel, &b->xf.pos, &origin);
+            /* Bounding-sphere reject: distance from the centre to the ray segment. */
+            float s = fm_vec3_dot(&rel, &dir) / dl2;
+            if (s < 0.0f) s = 0.0f;
+            if (s > rb.best) s = rb.best;
+            fm_vec3_t cp;
+            fm_vec3_scale(&cp, &dir, s);
+            float R = body_bound_radius(b);
+            if (fm_vec3_distance2(&cp, &rel) > R * R * 1.0001f + 1e-6f) continue;
+            coll_prim_hit_t ph;
+            if (coll_ray_body(&zero, &dir, b, &rel, rb.best, &ph) && (!rb.have || ph.t < rb.best)) {
+                rb.have = true;
+                rb.best = ph.t;
+                rb.ph = ph;
+                rb.inst = NULL;
+                rb.body = b;
+                rb.tri = -1;
+            }
+        }
+    }
+    if (!rb.have) return false;
+    if (hit) {
+        fm_vec3_add(&hit->point, &origin, &rb.ph.point);
+        hit->normal = rb.ph.normal;
+        hit->distance = rb.ph.t;
+        hit->instance = rb.inst;
+        hit->body = rb.body;
+        hit->triangle = rb.tri;
+        hit->type = rb.inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
+        hit->id = rb.inst ? rb.inst->id : rb.body->id;
+    }
+    return true;
+}
+
+/* ------------------------------------------------------------------ capsule -------- */
+
+typedef struct {
+    fm_vec3_t seg[2];   /* relative to the capsule centre */
+    float r;
+    fm_vec3_t disp;
+    float eps;          /* AABB slack */
+} capsule_q_t;
+
+/* World-relative AABB of the capsule swept from 0 to t. */
+static void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *hi)
+{
+    for (int a = 0; a < 3; a++) {
+        float d = q->disp.v[a] * t;
+        float mn = fminf(q->seg[0].v[a], q->seg[1].v[a]), mx = fmaxf(q->seg[0].v[a], q->seg[1].v[a]);
+        lo->v[a] = mn + fminf(d, 0.0f) - q->r - q->eps;
+        hi->v[a] = mx + fmaxf(d, 0.0f) + q->r + q->eps;
+    }
+}
+
+static bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, const fm_vec3_t *hi)
+{
+    for (int a = 0; a < 3; a++) {
+        if (tri[0].v[a] < lo->v[a] && tri[1].v[a] < lo->v[a] && tri[2].v[a] < lo->v[a]) return true;
+        if (tri[0].v[a] > hi->v[a] && tri[1].v[a] > hi->v[a] && tri[2].v[a] > hi->v[a]) return true;
+    }
+    return false;
+}
+
+/* Cell range of a world-relative box in an instance's grid; false when it misses. */
+static bool instance_cells(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const fm_vec3_t *lo,
+                           const fm_vec3_t *hi, uint32_t clo[3], uint32_t chi[3])
+{
+    fm_vec3_t c, h;
+    for (int a = 0; a < 3; a++) {
+        c.v[a] = 0.5f * (lo->v[a] + hi->v[a]);
+        h.v[a] = 0.5f * (hi->v[a] - lo->v[a]);
+    }
+    fm_vec3_t cl = x->simple ? c : mul3(x->inv, &c);
+    fm_vec3_t hl = x->simple ? h : mul3_abs(x->inv, &h);
+    float mg = mesh_margin(m), inv_cs = 1.0f / m->cell_size;
+    for (int a = 0; a < 3; a++) {
+        float l = o_l->v[a] + cl.v[a] - hl.v[a] - mg;
+        float u = o_l->v[a] + cl.v[a] + hl.v[a] + mg;
+        if (u < m->bmin[a] || l > m->bmax[a]) return false;
+        clo[a] = cell_of(l, m->grid_origin[a], inv_cs, m->dims[a]);
+        chi[a] = cell_of(u, m->grid_origin[a], inv_cs, m->dims[a]);
+    }
+    return true;
+}
+
+typedef struct {
+    bool have;
+    float best_t;
+    coll_prim_hit_t ph;
+    const coll_mesh_instance_t *inst;
+    const coll_body_t *body;
+    int32_t tri;
+} sweep_best_t;
+
+static bool sweep_better(const coll_prim_hit_t *h, const sweep_best_t *sb)
+{
+    if (!sb->have) return true;
+    if (h->t < sb->ph.t) return true;
+    return h->t == sb->ph.t && h->t == 0.0f && h->depth > sb->ph.depth;
+}
+
+static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *center,
+                           const capsule_q_t *q, seen_t *seen, sweep_best_t *sb)
+{
+    const coll_mesh_t *m = inst->mesh;
+    xf3_t x;
+    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, center);
+    fm_vec3_t lo, hi;
+    swept_box(q, sb->best_t, &lo, &hi);
+    uint32_t clo[3], chi[3];
+    if (!instance_cells(m, &x, &o_l, &lo, &hi, clo, chi)) return;
+    const uint32_t *cells = coll_mesh_cells(m);
+    for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
+        for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
+            for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
+                uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
+                for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                    uint32_t t = coll_mesh_ref(m, k);
+                    if (!seen_first(seen, t)) continue;
+                    fm_vec3_t shape[3], w0, tri[3], seg[2];
+                    tri_rel(m, &x, &o_l, t, &w0, shape);
+                    tri_abs(&w0, shape, tri);
+                    if (tri_box_reject(tri, &lo, &hi)) continue;
+                    fm_vec3_sub(&seg[0], &q->seg[0], &w0);
+                    fm_vec3_sub(&seg[1], &q->seg[1], &w0);
+                    coll_prim_hit_t ph;
+                    if (coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best_t, &ph) &&
+                        sweep_better(&ph, sb)) {
+                        fm_vec3_add(&ph.point, &ph.point, &w0);
+                        sb->have = true;
+                        sb->best_t = ph.t;
+                        sb->ph = ph;
+                        sb->inst = inst;
+                        sb->body = NULL;
+                        sb->tri = (int32_t)t;
+                        swept_box(q, sb->best_t, &lo, &hi); /* shrink the sweep */
+                    }
+                }
+            }
+    seen_clear(seen);
+    note_overflow(scene, seen);
+}
+
+static bool capsule_args_ok(const fm_vec3_t *center, const fm_vec3_t *axis, float radius, float hh)
+{
+    return vfin(center) && vfin(axis) && isfinite(radius) && radius > 0.0f && isfinite(hh) && hh >= 0.0f;
+}
+
+static void capsule_setup(capsule_q_t *q, const fm_vec3_t *axis, float radius, float hh, const fm_vec3_t *disp)
+{
+    fm_vec3_scale(&q->seg[1], axis, hh);
+    fm_vec3_negate(&q->seg[0], &q->seg[1]);
+    q->r = radius;
+    q->disp = *disp;
+    q->eps = 1e-4f * (radius + hh + fm_vec3_len(disp)) + 1e-6f;
+}
+
+/* Body bounding sphere against a world-relative box. */
+static bool body_box_reject(const coll_body_t *b, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
+{
+    float R = body_bound_radius(b) * 1.0001f + 1e-5f;
+    for (int a = 0; a < 3; a++)
+        if (rel->v[a] + R < lo->v[a] || rel->v[a] - R > hi->v[a]) return true;
+    return false;
+}
+
+bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                        float inner_half_height, fm_vec3_t displacement, uint8_t read_mask,
+                        uint8_t coll_types, coll_sweep_hit_t *hit)
+{
+    if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement))
+        return false;
+    capsule_q_t q;
+    capsule_setup(&q, &axis, radius, inner_half_height, &displacement);
+    sweep_best_t sb;
+    memset(&sb, 0, sizeof sb);
+    sb.best_t = 1.0f;
+    sb.tri = -1;
+    seen_t seen;
+    if (coll_types & COLL_TYPE_MESH) {
+        seen_init(&seen);
+        for (uint16_t i = 0; i < scene->mesh_count; i++) {
+            const coll_mesh_instance_t *inst = scene->meshes[i];
+            if (inst && (inst->write_mask & read_mask)) sweep_instance(scene, inst, &center, &q, &seen, &sb);
+        }
+    }
+    if (coll_types & COLL_TYPE_BODY) {
+        for (uint16_t i = 0; i < scene->body_count; i++) {
+            const coll_body_t *b = scene->bodies[i];
+            if (!body_visible(b, read_mask)) continue;
+            fm_vec3_t rel, lo, hi;
+            fm_vec3_sub(&rel, &b->xf.pos, &center);
+            swept_box(&q, sb.best_t, &lo, &hi);
+            if (body_box_reject(b, &rel, &lo, &hi)) continue;
+            coll_prim_hit_t ph;
+            if (coll_capsule_body_sweep(q.seg, q.r, &q.disp, b, &rel, sb.best_t, &ph) && sweep_better(&ph, &sb)) {
+                sb.have = true;
+                sb.best_t = ph.t;
+                sb.ph = ph;
+                sb.inst = NULL;
+                sb.body = b;
+                sb.tri = -1;
+            }
+        }
+    }
+    if (!sb.have) return false;
+    if (hit) {
+        fm_vec3_add(&hit->point, &center, &sb.ph.point);
+        hit->normal = sb.ph.normal;
+        hit->t = sb.ph.t;
+        hit->depth = sb.ph.t == 0.0f ? sb.ph.depth : 0.0f;
+        hit->instance = sb.inst;
+        hit->body = sb.body;
+        hit->triangle = sb.tri;
+        hit->type = sb.inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
+        hit->id = sb.inst ? sb.inst->id : sb.body->id;
+    }
+    return true;
+}
+
+/* ------------------------------------------------------------------ overlaps ------- */
+
+typedef struct {
+    coll_contact_t *out;
+    uint32_t max_out, kept, total;
+    fm_vec3_t center;
+} contacts_t;
+
+static void contact_add(contacts_t *c, const coll_prim_hit_t *ph, const coll_mesh_instance_t *inst,
+                        const coll_body_t *body, int32_t tri)
+{
+    c->total++;
+    if (c->max_out == 0u || !c->out) return;
+    uint32_t pos = c->kept;
+    if (c->kept == c->max_out) {
+        if (!(ph->depth > c->out[c->kept - 1u].depth)) return;
+        pos = c->kept - 1u; /* drop the shallowest */
+    } else {
+        c->kept++;
+    }
+    while (pos > 0u && c->out[pos - 1u].depth < ph->depth) {
+        c->out[pos] = c->out[pos - 1u];
+        pos--;
+    }
+    coll_contact_t *o = &c->out[pos];
+    o->normal = ph->normal;
+    fm_vec3_add(&o->point, &c->center, &ph->point);
+    o->depth = ph->depth;
+    o->instance = inst;
+    o->body = body;
+    o->triangle = tri;
+    o->type = inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
+    o->id = inst ? inst->id : body->id;
+}
+
+static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const capsule_q_t *q,
+                             seen_t *seen, contacts_t *c)
+{
+    const coll_mesh_t *m = inst->mesh;
+    xf3_t x;
+    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, &c->center);
+    fm_vec3_t lo, hi;
+    swept_box(q, 0.0f, &lo, &hi);
+    uint32_t clo[3], chi[3];
+    if (!instance_cells(m, &x, &o_l, &lo, &hi, clo, chi)) return;
+    const uint32_t *cells = coll_mesh_cells(m);
+    for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
+        for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
+            for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
+                uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
+                for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                    uint32_t t = coll_mesh_ref(m, k);
+                    int sc = seen_check(seen, t);
+                    if (sc == SEEN_BEFORE) continue;
+                    if (sc == SEEN_UNKNOWN && listed_earlier(m, clo, chi, cx, cy, cz, t)) continue;
+                    fm_vec3_t shape[3], w0, tri[3], seg[2];
+                    tri_rel(m, &x, &o_l, t, &w0, shape);
+                    tri_abs(&w0, shape, tri);
+                    if (tri_box_reject(tri, &lo, &hi)) continue;
+                    fm_vec3_sub(&seg[0], &q->seg[0], &w0);
+                    fm_vec3_sub(&seg[1], &q->seg[1], &w0);
+                    coll_prim_hit_t ph;
+                    if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
+                        fm_vec3_add(&ph.point, &ph.point, &w0);
+                        contact_add(c, &ph, inst, NULL, (int32_t)t);
+                    }
+                }
+            }
+    seen_clear(seen);
+    note_overflow(scene, seen);
+}
+
+uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                               float inner_half_height, uint8_t read_mask, uint8_t coll_types,
+                               coll_contact_t *out, uint32_t max_out)
+{
+    if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
+    static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
+    capsule_q_t q;
+    capsule_setup(&q, &axis, radius, inner_half_height, &zero);
+    contacts_t c = { out, max_out, 0, 0, center };
+    seen_t seen;
+    if (coll_types & COLL_TYPE_MESH) {
+        seen_init(&seen);
+        for (uint16_t i = 0; i < scene->mesh_count; i++) {
+            const coll_mesh_instance_t *inst = scene->meshes[i];
+            if (inst && (inst->write_mask & read_mask)) overlap_instance(scene, inst, &q, &seen, &c);
+        }
+    }
+    if (coll_types & COLL_TYPE_BODY) {
+        for (uint16_t i = 0; i < scene->body_count; i++) {
+            const coll_body_t *b = scene->bodies[i];
+            if (!body_visible(b, read_mask)) continue;
+            fm_vec3_t rel, lo, hi;
+            fm_vec3_sub(&rel, &b->xf.pos, &center);
+            swept_box(&q, 0.0f, &lo, &hi);
+            if (body_box_reject(b, &rel, &lo, &hi)) continue;
+            coll_prim_hit_t ph;
+            if (coll_capsule_body_overlap(q.seg, q.r, b, &rel, &ph) && ph.depth > 0.0f)
+                contact_add(&c, &ph, NULL, b, -1);
+        }
+    }
+    return c.total;
+}
