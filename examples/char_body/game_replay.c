@@ -159,14 +159,35 @@ static fm_vec3_t flat_to(const game_t *g, fm_vec3_t p)
     return game_v3_reject(game_v3_sub(p, g->pos), g->up);
 }
 
-/* Steers to p; true once within `radius`. */
-static bool go_to(const game_t *g, game_input_t *in, fm_vec3_t p, float speed, float radius)
+/* Steers to p; true once within `radius`. When the body stops dead while steering hard
+ * (a bump on a turntable, a post), it sidesteps at 75 degrees for a moment, alternating
+ * sides, like a player walking round the obstacle (not for `push`, which leans on walls). */
+static bool go_to(replay_t *r, const game_t *g, game_input_t *in, fm_vec3_t p, float speed, float radius, float dt,
+                  bool detour)
 {
     fm_vec3_t d = flat_to(g, p);
     float dist = game_v3_len(d);
     if (dist < radius) return true;
     if (speed <= 0.0f) speed = g->tuning.run_speed;
-    steer(g, in, d, game_clampf(0.6f + 4.0f * dist, 0.0f, speed));
+    speed = game_clampf(0.6f + 4.0f * dist, 0.0f, speed);
+    float moving = game_v3_len(game_v3_reject(char_body_get_velocity(&g->body), g->up));
+    if (detour && r->detour_time <= 0.0f && speed > 2.0f && moving < 0.3f && game_body_state(g) == 0) {
+        r->stuck_time += dt;
+        if (r->stuck_time > 0.3f) {
+            r->detour_time = 0.6f;
+            r->detour_sign = r->detour_sign > 0.0f ? -1.0f : 1.0f;
+            r->detours++;
+        }
+    } else {
+        r->stuck_time = 0.0f;
+    }
+    if (detour && r->detour_time > 0.0f) {
+        r->detour_time -= dt;
+        fm_quat_t q;
+        fm_quat_from_axis_angle(&q, &g->up, r->detour_sign * 1.309f);
+        fm_quat_rotate_vec3(&d, &q, &d);
+    }
+    steer(g, in, d, speed);
     return false;
 }
 
@@ -217,7 +238,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
         bool done = false, instant = false;
         switch (c->op) {
         case REPLAY_WALK_TO:
-            done = go_to(g, in, game_v3(c->a[0], g->pos.y, c->a[1]), c->a[2], 0.35f);
+            done = go_to(r, g, in, game_v3(c->a[0], g->pos.y, c->a[1]), c->a[2], 0.35f, dt, true);
             instant = done;
             break;
         case REPLAY_JUMP:
@@ -236,7 +257,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             break;
         }
         case REPLAY_PUSH:
-            (void)go_to(g, in, game_v3(c->a[0], g->pos.y, c->a[1]), c->a[3], 0.05f);
+            (void)go_to(r, g, in, game_v3(c->a[0], g->pos.y, c->a[1]), c->a[3], 0.05f, dt, false); /* pushes into walls on purpose */
             done = r->cmd_time + 0.5f * dt >= c->a[2];
             break;
         case REPLAY_LAND_JUMP: {
@@ -263,7 +284,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             float dz = c->op == REPLAY_RIDE ? c->a[3] : c->a[2];
             bool on = char_body_floor_id(&g->body) == GAME_PLATFORM_ID0 + n;
             if (r->sub_state == 0) {
-                bool there = go_to(g, in, platform_point(g, n, dx, dz), 0.0f, 0.3f);
+                bool there = go_to(r, g, in, platform_point(g, n, dx, dz), 0.0f, 0.3f, dt, true);
                 if (on && there) {
                     r->sub_state = 1;
                     r->sub_time = 0.0f;

@@ -64,6 +64,10 @@ typedef struct {
     fm_vec3_t lap_axis;   ///< planet lap: great-circle normal
     fm_vec3_t lap_prev;   ///< planet lap: last radial direction
     float lap_angle;      ///< planet lap: radians walked
+    float stuck_time;     ///< seconds steering hard without moving (blocked)
+    float detour_time;    ///< seconds left of a sidestep round an obstacle
+    float detour_sign;    ///< side of the next sidestep (+1 / -1, alternating)
+    uint32_t detours;     ///< sidesteps taken
     bool gravity_press;   ///< toggle held this frame
     uint32_t timeouts;    ///< commands abandoned after their time limit
     uint16_t timeout_line;///< script line of the first timeout
