@@ -65,7 +65,13 @@ $(BUILD)/n64/example/%.o: $(DEMO_DIR)/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(n64_CC) $(STD) $(WARN) $(n64_CFLAGS) $(INC) -MMD -MP -c $< -o $@
 -include $(DEMO_N64_OBJS:.o=.d)
+# Besides our own API, the game logic may only use float math and mem* from libc.
+DEMO_N64_LIBC := memcpy|memset|memmove|sqrtf|fabsf|floorf|ceilf|sinf|cosf|acosf|atan2f|tanf|fmodf
 n64-example: $(DEMO_N64_OBJS)
+	@bad=$$($(n64_NM) -u $(DEMO_N64_OBJS) | awk 'NF>=2{print $$2}' | sort -u | \
+	      grep -vE '^(game_|char_body_|coll_|fm_)' | grep -vxE '$(DEMO_N64_LIBC)' | tr '\n' ' '); \
+	if [ -n "$$bad" ]; then echo "n64-example: the game logic uses $$bad(not on the console allow-list)"; exit 1; fi; \
+	echo "n64-example: game logic built for the VR4300, libc use: math and mem* only"
 N64_EXTRA += n64-example
 
 # With libdragon (N64_INST set) this builds a ROM through libdragon's n64.mk; this machine
