@@ -223,6 +223,38 @@ static void test_null_owner_and_null_scene(void)
     TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, char_body_foot_pos(&body).y);
 }
 
+/* Small and large capsules rest against a wall where they should (the skin scales down). */
+static void size_into_wall(float r, float h, float step, float snap, float wall_x, float speed)
+{
+    cb_world_reset();
+    cb_level_floor(wall_x * 4.0f);
+    cb_geo_box(cb_vec(wall_x + 0.5f, 20.0f, 0.0f), cb_vec(0.5f, 20.0f, wall_x * 4.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = r; s.height = h; s.step_height = step; s.floor_snap_distance = snap;
+    s.center_offset = cb_vec(0.0f, 0.5f * h, 0.0f);
+    char_body_configure(&body, &s);
+    body.input_velocity = cb_vec(speed, 0.0f, 0.0f);
+    float max_x = -1e9f;
+    for (int i = 0; i < 120; i++) {
+        CB_STEP(&body, DT);
+        if (pos.x > max_x) max_x = pos.x;
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    float err = (wall_x - r - pos.x) / r;
+    char name[96];
+    snprintf(name, sizeof name, "radius %.2f m into a wall: rest gap relative to r", r);
+    report(name, err, "");
+    TEST_ASSERT_TRUE(err >= 0.0f && err < 0.02f);
+    TEST_ASSERT_TRUE(max_x <= wall_x - r);
+}
+static void test_tiny_and_huge_capsules(void)
+{
+    size_into_wall(0.02f, 0.08f, 0.01f, 0.02f, 0.5f, 0.3f);
+    size_into_wall(10.0f, 40.0f, 0.25f, 0.30f, 40.0f, 12.0f);
+}
+
 /* 18. Debug draw: colours per state, capsule along a non-Y up. */
 typedef struct { fm_vec3_t a, b; uint32_t c; } dl_t;
 static dl_t lines[512];
@@ -342,6 +374,7 @@ int main(void)
     RUN_TEST(test_bad_velocities_and_walls);
     RUN_TEST(test_settings_clamped);
     RUN_TEST(test_null_owner_and_null_scene);
+    RUN_TEST(test_tiny_and_huge_capsules);
     RUN_TEST(test_debug_draw_colours);
     RUN_TEST(test_debug_draw_follows_up);
     return UNITY_END();

@@ -370,6 +370,42 @@ static void test_coplanar_seams(void)
     TEST_ASSERT_FLOAT_WITHIN(0.001f * expect, expect, dist);
 }
 
+/* Sliding along a wall tessellated into 0.5 m squares with alternating diagonals, pushed
+ * into it at ~27 degrees: no speed lost at any seam, no creeping into the wall. */
+static void test_tessellated_wall_slide(void)
+{
+    cb_geo_grid(20.0f, 40, 0.0f);
+    for (int j = 0; j < 8; j++)
+        for (int i = 0; i < 80; i++) {
+            float z0 = -10.0f + 0.5f * (float)i, y0 = -0.5f + 0.5f * (float)j;
+            fm_vec3_t a = cb_vec(3.0f, y0, z0), b = cb_vec(3.0f, y0, z0 + 0.5f);
+            fm_vec3_t c = cb_vec(3.0f, y0 + 0.5f, z0 + 0.5f), d = cb_vec(3.0f, y0 + 0.5f, z0);
+            if ((i + j) & 1) { cb_geo_tri(a, b, c); cb_geo_tri(a, c, d); }
+            else { cb_geo_tri(a, b, d); cb_geo_tri(b, c, d); }
+        }
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(3.0f - 0.52f, 0.0f, -8.0f));
+    body.input_velocity = cb_vec(2.5f, 0.0f, 5.0f);
+    float worst_loss = 0.0f, max_x = -1e9f, max_bump = 0.0f;
+    for (int f = 0; f < 90; f++) {
+        fm_vec3_t before = pos;
+        CB_STEP(&body, DT);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        if (f > 2) {
+            float loss = 1.0f - (pos.z - before.z) / DT / 5.0f;
+            if (loss > worst_loss) worst_loss = loss;
+        }
+        if (pos.x > max_x) max_x = pos.x;
+        if (fabsf(pos.y) > max_bump) max_bump = fabsf(pos.y);
+    }
+    report("tessellated wall: worst per-frame speed loss", worst_loss * 100.0f, "%");
+    report("tessellated wall: penetration (negative = gap)", max_x + 0.5f - 3.0f, "m");
+    report("tessellated wall: bump", max_bump, "m");
+    TEST_ASSERT_TRUE(worst_loss < 0.01f);
+    TEST_ASSERT_TRUE(max_x + 0.5f - 3.0f < 0.0f);
+    TEST_ASSERT_TRUE(max_bump < 0.0001f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -388,5 +424,6 @@ int main(void)
     RUN_TEST(test_ledge_no_walk_back_early);
     RUN_TEST(test_slope_50_no_climbing);
     RUN_TEST(test_coplanar_seams);
+    RUN_TEST(test_tessellated_wall_slide);
     return UNITY_END();
 }

@@ -205,6 +205,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.sweep_ihh = body->inner_half_height - 0.5f * s->step_height;
     if (c.sweep_ihh < 0.0f) c.sweep_ihh = 0.0f;
     c.sweep_lift = 0.5f * s->step_height;
+    c.skin = 0.01f * s->radius < CB_SKIN ? 0.01f * s->radius : CB_SKIN;
 
     fm_vec3_t pos = owner_position(body);
     body->velocity = clamp_speed(body->velocity);

@@ -17,7 +17,8 @@ enum {
 };
 
 /* Tolerances. Each says why it exists. */
-/** Gap kept between the sweep capsule and what it hit: the next sweep starts clear, not touching. */
+/** Gap kept between the sweep capsule and what it hit: the next sweep starts clear, not
+ *  touching. At most 1 % of the radius, so small capsules rest where they should. */
 #define CB_SKIN 0.001f
 /** Longest simulated step: larger dt (hitches, 10 s pauses) is clamped so nothing tunnels or explodes. */
 #define CB_MAX_DT 0.1f
@@ -65,6 +66,7 @@ typedef struct {
     float sweep_lift;    ///< sweep capsule centre above the full capsule centre (step / 2)
     float step;          ///< step height
     float snap;          ///< floor snap distance
+    float skin;          ///< contact gap: CB_SKIN, or 1 % of the radius when smaller
 } cb_ctx_t;
 
 /** Full capsule centre of an owner position. */

@@ -12,34 +12,43 @@ static fm_vec3_t clip_plane(fm_vec3_t v, fm_vec3_t n)
     return d < 0.0f ? cb_madd(v, n, -d) : v;
 }
 
+static bool outside_all(fm_vec3_t v, const fm_vec3_t *planes, int np, float tol)
+{
+    for (int k = 0; k < np; k++)
+        if (cb_dot(v, planes[k]) < -tol) return false;
+    return true;
+}
+
 /**
- * v clipped against every plane hit this step (Quake III's PM_SlideMove): clip against
- * the first plane it enters; if that sends it into a second plane, follow the crease of
- * the two; if the crease enters a third plane, stop.
+ * v clipped against every plane hit this step: the vector closest to v that enters none of
+ * them. Like Quake III's PM_SlideMove (clip against a plane; two planes: follow their
+ * crease, the cross product of the normals; three: stop), but choosing among those
+ * candidates exactly: the closest valid one is the longest, since each is an orthogonal
+ * projection of v. Trying one plane after another instead can slide a wide V-corner's
+ * input out along the second wall and ping-pong between the walls every frame.
  */
 static fm_vec3_t clip_planes(fm_vec3_t v, const fm_vec3_t *planes, int np)
 {
-    const float eps = -1e-6f;
+    float tol = 1e-5f * cb_len(v);
+    if (outside_all(v, planes, np, tol)) return v;
+    fm_vec3_t best = cb_v(0.0f, 0.0f, 0.0f);
+    float best_l2 = 0.0f;
     for (int i = 0; i < np; i++) {
-        if (cb_dot(v, planes[i]) >= eps) continue;
-        fm_vec3_t cv = clip_plane(v, planes[i]);
-        for (int j = 0; j < np; j++) {
-            if (j == i || cb_dot(cv, planes[j]) >= eps) continue;
-            cv = clip_plane(cv, planes[j]);
-            if (cb_dot(cv, planes[i]) >= eps) continue;
-            fm_vec3_t dir = cb_norm(cb_cross(planes[i], planes[j]));
-            cv = cb_scale(dir, cb_dot(dir, v));
-            for (int k = 0; k < np; k++) {
-                if (k == i || k == j) continue;
-                if (cb_dot(cv, planes[k]) < eps) return cb_v(0.0f, 0.0f, 0.0f);
-            }
-        }
-        /* The clipped vector may still enter an earlier plane (three walls): stop. */
-        for (int k = 0; k < np; k++)
-            if (cb_dot(cv, planes[k]) < -1e-4f) return cb_v(0.0f, 0.0f, 0.0f);
-        return cv;
+        float d = cb_dot(v, planes[i]);
+        if (d >= 0.0f) continue;
+        fm_vec3_t cv = cb_madd(v, planes[i], -d);
+        float l2 = cb_dot(cv, cv);
+        if (l2 > best_l2 && outside_all(cv, planes, np, tol)) { best = cv; best_l2 = l2; }
     }
-    return v;
+    for (int i = 0; i < np; i++)
+        for (int j = i + 1; j < np; j++) {
+            fm_vec3_t dir = cb_norm(cb_cross(planes[i], planes[j]));
+            if (cb_len(dir) < 0.5f) continue;
+            fm_vec3_t cv = cb_scale(dir, cb_dot(dir, v));
+            float l2 = cb_dot(cv, cv);
+            if (l2 > best_l2 && outside_all(cv, planes, np, tol)) { best = cv; best_l2 = l2; }
+        }
+    return best;
 }
 
 /**
@@ -82,13 +91,13 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     float hl = cb_len(h);
     fm_vec3_t dir = hl > 1e-5f ? cb_scale(h, 1.0f / hl) : cb_norm(cb_reject(hit->normal, c->up));
     if (cb_len(dir) < 0.5f) return false;
-    float need = c->radius + CB_SKIN - hl;
+    float need = c->radius + c->skin - hl;
     if (need <= 0.0f) return false;
     fm_vec3_t d = cb_scale(dir, need);
     coll_sweep_hit_t h2;
     if (coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, d,
                            b->settings.read_mask, b->settings.coll_types, &h2)) {
-        float travel = need * h2.t - CB_SKIN;
+        float travel = need * h2.t - c->skin;
         if (travel > 0.0f) *pos = cb_madd(*pos, dir, travel);
     } else {
         *pos = cb_add(*pos, d);
@@ -116,6 +125,32 @@ static bool step_up_now(const cb_ctx_t *c, fm_vec3_t *pos)
     return true;
 }
 
+/**
+ * A contact normal within ~2.5 degrees of its triangle's face normal becomes the face
+ * normal. Grazing a flat wall or floor tessellated into many triangles, the sweep can meet
+ * a seam's edge or vertex a hair before the face and report a normal tilted by a few
+ * thousandths; sliding along that tilt walks the capsule into the wall and costs speed.
+ */
+static fm_vec3_t face_normal(const coll_sweep_hit_t *hit)
+{
+    fm_vec3_t n = hit->normal;
+    const coll_mesh_instance_t *in = hit->instance;
+    if (!in || !in->mesh || hit->triangle < 0) return n;
+    fm_vec3_t v[3];
+    coll_mesh_triangle(in->mesh, (uint32_t)hit->triangle, v);
+    /* world-space face normal: local normal through the inverse scale, then the rotation */
+    fm_vec3_t ln = cb_cross(cb_sub(v[1], v[0]), cb_sub(v[2], v[0]));
+    const fm_vec3_t *sc = &in->xf.scale;
+    if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return n;
+    ln = cb_v(ln.x / sc->x, ln.y / sc->y, ln.z / sc->z);
+    fm_vec3_t wn;
+    fm_quat_rotate_vec3(&wn, &in->xf.rot, &ln);
+    wn = cb_norm(wn);
+    float d = cb_dot(wn, n);
+    if (d < 0.0f) { wn = cb_scale(wn, -1.0f); d = -d; }
+    return d > 0.999f ? wn : n;
+}
+
 void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
 {
     int step_ups = 0;
@@ -123,6 +158,11 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
     fm_vec3_t planes[CB_MAX_PLANES];
     int np = 0;
     fm_vec3_t rem = disp;
+    /* Each clip starts from the intended motion and velocity (scaled by the time left), not
+     * from the last clipped one: clipping an already-clipped leftover again can turn it
+     * back out of a wide corner and ping-pong (Quake's primal_velocity check, made exact). */
+    const fm_vec3_t vel0 = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    float time_left = 1.0f;
     for (int it = 0; it < b->settings.max_slides; it++) {
         float len = cb_len(rem);
         if (!(len > 1e-6f)) break;
@@ -133,22 +173,31 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
             break;
         }
         if (!cb_finite(hit.normal) || !isfinite(hit.t)) break;
+        hit.normal = face_normal(&hit);
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
         if (t <= 0.0f && hit.depth > 0.0f) {
             /* Started inside: step out along the push-out direction first. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
-            *pos = cb_madd(*pos, hit.normal, d + CB_SKIN * 0.5f);
+            *pos = cb_madd(*pos, hit.normal, d + c->skin * 0.5f);
         } else {
-            /* Advance to the contact, backing off CB_SKIN along the motion. */
-            float travel = len * t - CB_SKIN;
+            /* Advance to the contact, backing off the skin along the motion; at grazing
+             * angles that leaves less than the skin between capsule and plane, so top the
+             * separation up along the normal (sliding along a wall never creeps into it). */
+            float travel = len * t - c->skin;
+            float back = c->skin;
             if (travel > 0.0f) {
                 done = travel / len;
                 *pos = cb_madd(*pos, rem, done);
+            } else {
+                back = len * t;
             }
+            float sep = back * -cb_dot(rem, hit.normal) / len;
+            if (sep < c->skin) *pos = cb_madd(*pos, hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f));
         }
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
         fm_vec3_t left = cb_scale(rem, 1.0f - done);
+        time_left *= 1.0f - done;
         if (!grounded && cb_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit)) {
             rem = left;
             continue;
@@ -165,10 +214,10 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         if (!known && np < CB_MAX_PLANES) planes[np++] = n;
         if (known) {
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
-            *pos = cb_madd(*pos, n, CB_SKIN * 0.1f);
+            *pos = cb_madd(*pos, n, c->skin * 0.1f);
         }
-        rem = clip_planes(left, planes, np);
-        if (vel) *vel = clip_planes(*vel, planes, np);
+        rem = clip_planes(cb_scale(disp, time_left), planes, np);
+        if (vel) *vel = clip_planes(vel0, planes, np);
     }
 }
 
@@ -186,7 +235,7 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         for (int iter = 0; iter < 4; iter++) {
             for (uint32_t i = 0; i < n; i++) {
                 if (!(ct[i].depth > CB_MIN_DEPTH) || !cb_finite(ct[i].normal)) continue;
-                float want = ct[i].depth + 0.5f * CB_SKIN - cb_dot(delta, ct[i].normal);
+                float want = ct[i].depth + 0.5f * c->skin - cb_dot(delta, ct[i].normal);
                 if (want > 0.0f) {
                     delta = cb_madd(delta, ct[i].normal, want);
                     any = true;
@@ -220,7 +269,7 @@ void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec
     if (!cb_finite(n) || cb_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
     /* Slide the foot along the wall it would have entered. */
     fm_vec3_t after = cb_sub(foot, hit.point);
-    fm_vec3_t target = cb_add(cb_madd(hit.point, n, CB_SKIN), clip_plane(after, n));
+    fm_vec3_t target = cb_add(cb_madd(hit.point, n, c->skin), clip_plane(after, n));
     *pos = cb_add(*pos, cb_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
 }
