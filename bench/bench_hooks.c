@@ -1,0 +1,35 @@
+/* Measured-call wrappers and trace markers. See bench_hooks.h. */
+#include "bench_hooks.h"
+
+/* The asm keeps the compiler from treating the markers as pure (and removing the calls). */
+__attribute__((noinline)) void bench_mark_begin(void) { __asm__ volatile("" ::: "memory"); }
+__attribute__((noinline)) void bench_mark_end(void) { __asm__ volatile("" ::: "memory"); }
+
+__attribute__((noinline)) void bench_step(char_body_t *b, const coll_scene_t *s, float dt)
+{
+    bench_mark_begin();
+    char_body_move_and_slide_in(b, s, dt);
+    bench_mark_end();
+}
+
+__attribute__((noinline)) void bench_frame(char_body_t *b, int n, const coll_scene_t *s, float dt)
+{
+    bench_mark_begin();
+    for (int i = 0; i < n; i++) char_body_move_and_slide_in(&b[i], s, dt);
+    bench_mark_end();
+}
+
+__attribute__((noinline)) bool bench_ray(const coll_scene_t *s, fm_vec3_t o, fm_vec3_t d, float max_dist,
+                                         coll_ray_hit_t *hit)
+{
+    bench_mark_begin();
+    bool r = coll_raycast(s, o, d, max_dist, 0xFF, COLL_TYPE_ALL, hit);
+    bench_mark_end();
+    return r;
+}
+
+__attribute__((noinline)) void bench_empty(void)
+{
+    bench_mark_begin();
+    bench_mark_end();
+}

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Markdown tables from the benchmark CSVs (bench/run.sh). Usage: tables.py RESULTS_DIR"""
+import csv, os, sys
+
+d = sys.argv[1]
+def rows(name):
+    with open(os.path.join(d, name)) as f:
+        return list(csv.DictReader(f))
+def g(v, unit=""):
+    v = float(v)
+    if v == 0: return "0"
+    return f"{v:.3g}{unit}"
+
+FRAME = 93.75e6 / 30.0
+out = []
+P = out.append
+
+# ---- speed / accuracy
+P("### Speed against accuracy (scripted 12 s course on the sample level, x86 instructions)\n")
+P("| method | x86 instr / move_and_slide | max penetration (m) | worst TOI error (m) | mean TOI error (m) | missed / false hits | final position error (m) |")
+P("|---|---:|---:|---:|---:|---:|---:|")
+for r in rows("accuracy.csv"):
+    P(f"| {r['method']} | {int(r['instr_per_move']):,} | {g(r['max_pen_m'])} | {g(r['toi_err_max_m'])} | "
+      f"{g(r['toi_err_mean_m'])} | {r['toi_missed']} / {r['toi_false']} of {r['sweeps']} | {g(r['final_err_m'])} |")
+acc = rows("accuracy.csv")
+if acc and acc[0].get("real_level") == "0":
+    P("\n(The baked sample level was missing: a procedural stand-in was used.)")
+P("")
+
+# ---- stability
+st = rows("stability.csv")
+methods = []
+for r in st:
+    if r["method"] not in methods: methods.append(r["method"])
+scen = []
+for r in st:
+    if r["scenario"] not in scen: scen.append(r["scenario"])
+cell = {(r["scenario"], r["method"]): r for r in st}
+P("### Stability suite (pass/fail and the measured error; limit per row)\n")
+P("| scenario | limit | " + " | ".join(methods) + " |")
+P("|---|---|" + "---|" * len(methods))
+for s in scen:
+    r0 = cell[(s, methods[0])]
+    line = f"| {s} | {g(r0['limit'])} {r0['unit']} |"
+    for m in methods:
+        r = cell.get((s, m))
+        if not r: line += " - |"; continue
+        mark = "pass" if r["pass"] == "1" else "**FAIL**"
+        note = "" if r["pass"] == "1" else f" ({r['note']})"
+        pen = f", pen {g(r['max_pen_m'])}" if float(r["max_pen_m"]) > 0 else ""
+        line += f" {mark} {g(r['err'])}{pen}{note} |"
+    P(line)
+npass = {m: sum(1 for s in scen if cell.get((s, m), {}).get("pass") == "1") for m in methods}
+P("| **passed** | | " + " | ".join(f"**{npass[m]} / {len(scen)}**" for m in methods) + " |")
+P("")
+
+# ---- scaling and memory
+P("### Scaling (procedural terrain + boxes; x86 instructions per call, callgrind)\n")
+P("| triangles | cell (m) | instr / move_and_slide | instr / raycast | blob bytes/tri (float) | blob bytes/tri (16-bit quantized) | grid overflows |")
+P("|---:|---:|---:|---:|---:|---:|---:|")
+for r in rows("scaling.csv") + rows("scaling_cell.csv"):
+    c = "auto" if float(r["cell"]) == 0 else r["cell"]
+    P(f"| {int(r['ntris']):,} | {c} | {int(r['instr_per_move']):,} | {int(r['instr_per_ray']):,} | "
+      f"{r['bytes_per_tri_float']} | {r['bytes_per_tri_quant']} | {r['overflows']} |")
+P("")
+cw = rows("cellwalk.csv")
+auto = open(os.path.join(d, "cellwalk_auto.csv")).read().strip().split(",")
+P("Walking on the sample level (test_course, 2102 triangles) against its grid cell: "
+  + ", ".join(f"{r['cell']} m: {int(r['instr_per_move']):,}" for r in cw)
+  + f"; as baked (automatic cell): {int(auto[1]):,} instructions per move_and_slide.\n")
+sz = rows("sizes.csv")
+P("Struct sizes (host, 64-bit pointers): " + ", ".join(f"`{r['struct']}` {r['bytes']} B" for r in sz) + ".\n")
+
+# ---- console
+P("### Console cost (big-endian MIPS, VR4300 code generation, counted under qemu)\n")
+P("Share of a 30 fps frame at 93.75 MHz (3.125 M cycles) assuming 1.5 and 2.0 cycles per instruction.\n")
+P("| scenario | grid cell | x86 instr / call | MIPS instr / call (mean) | MIPS max | frame share @ CPI 1.5 | @ CPI 2 |")
+P("|---|---|---:|---:|---:|---:|---:|")
+for r in rows("console.csv"):
+    c = "as baked" if float(r["cell"]) == 0 else f"{r['cell']} m"
+    mean, mx = float(r["mips_mean"]), float(r["mips_max"])
+    label = r["scenario"]
+    if r["scenario"] == "crowd32":
+        label = "32 bodies, one frame (per frame)"
+        h = int(r["host_instr_per_move"]) * 32
+    else:
+        h = int(r["host_instr_per_move"])
+    P(f"| {label} | {c} | {h:,} | {mean:,.0f} | {mx:,.0f} | {100*mean*1.5/FRAME:.2f} % | {100*mean*2/FRAME:.2f} % |")
+P("")
+print("\n".join(out))

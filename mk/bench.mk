@@ -1,0 +1,55 @@
+# Benchmarks (docs/BENCHMARKS.md): speed against accuracy of the capsule-triangle sweep
+# methods, the stability suite for every method, scaling with level size and grid cell,
+# and console instruction counts (big-endian MIPS, VR4300 code, counted under qemu).
+#
+#   make bench          everything; results in $(BUILD)/bench/, charts and tables copied
+#                       into docs/img/ and docs/BENCHMARKS.md (generated sections)
+#   make bench-bin      just the programs
+#
+# Counts instructions, never time: callgrind on the host, qemu's exec trace on MIPS.
+
+BENCH_OUT   := $(BUILD)/bench
+BENCH_SRCS  := bench/bench_main.c bench/bench_methods.c bench/bench_hooks.c host_tests/support/bench_scn.c
+BENCH_HDRS  := $(wildcard bench/*.h) host_tests/support/bench_scn.h
+BENCH_HOST  := $(BENCH_OUT)/bin/bench_run
+BENCH_MIPS  := $(BENCH_OUT)/bin/bench_run_mips
+BENCH_COUNT := $(BENCH_OUT)/bin/mipscount
+BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) $(CCD_INC) -Ibench -Ihost_tests/support
+
+$(BENCH_HOST): $(BENCH_SRCS) $(BENCH_HDRS) $(BUILD)/host/libcoll.a $(BUILD)/host/libccd.a
+	@mkdir -p $(@D)
+	$(host_CC) $(BENCH_CFLAGS) $(host_CFLAGS) $(BENCH_SRCS) -L$(BUILD)/host -lcoll -lccd -lm -o $@
+
+# Console-cost build: the library objects with the console's code generation
+# (-march=vr4300 -mfix4300, o32 like Debian's libc so it links), the harness with the
+# cross compiler's defaults, static, run by qemu-mips-static.
+BENCH_VR_CFLAGS := -O2 -fno-math-errno -march=vr4300 -mtune=vr4300 -mfix4300
+BENCH_VR_OBJS   := $(patsubst %.c,$(BENCH_OUT)/vr4300/%.o,$(LIB_SRCS))
+
+# GNU ld refuses to link MIPS III (vr4300) objects with Debian's MIPS32r2 libc, so the
+# compiler's VR4300 assembly is assembled as MIPS32r2 (the .module arch line dropped): the
+# instructions are the VR4300 code's own; the assembler rejects any that MIPS32r2 lacks.
+$(BENCH_OUT)/vr4300/%.o: %.c | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(qemu_CC) $(STD) $(WARN) $(BENCH_VR_CFLAGS) $(INC) $(CCD_INC) -S $< -o $(@:.o=.s)
+	sed -i '/^[[:space:]]*\.module[[:space:]]*arch=/d' $(@:.o=.s)
+	$(qemu_CC) -march=mips32r2 -c $(@:.o=.s) -o $@
+
+$(BENCH_OUT)/vr4300/libcoll.a: $(BENCH_VR_OBJS)
+	rm -f $@ && $(qemu_AR) rcs $@ $^
+
+$(BENCH_MIPS): $(BENCH_SRCS) $(BENCH_HDRS) $(BENCH_OUT)/vr4300/libcoll.a $(BUILD)/qemu/libccd.a
+	@mkdir -p $(@D)
+	$(qemu_CC) $(BENCH_CFLAGS) -O2 -fno-math-errno $(BENCH_SRCS) -L$(BENCH_OUT)/vr4300 -L$(BUILD)/qemu \
+	    -lcoll -lccd -static -lm -o $@
+
+$(BENCH_COUNT): bench/mipscount.c
+	@mkdir -p $(@D)
+	$(host_CC) -std=c11 -O2 -Wall -Wextra -Werror $< -o $@
+
+BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/platform_rotate.coll,$(BAKED_LEVELS))
+
+.PHONY: bench bench-bin
+bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
+bench: bench-bin $(BENCH_ASSETS)
+	bash bench/run.sh $(BENCH_OUT) $(ASSET_DIR) $(qemu_RUN) $(n64_NM)
