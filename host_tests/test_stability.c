@@ -16,8 +16,10 @@
  * They are run and reported, and ignored rather than failed until fixed; a known failure
  * that starts passing is reported too, so the list can be trimmed. */
 static const char *const k_known_fail[] = {
-    "vcorner_120",   /* ping-pongs between two rest points 5 cm apart every frame */
-    "seams_wall",    /* catches on a seam of a tessellated wall: one frame loses 77 % speed */
+    /* none at present. History: vcorner_120 (ping-pong between two rest points 5 cm apart
+     * every frame) and seams_wall (one frame losing 77 % speed on a wall seam) failed on the
+     * first char body; both pass since the creases / slide fixes. */
+    NULL,
 };
 
 static _Alignas(8) unsigned char g_buf[BENCH_SCN_BUF];
@@ -28,7 +30,7 @@ void tearDown(void) {}
 static bool known_fail(const char *name)
 {
     for (size_t i = 0; i < sizeof(k_known_fail) / sizeof(k_known_fail[0]); i++)
-        if (strcmp(name, k_known_fail[i]) == 0) return true;
+        if (k_known_fail[i] && strcmp(name, k_known_fail[i]) == 0) return true;
     return false;
 }
 
