@@ -36,6 +36,6 @@ fuzz: $(FUZZ_BIN) $(BAKED_LEVELS)
 	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
 	  $(FUZZ_BIN) -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2048 -max_len=131072 \
 	    -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/ $(FUZZ_DIR)/corpus 2>&1 | tee $(FUZZ_DIR)/fuzz.log \
-	    | grep -E '^(#[0-9]+ +(INITED|DONE)|stat::|==[0-9]+==|SUMMARY|.*(ERROR|Sanitizer|runtime error|Test unit written))'; \
+	    | grep -E '^(#[0-9]+[[:space:]]+(INITED|DONE)|stat::|==[0-9]+==|SUMMARY|.*(ERROR|Sanitizer|runtime error|Test unit written))'; \
 	  rc=$${PIPESTATUS[0]}; if [ $$rc != 0 ]; then echo "fuzz: FAILED (exit $$rc), see $(FUZZ_DIR)/fuzz.log"; exit 1; fi
 	@echo "fuzz: no crash, no sanitizer report"
