@@ -185,8 +185,8 @@ static void test_riser_035_blocks(void)
 static void slope_level(float deg)
 {
     float t = tanf(deg * DEG);
-    const float xs[2] = {-20.0f, 20.0f};
-    const float ys[2] = {-20.0f * t, 20.0f * t};
+    const float xs[2] = {-60.0f, 20.0f};
+    const float ys[2] = {-60.0f * t, 20.0f * t};
     cb_geo_profile(xs, ys, 2, -10.0f, 10.0f);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
 }
@@ -209,30 +209,51 @@ static void test_slope_44_no_drift(void)
     TEST_ASSERT_TRUE(drift < 0.001f);
     TEST_ASSERT_FLOAT_WITHIN(0.001f, pos.x * tanf(44.0f * DEG), pos.y);
 }
-static void test_slope_50_slides(void)
+static void slope_50_slides(float dt, int frames)
 {
+    cb_world_reset();
     slope_level(50.0f);
     cb_body_init(&body, &pos, cb_vec(0.0f, 0.05f, 0.0f));
-    int steep_frames = 0;
+    int steep_frames = 0, first_steep = -1;
     float max_pen = -1e9f;
-    const float t50 = tanf(50.0f * DEG);
-    for (int i = 0; i < 45; i++) {
-        CB_STEP(&body, DT);
-        if (i >= 5 && char_body_is_on_steep_surface(&body) && char_body_is_on_floor(&body)) steep_frames++;
+    const float t50 = tanf(50.0f * DEG), s50 = sinf(50.0f * DEG);
+    for (int i = 0; i < frames; i++) {
+        CB_STEP(&body, dt);
+        bool steep = char_body_is_on_steep_surface(&body) && char_body_is_on_floor(&body);
+        if (steep && first_steep < 0) first_steep = i;
+        if (first_steep >= 0 && steep) steep_frames++;
         /* the sweep capsule's bottom ball must stay out of the plane */
         float cx = pos.x, cy = pos.y + 0.75f;
         float dist = (cy - cx * t50) * cosf(50.0f * DEG);
         if (0.5f - dist > max_pen) max_pen = 0.5f - dist;
     }
-    report("slope 50 deg: steep frames (of 40)", steep_frames, "");
-    report("slope 50 deg: drop after 1.5 s", -pos.y, "m");
-    report("slope 50 deg: sweep capsule penetration", max_pen, "m");
-    TEST_ASSERT_TRUE(steep_frames >= 38);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    float speed = sqrtf(v.x * v.x + v.y * v.y + v.z * v.z);
+    float expect = 30.0f * s50 * dt * (float)(frames - first_steep); /* g sin(slope) t */
+    char name[96];
+    snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): frames to steep contact", 1.0f / dt);
+    report(name, first_steep, "");
+    snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): steep frames after contact (of %d)", 1.0f / dt, frames - first_steep);
+    report(name, steep_frames, "");
+    snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): slide speed vs g sin(50) t", 1.0f / dt);
+    report(name, speed / expect, "");
+    snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): drop", 1.0f / dt);
+    report(name, -pos.y, "m");
+    snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): sweep capsule penetration", 1.0f / dt);
+    report(name, max_pen, "m");
+    TEST_ASSERT_TRUE(first_steep >= 0 && first_steep < frames / 4);
+    TEST_ASSERT_EQUAL_INT(frames - first_steep, steep_frames);
+    TEST_ASSERT_FLOAT_WITHIN(0.05f * expect, expect, speed);
     TEST_ASSERT_TRUE(pos.y < -1.0f);
     TEST_ASSERT_TRUE(pos.x < -0.8f);
     TEST_ASSERT_TRUE(max_pen < 0.001f);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_TRUE(char_body_is_on_steep_surface(&body));
+}
+static void test_slope_50_slides(void)
+{
+    slope_50_slides(DT, 45);
+    slope_50_slides(1.0f / 60.0f, 90); /* the same slide at another frame rate */
 }
 
 /* Pushing uphill on a steep slope does not climb it. */
@@ -253,6 +274,7 @@ static void test_slope_50_no_climbing(void)
     TEST_ASSERT_TRUE(max_y - y0 < 0.001f);
     TEST_ASSERT_TRUE(pos.y < y0 - 0.5f);
     TEST_ASSERT_TRUE(pos.z > 1.0f); /* the sideways part still moves */
+    TEST_ASSERT_TRUE(char_body_is_on_steep_surface(&body));
 }
 
 /* 9. Walking slowly off a ledge: falls once past the edge, cannot walk back up. */

@@ -56,6 +56,7 @@ typedef struct char_body_s {
     const coll_mesh_instance_t *floor_instance; ///< mesh instance stood on (carry), or NULL
     float cos_floor_max_angle;     ///< cached cos(settings.floor_max_angle)
     float inner_half_height;       ///< cached height / 2 - radius
+    float slide_speed;             ///< speed sliding down a steep floor, m/s (private)
     int32_t floor_id;              ///< id of the collider stood on, -1 when none
     uint8_t flags;                 ///< CHAR_BODY_FLAG_* (private)
 } char_body_t;

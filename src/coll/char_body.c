@@ -152,6 +152,7 @@ void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_force
     body->floor_instance = NULL;
     if (reset_forces) {
         body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+        body->slide_speed = 0.0f;
         clear_floor(body);
     }
 }
@@ -232,13 +233,24 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     } else {
         v_up -= s->gravity * dt;
         if (v_up < -s->max_fall_speed) v_up = -s->max_fall_speed;
-        if (was_grounded && was_steep) {
-            /* No walking up a steep slope: drop the input's uphill part. */
-            fm_vec3_t nh = cb_norm(cb_reject(body->floor_normal, up));
+        v = cb_madd(in_h, up, v_up);
+        fm_vec3_t n = body->floor_normal;
+        fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), n));
+        float sin_slope = -cb_dot(down_hill, up);
+        if (was_grounded && was_steep && v_up <= 0.0f && sin_slope > 1e-3f) {
+            /* Steep floor: gravity acts along it. The body keeps its speed down the slope
+             * and gains g sin(slope) per second; input moves it across, never uphill. */
+            fm_vec3_t nh = cb_norm(cb_reject(n, up));
             float into = cb_dot(in_h, nh);
             if (into < 0.0f) in_h = cb_madd(in_h, nh, -into);
+            float speed = body->slide_speed + s->gravity * sin_slope * dt;
+            float cap = s->max_fall_speed / sin_slope;
+            body->slide_speed = speed < cap ? speed : cap;
+            v = cb_madd(in_h, down_hill, body->slide_speed);
+            v_up = cb_dot(v, up);
+        } else {
+            body->slide_speed = 0.0f;
         }
-        v = cb_madd(in_h, up, v_up);
     }
     bool jumping = v_up > 0.0f;
     v = clamp_speed(v);
@@ -247,6 +259,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     /* 4. slide */
     fm_vec3_t old_foot = cb_foot(&c, pos);
     cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
+    if (body->slide_speed > 0.0f) {
+        /* Whatever blocked the slide down the slope also took its speed. */
+        fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), body->floor_normal));
+        float kept = cb_dot(body->velocity, down_hill);
+        if (kept < body->slide_speed) body->slide_speed = kept > 0.0f ? kept : 0.0f;
+    }
 
     /* 5. foot guard */
     if (!walking) cb_foot_guard(&c, &pos, old_foot, &body->velocity);

@@ -71,9 +71,14 @@ void cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
                 grounded = true;
             }
         } else if (nu > 0.0f) {
-            /* Steep: the sweep capsule rests on it; the probe only reports it. */
-            grounded = true;
-            steep = true;
+            /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
+             * which puts the plane r / cos - (r + step) below the foot along up. Only
+             * that close (plus 1 cm) is standing on it; higher up the body is falling. */
+            float rest = c->radius / nu - (c->radius + c->step);
+            if (gap <= (rest > 0.0f ? rest : 0.0f) + 0.01f) {
+                grounded = true;
+                steep = true;
+            }
         }
     }
 
