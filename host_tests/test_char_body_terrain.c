@@ -324,8 +324,8 @@ static void test_ledge(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
 }
 
-/* A ledge that starts the fall early: right at the edge with the full capsule half over it. */
-static void test_ledge_rejump_from_falling(void)
+/* Placed with the centre just past the edge (the full capsule half over it): falls at once. */
+static void test_ledge_start_past_edge_falls(void)
 {
     cb_geo_box(cb_vec(-10.0f, -2.5f, 0.0f), cb_vec(10.0f, 2.5f, 10.0f), 0.0f);
     cb_geo_box(cb_vec(0.0f, -5.5f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f);
@@ -442,7 +442,7 @@ int main(void)
     RUN_TEST(test_slope_44_no_drift);
     RUN_TEST(test_slope_50_slides);
     RUN_TEST(test_ledge);
-    RUN_TEST(test_ledge_rejump_from_falling);
+    RUN_TEST(test_ledge_start_past_edge_falls);
     RUN_TEST(test_ledge_no_walk_back_early);
     RUN_TEST(test_slope_50_no_climbing);
     RUN_TEST(test_coplanar_seams);
