@@ -146,8 +146,10 @@ static void test_course_hill_tops_and_vcorner(void)
 static void test_course_steep_slope_slows_then_recovers(void)
 {
     run_t *c = course_run();
-    TEST_ASSERT_TRUE(c->g.stats.steep_time > 0.3f);
-    TEST_ASSERT_TRUE(c->g.stats.min_speed_factor < 0.7f);
+    /* Landed on the 50 deg slope from a hop and slid down it (a fraction of a second);
+     * the speed factor falls at 2.5 / s while there and is back to 1 afterwards. */
+    TEST_ASSERT_TRUE(c->g.stats.steep_time > 0.1f);
+    TEST_ASSERT_TRUE(c->g.stats.min_speed_factor < 0.8f);
     TEST_ASSERT_EQUAL_FLOAT(1.0f, c->g.speed_factor);
     const replay_mark_t *m = mark(c, "steep_slope"); /* slid back down to the floor */
     TEST_ASSERT_FLOAT_WITHIN(0.05f, 1.0f, m->pos.y);
@@ -223,6 +225,118 @@ static void test_planet_replay_is_deterministic(void)
     TEST_ASSERT_EQUAL_MEMORY(&p->g.pos, &again.g.pos, sizeof p->g.pos);
 }
 
+/* ---- controller details, on the course floor ---- */
+
+static game_t scratch;
+
+static void course_game(game_t *g, fm_vec3_t start)
+{
+    TEST_ASSERT_TRUE_MESSAGE(assets_ok, "baked levels missing (make assets)");
+    game_level_t level;
+    game_level_course(&level, assets.course, assets.platforms);
+    level.spawn = start;
+    game_init(g, &level);
+    game_input_t idle = {0};
+    for (int i = 0; i < 30; i++) game_step(g, &idle, GAME_DT); /* settle on the floor */
+    TEST_ASSERT_EQUAL_INT(0, game_body_state(g));
+}
+
+/* Peak height of a standing jump with the button held for `hold` frames. */
+static float jump_peak(int hold)
+{
+    course_game(&scratch, game_v3(20.0f, 1.05f, -10.0f));
+    float y0 = scratch.pos.y, peak = y0;
+    for (int i = 0; i < 90; i++) {
+        game_input_t in = { .jump = i < hold };
+        game_step(&scratch, &in, GAME_DT);
+        if (scratch.pos.y > peak) peak = scratch.pos.y;
+    }
+    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch)); /* landed again */
+    return peak - y0;
+}
+
+static void test_jump_height_depends_on_hold_time(void)
+{
+    float hop = jump_peak(3), full = jump_peak(60);
+    /* Full jump: v^2 / 2g = 11^2 / 60 = 2.0 m; a tap cuts the rise early. */
+    TEST_ASSERT_FLOAT_WITHIN(0.15f, 2.0f, full);
+    TEST_ASSERT_TRUE(hop > 0.2f);
+    TEST_ASSERT_TRUE(hop < 0.6f * full);
+    TEST_ASSERT_EQUAL_UINT32(0, scratch.stats.jump_cuts); /* the last run held jump throughout */
+}
+
+/* Runs off the 1.3 m ledge (x = -18, top y = 1.3) and taps jump `delay` s after the floor
+ * is gone (the fall takes about 0.29 s). */
+static void ledge_jump(float delay)
+{
+    course_game(&scratch, game_v3(-16.5f, 2.35f, 30.0f));
+    float air = -1.0f;
+    for (int i = 0; i < 120; i++) {
+        fm_vec3_t fwd, right;
+        game_move_basis(&scratch, &fwd, &right);
+        game_input_t in = { .stick_y = -fwd.x, .stick_x = -right.x }; /* run towards -x */
+        if (air < 0.0f && game_body_state(&scratch) == 2) air = scratch.time;
+        in.jump = air >= 0.0f && scratch.time - air >= delay && scratch.time - air < delay + 0.05f;
+        game_step(&scratch, &in, GAME_DT);
+    }
+    TEST_ASSERT_TRUE(air > 0.0f);
+}
+
+static void test_coyote_time_and_jump_buffer(void)
+{
+    ledge_jump(0.05f); /* inside the 0.15 s coyote window: jumps in the air */
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.jumps);
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.coyote_jumps);
+    ledge_jump(0.12f);
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.coyote_jumps);
+    /* Too late for coyote time, still falling: no jump in the air, but the press is
+     * buffered and the jump happens on landing (within 0.15 s of the press). */
+    ledge_jump(0.20f);
+    TEST_ASSERT_EQUAL_UINT32(0, scratch.stats.coyote_jumps);
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.buffered_jumps);
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.jumps);
+}
+
+static void test_falling_out_respawns_at_the_spawn(void)
+{
+    course_game(&scratch, game_v3(-28.0f, 1.05f, -30.0f));
+    char_body_teleport(&scratch.body, game_v3(60.0f, -25.0f, 60.0f), true); /* outside, below */
+    game_input_t idle = {0};
+    game_step(&scratch, &idle, GAME_DT);
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.respawns);
+    TEST_ASSERT_FLOAT_WITHIN(0.1f, -28.0f, scratch.pos.x);
+    TEST_ASSERT_FLOAT_WITHIN(0.1f, -30.0f, scratch.pos.z);
+    for (int i = 0; i < 60; i++) game_step(&scratch, &idle, GAME_DT);
+    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch));
+    TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.respawns);
+}
+
+static void test_gravity_toggle_turns_up_over_several_frames(void)
+{
+    TEST_ASSERT_TRUE_MESSAGE(assets_ok, "baked levels missing (make assets)");
+    game_level_t level;
+    game_level_planet(&level, assets.planet);
+    level.spawn = game_v3(14.85f, 14.85f, 0.0f); /* 45 deg down the side, feet on the surface */
+    game_init(&scratch, &level);
+    game_input_t in = { .toggle_gravity = true };
+    game_step(&scratch, &in, GAME_DT);
+    fm_vec3_t target = game_v3_norm(scratch.pos);
+    float first = game_v3_dot(scratch.up, target);
+    TEST_ASSERT_TRUE(scratch.planet_gravity);
+    TEST_ASSERT_TRUE(first > 0.7072f);  /* moved from straight up (dot 0.707) ... */
+    TEST_ASSERT_TRUE(first < 0.99f);    /* ... but not all the way in one frame */
+    in.toggle_gravity = false;
+    int frames = 1;
+    while (game_v3_dot(scratch.up, game_v3_norm(scratch.pos)) < 0.99999f && frames < 120) {
+        game_step(&scratch, &in, GAME_DT);
+        frames++;
+    }
+    TEST_ASSERT_TRUE(frames >= 10 && frames <= 30); /* 0.35 s at 60 Hz = 21 frames */
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, game_v3_dot(scratch.cam_fwd, scratch.up));
+    for (int i = 0; i < 60; i++) game_step(&scratch, &in, GAME_DT);
+    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch)); /* standing on the side of the planet */
+}
+
 /* ---- script parsing ---- */
 
 static void test_replay_parser_reports_bad_lines(void)
@@ -259,6 +373,10 @@ int main(void)
     RUN_TEST(test_course_game_loop_never_allocates);
     RUN_TEST(test_planet_lap_under_planet_gravity);
     RUN_TEST(test_planet_replay_is_deterministic);
+    RUN_TEST(test_jump_height_depends_on_hold_time);
+    RUN_TEST(test_coyote_time_and_jump_buffer);
+    RUN_TEST(test_falling_out_respawns_at_the_spawn);
+    RUN_TEST(test_gravity_toggle_turns_up_over_several_frames);
     int rc = UNITY_END();
     demo_assets_free(&assets);
     return rc;

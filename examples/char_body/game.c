@@ -280,7 +280,7 @@ void game_step(game_t *g, const game_input_t *in, float dt)
     g->jump_held_prev = in->jump;
     if (pressed) g->jump_buffer_timer = tu->jump_buffer;
     if (grounded) g->coyote_timer = tu->coyote_time;
-    if (g->jump_buffer_timer > 0.0f && g->coyote_timer > 0.0f) {
+    if ((pressed || g->jump_buffer_timer > 0.0f) && g->coyote_timer > 0.0f) {
         fm_vec3_t v = game_v3_reject(char_body_get_velocity(&g->body), g->up);
         char_body_set_velocity(&g->body, game_v3_add(v, game_v3_scale(g->up, tu->jump_speed)));
         g->stats.jumps++;
