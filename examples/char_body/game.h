@@ -93,7 +93,7 @@ typedef struct {
     uint32_t jump_cuts;       ///< early releases that cut the upward speed
     uint32_t respawns;        ///< fell out of the level
     uint32_t gravity_toggles;
-    float ride_distance[GAME_MAX_PLATFORMS]; ///< meters carried while standing on platform i
+    float ride_distance[GAME_MAX_PLATFORMS]; ///< meters platform i carried the player (own walking excluded)
     float ride_time[GAME_MAX_PLATFORMS];     ///< seconds stood on platform i
     float steep_time;         ///< seconds on steep surfaces
     float min_speed_factor;   ///< lowest steep-surface speed factor seen
