@@ -209,14 +209,30 @@ static bool write_views(const game_t *g, const record_t *rec, const char *out_di
     printf("demo: wrote %s (%dx%d)\n", path, w, h);
     img_free(&im);
 
-    /* Side view: x right, y up (seen from +z). */
-    view_t side = { .u_axis = 0, .v_axis = 1, .depth_axis = 2, .v_sign = -1.0f, .depth_sign = 1.0f,
-                    .umin = lo.x, .vref = hi.y, .scale = px_per_m_side, .ox = margin, .oy = margin + title,
-                    .fill_alpha = g->level.has_planet ? 0xFFu : 0x50u };
-    w = (int)((hi.x - lo.x) * side.scale) + 2 * margin;
-    h = (int)((hi.y - lo.y) * side.scale) + 2 * margin + title + 16;
+    /* Side view: x right, y up (seen from +z). A long level is cut into strips stacked
+     * top to bottom so it keeps a readable scale. */
+    int strips = hi.x - lo.x > 60.0f ? 2 : 1;
+    float strip_len = (hi.x - lo.x) / (float)strips;
+    int sw = (int)(strip_len * px_per_m_side) + 2 * margin, sh = (int)((hi.y - lo.y) * px_per_m_side) + 2 * margin;
+    w = sw;
+    h = title + strips * sh + 20;
     if (!img_init(&im, w, h, BG)) return false;
-    draw_view(&im, &side, g, rec, false);
+    for (int k = 0; k < strips; k++) {
+        img_t strip;
+        if (!img_init(&strip, sw, sh, BG)) { img_free(&im); return false; }
+        view_t side = { .u_axis = 0, .v_axis = 1, .depth_axis = 2, .v_sign = -1.0f, .depth_sign = 1.0f,
+                        .umin = lo.x + (float)k * strip_len, .vref = hi.y, .scale = px_per_m_side, .ox = margin,
+                        .oy = margin, .fill_alpha = g->level.has_planet ? 0xFFu : 0x50u };
+        draw_view(&strip, &side, g, rec, false);
+        if (strips > 1) {
+            snprintf(text, sizeof text, "X %.0f .. %.0f", (double)side.umin, (double)(side.umin + strip_len));
+            img_text(&strip, margin, 2, text, 0xA0A8B0FFu, 1);
+        }
+        for (int y = 0; y < sh; y++)
+            memcpy(&im.rgb[3 * (size_t)(title + k * sh + y) * (size_t)w], &strip.rgb[3 * (size_t)y * (size_t)sw],
+                   3 * (size_t)sw);
+        img_free(&strip);
+    }
     snprintf(text, sizeof text, "%s - SIDE VIEW (X RIGHT, Y UP)", name);
     img_text(&im, margin, 8, text, 0xFFFFFFFFu, 2);
     legend(&im, margin, h - 20);
@@ -310,7 +326,7 @@ int main(int argc, char **argv)
 
     game_level_course(&level, a.course, a.platforms);
     snprintf(path, sizeof path, "%s/course.txt", replays);
-    problems += run(&level, path, out, "course", 12.0f, 16.0f, 0.0f, quiet);
+    problems += run(&level, path, out, "course", 12.0f, 24.0f, 0.0f, quiet);
 
     game_level_planet(&level, a.planet);
     snprintf(path, sizeof path, "%s/planet.txt", replays);
