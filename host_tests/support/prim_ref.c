@@ -125,7 +125,7 @@ void prim_ref_sweep(prim_ref_fn f, void *ctx, double r, double t_max, prim_ref_s
     const double g = 0.6180339887498949;
     double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
     double f1 = f(ctx, x1, NULL), f2 = f(ctx, x2, NULL);
-    for (int it = 0; it < 90; it++) {
+    for (int it = 0; it < 75; it++) {
         if (f1 <= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = f(ctx, x1, NULL); }
         else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = f(ctx, x2, NULL); }
     }
@@ -138,7 +138,7 @@ void prim_ref_sweep(prim_ref_fn f, void *ctx, double r, double t_max, prim_ref_s
     if (out->f0 <= r) { out->t_first = 0; f(ctx, 0, &out->n); return; }
     if (out->fmin > r) { out->t_first = -1; return; }
     lo = 0; hi = out->tmin;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * (1 + t_max); it++) {
+    for (int it = 0; it < 200 && hi - lo > 1e-13 * (1 + t_max); it++) {
         double m = 0.5 * (lo + hi);
         if (f(ctx, m, NULL) > r) lo = m; else hi = m;
     }

@@ -37,8 +37,11 @@ bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max
     float b = pv_dot(m, d);
     if (b >= 0.0f) return false;
     float a = pv_dot(d, d);
-    float disc = b * b - a * cc;
-    if (disc < 0.0f) return false;
+    /* b^2 - a*cc cancels badly for a far origin: use a*(r^2 - dmin^2), dmin from the
+     * closest point of the line to the centre. */
+    fm_vec3_t w = pv_madd(m, d, -b / a);
+    float disc = a * (r * r - pv_dot(w, w));
+    if (!(disc >= 0.0f)) return false;
     float s = cc / (-b + sqrtf(disc)); /* smaller root without cancellation */
     if (!(s <= s_max)) return false;
     out->s = s;
@@ -66,8 +69,9 @@ bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1
     float b = pv_dot(mp, dp);
     if (b >= 0.0f) return false;
     float a = pv_dot(dp, dp);
-    float disc = b * b - a * cc;
-    if (disc < 0.0f) return false;
+    fm_vec3_t w = pv_madd(mp, dp, -b / a);    /* closest approach to the axis */
+    float disc = a * (r * r - pv_dot(w, w));
+    if (!(disc >= 0.0f)) return false;
     float s = cc / (-b + sqrtf(disc));
     if (!(s <= s_max)) return false;
     float axial = md + s * dd;
@@ -177,6 +181,13 @@ static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t
         if (d2 < best) { best = d2; *ps = cp; *pt = cq; }
     }
     return best;
+}
+
+float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+{
+    tri_t t;
+    tri_setup(&t, tri);
+    return seg_tri_closest(&t, a, b, ps, pt);
 }
 
 /** Overlap result from the closest points at distance sqrt(d2) < r. */
@@ -303,8 +314,8 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
-                                 const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                       float t_max, bool confirm, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !pv_finite(r) || !(t_max >= 0.0f) || !pv_finite(t_max)) return false;
@@ -352,10 +363,12 @@ bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_
 
     /* Count the contact only when the motion goes deeper than the touch tolerance. */
     fm_vec3_t off = pv_scale(c.d, t_max);
-    float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
-    if (!(d2e < rin * rin)) {
-        feat_hit_t conf;
-        if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
+    if (confirm) {
+        float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        if (!(d2e < rin * rin)) {
+            feat_hit_t conf;
+            if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
+        }
     }
     hit->t = best.t;
     hit->depth = 0.0f;
@@ -372,6 +385,12 @@ bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_
         }
     }
     return true;
+}
+
+bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                                 const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+    return prim_tri_sweep_ex(seg, r, disp, tri, t_max, true, hit);
 }
 
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],

@@ -60,4 +60,16 @@ bool prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, floa
 float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
                            float *u, float *v, fm_vec3_t *cp, fm_vec3_t *cq);
 
+/** Squared distance of segment a..b to a triangle, with closest points (ps on a..b). */
+float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt);
+
+/**
+ * coll_capsule_triangle_sweep with the touch-tolerance confirmation optional: with
+ * confirm = false it reports the first contact (distance r) even when the motion never
+ * goes deeper than the tolerance into this triangle. Unions of triangles (a box) confirm
+ * on the whole union instead.
+ */
+bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                       float t_max, bool confirm, coll_prim_hit_t *hit);
+
 #endif
