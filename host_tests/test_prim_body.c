@@ -440,7 +440,7 @@ static coll_body_t random_body(coll_shape_t shape)
     return make_body(shape, he, q);
 }
 
-static void random_body_case(coll_shape_t shape, body_stats_t *st, double t_tol, double n_tol)
+static void random_body_case(coll_shape_t shape, body_stats_t *st, double t_tol, double n_tol, bool touching)
 {
     coll_body_t b = random_body(shape);
     fm_vec3_t pos = F(prim_ref_scale(rnd_unit(), rnd_range(0, 0.5)));
@@ -453,6 +453,22 @@ static void random_body_case(coll_shape_t shape, body_stats_t *st, double t_tol,
     prim_ref_v3 target = prim_ref_add(R(pos), prim_ref_scale(rnd_unit(), rnd_range(0, 2.5)));
     prim_ref_v3 d = prim_ref_scale(prim_ref_sub(target, start), rnd_range(0.5, 2));
     if (rnd() < 0.15) start = prim_ref_add(target, prim_ref_scale(rnd_unit(), rnd_range(0, 1.5))); /* overlaps */
+    if (touching) {
+        /* start touching (or within the tolerance) and slide, leave or enter slightly */
+        prim_ref_v3 ps, pc;
+        double dist = ref_seg_dist(&ctx.b, prim_ref_sub(start, prim_ref_scale(ax, hh)), prim_ref_add(start, prim_ref_scale(ax, hh)), &ps, &pc);
+        if (dist < 1e-6) return;
+        prim_ref_v3 n = prim_ref_scale(prim_ref_sub(ps, pc), 1 / dist);
+        static const double deltas[] = { 0, 1e-6, -1e-6, -3e-5, -7e-5 };
+        start = prim_ref_add(start, prim_ref_scale(n, r + deltas[rnd_u32() % 5] - dist));
+        prim_ref_v3 v = prim_ref_scale(rnd_unit(), rnd_range(0.1, 3));
+        v = prim_ref_sub(v, prim_ref_scale(n, prim_ref_dot(v, n)));
+        switch (rnd_u32() % 3) {
+        case 0: d = v; break;
+        case 1: d = prim_ref_add(v, prim_ref_scale(n, rnd_range(0, 1))); break;
+        default: d = prim_ref_sub(v, prim_ref_scale(n, pow(10, rnd_range(-4, -1)))); break;
+        }
+    }
     fm_vec3_t seg[2] = { F(prim_ref_sub(start, prim_ref_scale(ax, hh))), F(prim_ref_add(start, prim_ref_scale(ax, hh))) };
     fm_vec3_t fd = F(d);
     float fr = (float)r;
@@ -556,7 +572,7 @@ ray:
 static void run_random(coll_shape_t shape, const char *name, double t_tol, double n_tol)
 {
     body_stats_t st = { 0 };
-    for (int i = 0; i < N_RANDOM; i++) random_body_case(shape, &st, t_tol, n_tol);
+    for (int i = 0; i < N_RANDOM; i++) random_body_case(shape, &st, t_tol, n_tol, i % 4 == 3);
     printf("%s: %d sweeps, %d hits (%d overlaps), %d ambiguous, t checked on %d: max t err %.3g m, max normal err %.3g rad; "
            "overlap depth err %.3g m, overlap normal err %.3g rad; rays %d (%d hits): max err %.3g m, normal %.3g rad\n",
            name, st.n, st.hits, st.overlaps, st.ambiguous, st.checked, st.max_dt, st.max_dn, st.max_depth_err,

@@ -365,7 +365,7 @@ typedef struct {
     double max_dt_rel, max_dt_rel_graze_perp, max_dn_face, max_dn_feat, max_depth_err, max_fdev;
 } sweep_stats_t;
 
-static void random_sweep_once(sweep_stats_t *st, double offset_scale)
+static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touching)
 {
     prim_ref_v3 rt[3];
     double L = pow(10, rnd_range(-1, 1.2));
@@ -388,6 +388,27 @@ static void random_sweep_once(sweep_stats_t *st, double offset_scale)
         if (nn > 0) d = prim_ref_sub(d, prim_ref_scale(n, prim_ref_dot(d, n) / nn));
     }
     (void)dl;
+    if (touching) {
+        /* Start exactly touching or within the tolerance, then slide along the contact
+         * tangent, along the face, away from it, or slightly into it. */
+        prim_ref_v3 ps, pt;
+        prim_ref_v3 a0 = prim_ref_sub(start, prim_ref_scale(ax, hh)), b0 = prim_ref_add(start, prim_ref_scale(ax, hh));
+        double dist = prim_ref_seg_tri(a0, b0, rt, &ps, &pt);
+        if (dist < 1e-6) return;
+        prim_ref_v3 n = prim_ref_scale(prim_ref_sub(ps, pt), 1 / dist);
+        static const double deltas[] = { 0, 1e-6, -1e-6, 1e-5, -2e-5, -5e-5, -8e-5 };
+        double delta = deltas[rnd_u32() % 7];
+        start = prim_ref_add(start, prim_ref_scale(n, r + delta - dist));
+        prim_ref_v3 tn = prim_ref_cross(prim_ref_sub(rt[1], rt[0]), prim_ref_sub(rt[2], rt[0]));
+        double tl = prim_ref_len(tn);
+        prim_ref_v3 v = prim_ref_scale(rnd_unit(), rnd_range(0.1, 3));
+        switch (rnd_u32() % 4) {
+        case 0: d = prim_ref_sub(v, prim_ref_scale(n, prim_ref_dot(v, n))); break;            /* tangent */
+        case 1: d = tl > 0 ? prim_ref_sub(v, prim_ref_scale(tn, prim_ref_dot(v, tn) / (tl * tl))) : v; break; /* along face */
+        case 2: d = prim_ref_add(prim_ref_sub(v, prim_ref_scale(n, prim_ref_dot(v, n))), prim_ref_scale(n, rnd_range(0, 1))); break;
+        default: d = prim_ref_sub(prim_ref_sub(v, prim_ref_scale(n, prim_ref_dot(v, n))), prim_ref_scale(n, pow(10, rnd_range(-5, -1)))); break;
+        }
+    }
     /* World coordinates offset from the origin by up to offset_scale and rounded to float
      * there, then made relative to the capsule centre in float, as the scene code does. */
     prim_ref_v3 off = prim_ref_scale(rnd_unit(), offset_scale * rnd());
@@ -505,16 +526,25 @@ static void report_sweep(const char *name, const sweep_stats_t *st)
 static void test_random_sweeps_match_reference(void)
 {
     sweep_stats_t st = { 0 };
-    for (int i = 0; i < N_RANDOM_SWEEPS; i++) random_sweep_once(&st, 0.0);
+    for (int i = 0; i < N_RANDOM_SWEEPS; i++) random_sweep_once(&st, 0.0, false);
     report_sweep("near origin", &st);
     TEST_ASSERT_TRUE(st.hits > N_RANDOM_SWEEPS / 4);
     TEST_ASSERT_TRUE(st.ambiguous < N_RANDOM_SWEEPS / 100);
 }
 
+static void test_random_touching_sweeps(void)
+{
+    sweep_stats_t st = { 0 };
+    for (int i = 0; i < N_RANDOM_SWEEPS / 2; i++) random_sweep_once(&st, 0.0, true);
+    report_sweep("starting in touch (sliding, leaving, entering)", &st);
+    TEST_ASSERT_TRUE(st.hits > N_RANDOM_SWEEPS / 40);
+    TEST_ASSERT_TRUE(st.n - st.hits > N_RANDOM_SWEEPS / 10);
+}
+
 static void test_random_sweeps_far_from_origin(void)
 {
     sweep_stats_t st = { 0 };
-    for (int i = 0; i < N_RANDOM_SWEEPS / 4; i++) random_sweep_once(&st, 1000.0);
+    for (int i = 0; i < N_RANDOM_SWEEPS / 4; i++) random_sweep_once(&st, 1000.0, false);
     report_sweep("world offset up to 1 km, relative to the capsule", &st);
     TEST_ASSERT_TRUE(st.hits > N_RANDOM_SWEEPS / 20);
 }
@@ -690,5 +720,6 @@ int main(void)
     RUN_TEST(test_ray_watertight_on_shared_edge);
     RUN_TEST(test_random_sweeps_match_reference);
     RUN_TEST(test_random_sweeps_far_from_origin);
+    RUN_TEST(test_random_touching_sweeps);
     return UNITY_END();
 }
