@@ -8,6 +8,10 @@
 #include <math.h>
 #include <string.h>
 
+/* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */
+static inline float min_f(float a, float b) { return a < b ? a : b; }
+static inline float max_f(float a, float b) { return a > b ? a : b; }
+
 /* Hard caps of the grid, which coll_mesh_build_size() budgets for: the builder grows the
  * cell size until the grid fits (a single cell always does). */
 #define GRID_MAX_CELLS(n) (2u * (uint64_t)(n) + 64u)
@@ -204,7 +208,7 @@ static bool input_tri_ok(const float *verts, uint32_t nverts, const uint32_t *ix
 static bool axis_separates(const fm_vec3_t *a, const fm_vec3_t v[3], const float h[3])
 {
     float p0 = fm_vec3_dot(a, &v[0]), p1 = fm_vec3_dot(a, &v[1]), p2 = fm_vec3_dot(a, &v[2]);
-    float lo = fminf(p0, fminf(p1, p2)), hi = fmaxf(p0, fmaxf(p1, p2));
+    float lo = min_f(p0, min_f(p1, p2)), hi = max_f(p0, max_f(p1, p2));
     float r = h[0] * fabsf(a->x) + h[1] * fabsf(a->y) + h[2] * fabsf(a->z);
     return lo > r || hi < -r;
 }
@@ -215,8 +219,8 @@ static bool tri_box_overlap(const fm_vec3_t tri[3], const float c[3], const floa
     for (int i = 0; i < 3; i++)
         for (int a = 0; a < 3; a++) v[i].v[a] = tri[i].v[a] - c[a];
     for (int a = 0; a < 3; a++) {
-        float lo = fminf(v[0].v[a], fminf(v[1].v[a], v[2].v[a]));
-        float hi = fmaxf(v[0].v[a], fmaxf(v[1].v[a], v[2].v[a]));
+        float lo = min_f(v[0].v[a], min_f(v[1].v[a], v[2].v[a]));
+        float hi = max_f(v[0].v[a], max_f(v[1].v[a], v[2].v[a]));
         if (lo > h[a] || hi < -h[a]) return false;
     }
     fm_vec3_sub(&e[0], &v[1], &v[0]);
@@ -261,8 +265,8 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
     uint32_t lo[3], hi[3];
     float inv = 1.0f / g->cell;
     for (int a = 0; a < 3; a++) {
-        float mn = fminf(tri[0].v[a], fminf(tri[1].v[a], tri[2].v[a])) - g->margin;
-        float mx = fmaxf(tri[0].v[a], fmaxf(tri[1].v[a], tri[2].v[a])) + g->margin;
+        float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
+        float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
         lo[a] = cell_coord(mn, g->origin[a], inv, g->dims[a]);
         hi[a] = cell_coord(mx, g->origin[a], inv, g->dims[a]);
     }
@@ -335,8 +339,8 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
     float ext[3], maxabs = 0.0f, maxext = 0.0f;
     for (int a = 0; a < 3; a++) {
         ext[a] = m->bmax[a] - m->bmin[a];
-        maxext = fmaxf(maxext, ext[a]);
-        maxabs = fmaxf(maxabs, fmaxf(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
+        maxext = max_f(maxext, ext[a]);
+        maxabs = max_f(maxabs, max_f(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
         g->origin[a] = m->bmin[a];
     }
     bool automatic = !(want_cell > 0.0f);
@@ -371,7 +375,7 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         }
         if (single) return; /* cannot happen: one cell holds ntris <= max_refs refs */
         cell *= 1.5f;
-        if (cell >= maxext) cell = fmaxf(maxext, 1e-6f) * 1.0001f;
+        if (cell >= maxext) cell = max_f(maxext, 1e-6f) * 1.0001f;
     }
 }
 
@@ -412,8 +416,8 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
             if (!tri_has_area(tri)) continue;
             for (int k = 0; k < 3; k++)
                 for (int a = 0; a < 3; a++) {
-                    lo[a] = fminf(lo[a], tri[k].v[a]);
-                    hi[a] = fmaxf(hi[a], tri[k].v[a]);
+                    lo[a] = min_f(lo[a], tri[k].v[a]);
+                    hi[a] = max_f(hi[a], tri[k].v[a]);
                 }
         }
         for (int a = 0; a < 3; a++) {
@@ -463,11 +467,11 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
         }
         float e = 0.0f;
         for (int a = 0; a < 3; a++) {
-            float mn = fminf(tri[0].v[a], fminf(tri[1].v[a], tri[2].v[a]));
-            float mx = fmaxf(tri[0].v[a], fmaxf(tri[1].v[a], tri[2].v[a]));
-            lo[a] = fminf(lo[a], mn);
-            hi[a] = fmaxf(hi[a], mx);
-            e = fmaxf(e, mx - mn);
+            float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a]));
+            float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a]));
+            lo[a] = min_f(lo[a], mn);
+            hi[a] = max_f(hi[a], mx);
+            e = max_f(e, mx - mn);
         }
         extent_sum += e;
         nt++;

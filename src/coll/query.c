@@ -17,6 +17,10 @@
 #include <math.h>
 #include <string.h>
 
+/* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */
+static inline float min_f(float a, float b) { return a < b ? a : b; }
+static inline float max_f(float a, float b) { return a > b ? a : b; }
+
 /* ------------------------------------------------------------------ transforms ----- */
 
 typedef struct {
@@ -110,7 +114,7 @@ static void tri_abs(const fm_vec3_t *w0, const fm_vec3_t shape[3], fm_vec3_t out
 static float mesh_margin(const coll_mesh_t *m)
 {
     float maxabs = 0.0f;
-    for (int a = 0; a < 3; a++) maxabs = fmaxf(maxabs, fmaxf(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
+    for (int a = 0; a < 3; a++) maxabs = max_f(maxabs, max_f(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
     return m->cell_size * 1e-3f + maxabs * 2e-6f;
 }
 
@@ -401,9 +405,9 @@ static void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *h
 {
     for (int a = 0; a < 3; a++) {
         float d = q->disp.v[a] * t;
-        float mn = fminf(q->seg[0].v[a], q->seg[1].v[a]), mx = fmaxf(q->seg[0].v[a], q->seg[1].v[a]);
-        lo->v[a] = mn + fminf(d, 0.0f) - q->r - q->eps;
-        hi->v[a] = mx + fmaxf(d, 0.0f) + q->r + q->eps;
+        float mn = min_f(q->seg[0].v[a], q->seg[1].v[a]), mx = max_f(q->seg[0].v[a], q->seg[1].v[a]);
+        lo->v[a] = mn + min_f(d, 0.0f) - q->r - q->eps;
+        hi->v[a] = mx + max_f(d, 0.0f) + q->r + q->eps;
     }
 }
 
