@@ -1,0 +1,348 @@
+/* Soak program: random levels, random settings, random play, every frame checked by an
+ * independent double-precision checker. On a failure it prints seed/level/frame and writes
+ * a replay file that `make soak-replay REPLAY=path` (or `soak --replay path`) reproduces.
+ *
+ *   soak [--frames N] [--seed S] [--out DIR] [--max-replays N] [--level-frames N] [-v]
+ *        [--save-passing N]   also write the first N levels that pass as baseline replays
+ *        [--known DIR]        failures on levels of DIR's replays (open bugs) do not fail
+ *   soak --replay FILE [--bless]     replay one file (bless: store this arch's final state)
+ *   soak --replay-dir DIR            replay every *.replay in DIR
+ *
+ * Exit status: 0 when no hard property failure was seen, 1 otherwise, 2 on usage/IO errors.
+ */
+#define _FILE_OFFSET_BITS 64 /* 32-bit MIPS under qemu: readdir with 64-bit directory offsets */
+#include "soak_sim.h"
+#include <dirent.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#define MAX_LEVEL_FRAMES 4000
+
+static soak_level_t g_level;
+static soak_sim_t g_sim;
+static soak_frame_t g_frames[MAX_LEVEL_FRAMES];
+
+/* Body state before each frame, for shrinking a failing replay. */
+typedef struct { fm_vec3_t owner, vel, up; double time; bool excused; } state_t;
+static state_t g_state[MAX_LEVEL_FRAMES];
+
+/* Shortest suffix of the level's frames (1, 2, 4, ... frames, starting from the recorded
+ * state: position, velocity, up, level time) that still fails the same way. Fills rp
+ * (frames point into g_frames); returns false when only the full replay reproduces. */
+static bool shrink(uint64_t lseed, const char_body_settings_t *s, fm_vec3_t start, uint32_t fail_frame, int kind,
+                   soak_replay_t *rp)
+{
+    for (uint32_t k = 1; k <= fail_frame; k *= 2) {
+        uint32_t first = fail_frame + 1 - k;
+        const state_t *st = &g_state[first];
+        if (st->excused) continue; /* the shrunk start must be overlap-free */
+        memset(rp, 0, sizeof *rp);
+        rp->level_seed = lseed;
+        rp->settings = *s;
+        rp->settings.up = st->up;
+        rp->start = st->owner;
+        rp->t0 = st->time;
+        rp->vel0 = st->vel;
+        rp->has_vel0 = true;
+        rp->start_clear = true;
+        rp->frames = &g_frames[first];
+        rp->nframes = k;
+        rp->cap = k;
+        soak_replay_result_t res;
+        if (soak_replay_run(rp, &g_level, &res) == 0 && res.fails > 0 && res.first_fail_kind == kind &&
+            res.first_fail_frame == k - 1)
+            return true;
+    }
+    memset(rp, 0, sizeof *rp);
+    rp->level_seed = lseed;
+    rp->settings = *s;
+    rp->start = start;
+    rp->frames = g_frames;
+    rp->nframes = fail_frame + 1;
+    return false;
+}
+
+/* Level seeds of the open-bug replays (--known DIR): failures there are reported as known. */
+#define MAX_KNOWN 512
+static uint64_t known_seeds[MAX_KNOWN];
+static unsigned nknown;
+
+static int load_known(const char *dir)
+{
+    static soak_frame_t scratch[1u << 13];
+    DIR *d = opendir(dir);
+    if (!d) return 0; /* no open bugs */
+    struct dirent *de;
+    char path[1024];
+    while ((de = readdir(d)) != NULL && nknown < MAX_KNOWN) {
+        size_t l = strlen(de->d_name);
+        if (l < 8 || strcmp(de->d_name + l - 7, ".replay") != 0) continue;
+        snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+        soak_replay_t rp;
+        rp.frames = scratch;
+        rp.cap = sizeof scratch / sizeof scratch[0];
+        int line = 0;
+        if (soak_replay_read(path, &rp, &line) != 0) {
+            fprintf(stderr, "ERROR: %s:%d: cannot parse replay\n", path, line);
+            closedir(d);
+            return -1;
+        }
+        known_seeds[nknown++] = rp.level_seed;
+    }
+    closedir(d);
+    return 0;
+}
+
+static bool is_known(uint64_t lseed)
+{
+    for (unsigned i = 0; i < nknown; i++)
+        if (known_seeds[i] == lseed) return true;
+    return false;
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: soak [--frames N] [--seed S] [--out DIR] [--max-replays N] [--level-frames N]\n"
+                    "            [--save-passing N] [--known DIR] [-v]\n"
+                    "       soak --replay FILE [--bless]\n"
+                    "       soak --replay-dir DIR\n");
+}
+
+static void add_stats(soak_stats_t *a, const soak_stats_t *b)
+{
+    a->frames += b->frames;
+    for (int k = 0; k < SOAK_FAIL_COUNT; k++) a->hard[k] += b->hard[k];
+    a->soft_pen_frames += b->soft_pen_frames;
+    a->stuck_events += b->stuck_events;
+    a->excused_escapes += b->excused_escapes;
+    a->on_floor_frames += b->on_floor_frames;
+    a->steep_frames += b->steep_frames;
+    if (b->max_soft_pen > a->max_soft_pen) a->max_soft_pen = b->max_soft_pen;
+    if (b->max_hard_pen > a->max_hard_pen) a->max_hard_pen = b->max_hard_pen;
+}
+
+static void print_stats(const char *what, const soak_stats_t *st, uint64_t levels, double secs)
+{
+    uint64_t hard = 0;
+    for (int k = 1; k < SOAK_FAIL_COUNT; k++) hard += st->hard[k];
+    printf("%s: %llu frames, %llu levels, %llu hard failures (nonfinite %llu, penetration %llu, escape %llu, "
+           "floor %llu, state %llu)\n",
+           what, (unsigned long long)st->frames, (unsigned long long)levels, (unsigned long long)hard,
+           (unsigned long long)st->hard[SOAK_FAIL_NONFINITE], (unsigned long long)st->hard[SOAK_FAIL_PENETRATION],
+           (unsigned long long)st->hard[SOAK_FAIL_ESCAPE], (unsigned long long)st->hard[SOAK_FAIL_FLOOR],
+           (unsigned long long)st->hard[SOAK_FAIL_STATE]);
+    printf("%s: excused penetration frames %llu (teleport/up change/mover; max %.1f mm), stuck >%d frames: %llu, "
+           "left the room while recovering: %llu, on floor %.1f%%, steep %.1f%%",
+           what, (unsigned long long)st->soft_pen_frames, st->max_soft_pen * 1000.0, SOAK_RECOVER_FRAMES,
+           (unsigned long long)st->stuck_events, (unsigned long long)st->excused_escapes, st->frames ? 100.0 * (double)st->on_floor_frames / (double)st->frames : 0.0,
+           st->frames ? 100.0 * (double)st->steep_frames / (double)st->frames : 0.0);
+    if (secs > 0) printf(", %.0f frames/s", (double)st->frames / secs);
+    printf("\n");
+}
+
+static int replay_one(const char *path, bool bless, bool verbose)
+{
+    static soak_frame_t frames[1u << 16];
+    soak_replay_t rp;
+    rp.frames = frames;
+    rp.cap = sizeof frames / sizeof frames[0];
+    int line = 0;
+    int rc = soak_replay_read(path, &rp, &line);
+    if (rc != 0) { fprintf(stderr, "ERROR: %s:%d: cannot parse replay (%d)\n", path, line, rc); return 2; }
+    soak_replay_result_t res;
+    if (soak_replay_run_explain(&rp, &g_level, &res, verbose ? stdout : NULL) != 0) {
+        fprintf(stderr, "ERROR: %s: level 0x%016llx does not build\n", path, (unsigned long long)rp.level_seed);
+        return 2;
+    }
+    int bad = 0;
+    if (res.fails) {
+        printf("%s: FAIL %d hard failure(s); first at frame %u: %s: %s\n", path, res.fails,
+               (unsigned)res.first_fail_frame, soak_fail_name(res.first_fail_kind), res.first_msg);
+        bad = 1;
+    }
+    const soak_expect_t *e = soak_replay_expect_for(&rp, soak_arch());
+    if (e && strcmp(e->lib, soak_lib_version()) != 0) {
+        printf("%s: stored %s state is from library %s, this is %s: not compared (make soak-bless)\n", path,
+               soak_arch(), e->lib, soak_lib_version());
+        e = NULL;
+    }
+    if (e) {
+        bool same = memcmp(&e->pos, &res.pos, sizeof e->pos) == 0 && memcmp(&e->vel, &res.vel, sizeof e->vel) == 0 &&
+                    e->on_floor == res.on_floor;
+        if (!same) {
+            printf("%s: FAIL final state differs from the stored %s state: pos %a %a %a (stored %a %a %a)\n", path,
+                   soak_arch(), (double)res.pos.x, (double)res.pos.y, (double)res.pos.z, (double)e->pos.x,
+                   (double)e->pos.y, (double)e->pos.z);
+            bad = 1;
+        }
+    }
+    if (!bad || verbose)
+        printf("%s: %s, %u frames, final pos %a %a %a vel %a %a %a floor %d%s\n", path, bad ? "FAILED" : "ok",
+               (unsigned)rp.nframes, (double)res.pos.x, (double)res.pos.y, (double)res.pos.z, (double)res.vel.x,
+               (double)res.vel.y, (double)res.vel.z, res.on_floor, e ? " (matches stored state bitwise)" : "");
+    if (bless) {
+        if (res.fails) { fprintf(stderr, "ERROR: %s: not blessing a replay that fails\n", path); return 1; }
+        soak_expect_t *slot = (soak_expect_t *)soak_replay_expect_for(&rp, soak_arch());
+        if (!slot) {
+            if (rp.nexpect >= SOAK_MAX_EXPECT) { fprintf(stderr, "ERROR: %s: too many expect lines\n", path); return 2; }
+            slot = &rp.expect[rp.nexpect++];
+            snprintf(slot->arch, sizeof slot->arch, "%s", soak_arch());
+        }
+        snprintf(slot->lib, sizeof slot->lib, "%s", soak_lib_version());
+        slot->pos = res.pos;
+        slot->vel = res.vel;
+        slot->on_floor = res.on_floor;
+        rp.fail_kind = 0;
+        if (soak_replay_write(path, &rp) != 0) { fprintf(stderr, "ERROR: %s: cannot write\n", path); return 2; }
+        printf("%s: stored the %s final state\n", path, soak_arch());
+        return 0;
+    }
+    return bad;
+}
+
+static int replay_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) { fprintf(stderr, "ERROR: %s: %s\n", dir, strerror(errno)); return 2; }
+    struct dirent *de;
+    int worst = 0, n = 0;
+    char path[1024];
+    while ((de = readdir(d)) != NULL) {
+        size_t l = strlen(de->d_name);
+        if (l < 8 || strcmp(de->d_name + l - 7, ".replay") != 0) continue;
+        snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+        int rc = replay_one(path, false, true);
+        if (rc > worst) worst = rc;
+        n++;
+    }
+    closedir(d);
+    printf("%d replay(s) in %s\n", n, dir);
+    return worst;
+}
+
+int main(int argc, char **argv)
+{
+    uint64_t frames = 100000, seed = 1;
+    const char *out = "build/soak-failures", *replay = NULL, *rdir = NULL;
+    unsigned max_replays = 20, level_frames = 0, save_passing = 0, saved = 0;
+    bool bless = false, verbose = false;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--frames") && v) { frames = strtoull(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--seed") && v) { seed = strtoull(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--out") && v) { out = v; i++; }
+        else if (!strcmp(a, "--max-replays") && v) { max_replays = (unsigned)strtoul(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--level-frames") && v) { level_frames = (unsigned)strtoul(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--replay") && v) { replay = v; i++; }
+        else if (!strcmp(a, "--replay-dir") && v) { rdir = v; i++; }
+        else if (!strcmp(a, "--known") && v) { if (load_known(v) != 0) return 2; i++; }
+        else if (!strcmp(a, "--save-passing") && v) { save_passing = (unsigned)strtoul(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--bless")) bless = true;
+        else if (!strcmp(a, "-v")) verbose = true;
+        else { usage(); return 2; }
+    }
+    if (replay) return replay_one(replay, bless, true);
+    if (rdir) return replay_dir(rdir);
+    if (level_frames > MAX_LEVEL_FRAMES) level_frames = MAX_LEVEL_FRAMES;
+
+    printf("soak: seed %llu, %llu frames, arch %s\n", (unsigned long long)seed, (unsigned long long)frames, soak_arch());
+    fflush(stdout);
+    soak_stats_t total;
+    memset(&total, 0, sizeof total);
+    uint64_t levels = 0, gen_errors = 0, failures = 0, known = 0;
+    unsigned written = 0;
+    clock_t t0 = clock();
+    for (uint64_t li = 0; total.frames < frames; li++) {
+        uint64_t lseed = soak_mix64(seed * 0x100000001B3ull + li);
+        int grc = soak_level_generate(&g_level, lseed);
+        if (grc != 0) {
+            gen_errors++;
+            fprintf(stderr, "ERROR: level 0x%016llx does not build (%d)\n", (unsigned long long)lseed, grc);
+            if (gen_errors > 10) return 2;
+            continue;
+        }
+        levels++;
+        soak_rng_t r;
+        soak_rng_seed(&r, soak_mix64(lseed ^ 0x5E77ull));
+        char_body_settings_t s;
+        fm_vec3_t start;
+        soak_settings_random(&r, &s, &start);
+        uint64_t n = level_frames ? level_frames : 500 + soak_rng_below(&r, MAX_LEVEL_FRAMES - 500);
+        if (n > frames - total.frames) n = frames - total.frames;
+        soak_play_t play;
+        soak_play_init(&play, lseed);
+        soak_sim_begin(&g_sim, &g_level, &s, start);
+        for (uint32_t i = 0; i < n; i++) {
+            soak_play_next(&play, &g_level, &s, g_sim.owner, &g_frames[i]);
+            g_state[i].owner = g_sim.owner;
+            g_state[i].vel = char_body_get_velocity(&g_sim.body);
+            g_state[i].up = g_sim.body.settings.up;
+            g_state[i].time = g_sim.time;
+            g_state[i].excused = g_sim.excused;
+            int k = soak_sim_step(&g_sim, &g_frames[i], true);
+            if (k == SOAK_FAIL_NONE) continue;
+            if (is_known(lseed)) {
+                known++;
+                printf("KNOWN (open replay) seed %llu level %llu (level seed 0x%016llx) frame %u: %s: %s\n",
+                       (unsigned long long)seed, (unsigned long long)li, (unsigned long long)lseed, (unsigned)i,
+                       soak_fail_name(k), g_sim.msg);
+                break;
+            }
+            failures++;
+            printf("FAIL seed %llu level %llu (level seed 0x%016llx) frame %u: %s: %s\n", (unsigned long long)seed,
+                   (unsigned long long)li, (unsigned long long)lseed, (unsigned)i, soak_fail_name(k), g_sim.msg);
+            if (written < max_replays) {
+                char msg[sizeof g_sim.msg];
+                memcpy(msg, g_sim.msg, sizeof msg);
+                soak_replay_t rp;
+                bool shrunk = shrink(lseed, &s, start, i, k, &rp);
+                memcpy(g_sim.msg, msg, sizeof msg);
+                rp.fail_kind = k;
+                snprintf(rp.note, sizeof rp.note, "soak seed %llu level %llu frame %u%s: %s: %.80s",
+                         (unsigned long long)seed, (unsigned long long)li, (unsigned)i,
+                         shrunk ? " (shrunk to the last frames)" : "", soak_fail_name(k), g_sim.msg);
+                rp.fail_frame = rp.nframes - 1;
+                mkdir(out, 0777);
+                char path[1024];
+                snprintf(path, sizeof path, "%s/soak_s%llu_l%llu_%s.replay", out, (unsigned long long)seed,
+                         (unsigned long long)li, soak_fail_name(k));
+                if (soak_replay_write(path, &rp) == 0) {
+                    written++;
+                    printf("  replay: %s   (reproduce: make soak-replay REPLAY=%s)\n", path, path);
+                } else {
+                    fprintf(stderr, "ERROR: cannot write %s\n", path);
+                }
+            }
+            break; /* one failure per level: the state after it is suspect */
+        }
+        if (saved < save_passing && g_sim.last_fail == SOAK_FAIL_NONE && n > 0) {
+            /* a passing level as a baseline replay (bless it to store its final state) */
+            soak_replay_t rp;
+            memset(&rp, 0, sizeof rp);
+            rp.level_seed = lseed;
+            rp.settings = s;
+            rp.start = start;
+            rp.nframes = (uint32_t)n;
+            rp.frames = g_frames;
+            snprintf(rp.note, sizeof rp.note, "baseline: soak seed %llu level %llu, %u frames without failure",
+                     (unsigned long long)seed, (unsigned long long)li, (unsigned)n);
+            mkdir(out, 0777);
+            char path[1024];
+            snprintf(path, sizeof path, "%s/base_s%llu_l%llu.replay", out, (unsigned long long)seed,
+                     (unsigned long long)li);
+            if (soak_replay_write(path, &rp) == 0) { saved++; printf("  saved passing level: %s\n", path); }
+        }
+        add_stats(&total, &g_sim.st);
+        if (verbose && levels % 50 == 0) print_stats("progress", &total, levels, 0);
+        fflush(stdout);
+    }
+    double secs = (double)(clock() - t0) / CLOCKS_PER_SEC;
+    print_stats("soak", &total, levels, secs);
+    printf("soak: %s (%llu new failing level(s), %llu known open, %u replay(s) written to %s)\n",
+           failures ? "FAILED" : "PASSED", (unsigned long long)failures, (unsigned long long)known, written, out);
+    return failures ? 1 : 0;
+}

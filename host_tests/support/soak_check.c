@@ -1,0 +1,300 @@
+/* Soak harness: the independent double-precision brute-force checker.
+ * It never calls the library's queries: it works on the generator's own triangle data
+ * (world-space doubles for static pieces, re-transformed in double for moving ones) and
+ * on the collider bodies' shape parameters. */
+#include "soak_sim.h"
+#include <math.h>
+#include <string.h>
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static void sub3(double o[3], const double a[3], const double b[3]) { o[0] = a[0] - b[0]; o[1] = a[1] - b[1]; o[2] = a[2] - b[2]; }
+static void cross3(double o[3], const double a[3], const double b[3])
+{
+    double t[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    memcpy(o, t, sizeof t);
+}
+static double dist3(const double a[3], const double b[3])
+{
+    double d[3]; sub3(d, a, b); return sqrt(dot3(d, d));
+}
+static double clamp01(double x) { return x < 0 ? 0 : (x > 1 ? 1 : x); }
+
+/* Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5). */
+static void closest_pt_tri(double out[3], const double p[3], const double a[3], const double b[3], const double c[3])
+{
+    double ab[3], ac[3], ap[3], bp[3], cp[3];
+    sub3(ab, b, a); sub3(ac, c, a); sub3(ap, p, a);
+    double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+    if (d1 <= 0 && d2 <= 0) { memcpy(out, a, 3 * sizeof(double)); return; }
+    sub3(bp, p, b);
+    double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    if (d3 >= 0 && d4 <= d3) { memcpy(out, b, 3 * sizeof(double)); return; }
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        double v = d1 / (d1 - d3);
+        for (int k = 0; k < 3; k++) out[k] = a[k] + v * ab[k];
+        return;
+    }
+    sub3(cp, p, c);
+    double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    if (d6 >= 0 && d5 <= d6) { memcpy(out, c, 3 * sizeof(double)); return; }
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        double w = d2 / (d2 - d6);
+        for (int k = 0; k < 3; k++) out[k] = a[k] + w * ac[k];
+        return;
+    }
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int k = 0; k < 3; k++) out[k] = b[k] + w * (c[k] - b[k]);
+        return;
+    }
+    double denom = 1.0 / (va + vb + vc);
+    double v = vb * denom, w = vc * denom;
+    for (int k = 0; k < 3; k++) out[k] = a[k] + ab[k] * v + ac[k] * w;
+}
+
+double soak_seg_seg_dist(const double p1[3], const double q1[3], const double p2[3], const double q2[3])
+{
+    double d1[3], d2[3], r[3];
+    sub3(d1, q1, p1); sub3(d2, q2, p2); sub3(r, p1, p2);
+    double a = dot3(d1, d1), e = dot3(d2, d2), f = dot3(d2, r);
+    double s, t;
+    const double eps = 1e-18;
+    if (a <= eps && e <= eps) return dist3(p1, p2);
+    if (a <= eps) { s = 0; t = clamp01(f / e); }
+    else {
+        double c = dot3(d1, r);
+        if (e <= eps) { t = 0; s = clamp01(-c / a); }
+        else {
+            double b = dot3(d1, d2), denom = a * e - b * b;
+            s = denom > 0 ? clamp01((b * f - c * e) / denom) : 0;
+            t = (b * s + f) / e;
+            if (t < 0) { t = 0; s = clamp01(-c / a); }
+            else if (t > 1) { t = 1; s = clamp01((b - c) / a); }
+        }
+    }
+    double c1[3], c2[3];
+    for (int k = 0; k < 3; k++) { c1[k] = p1[k] + d1[k] * s; c2[k] = p2[k] + d2[k] * t; }
+    return dist3(c1, c2);
+}
+
+double soak_seg_tri_dist(const double p0[3], const double p1[3], const double *v0, const double *v1,
+                         const double *v2)
+{
+    const double *v[3] = {v0, v1, v2};
+    double e1[3], e2[3], n[3];
+    sub3(e1, v[1], v[0]); sub3(e2, v[2], v[0]);
+    cross3(n, e1, e2);
+    double nn = dot3(n, n);
+    if (nn > 0) {
+        double a0[3], a1[3];
+        sub3(a0, p0, v[0]); sub3(a1, p1, v[0]);
+        double s0 = dot3(n, a0), s1 = dot3(n, a1);
+        if ((s0 <= 0 && s1 >= 0) || (s0 >= 0 && s1 <= 0)) {
+            if (s0 != s1) {
+                double t = s0 / (s0 - s1), x[3], c[3];
+                for (int k = 0; k < 3; k++) x[k] = p0[k] + (p1[k] - p0[k]) * t;
+                closest_pt_tri(c, x, v[0], v[1], v[2]);
+                if (dist3(c, x) <= 1e-12) return 0.0;
+            }
+        }
+    }
+    double best, d, c[3];
+    closest_pt_tri(c, p0, v[0], v[1], v[2]); best = dist3(c, p0);
+    closest_pt_tri(c, p1, v[0], v[1], v[2]); d = dist3(c, p1); if (d < best) best = d;
+    for (int k = 0; k < 3; k++) {
+        d = soak_seg_seg_dist(p0, p1, v[k], v[(k + 1) % 3]);
+        if (d < best) best = d;
+    }
+    return best;
+}
+
+/* Distance from point to segment. */
+static double pt_seg_dist(const double p[3], const double a[3], const double b[3])
+{
+    double ab[3], ap[3];
+    sub3(ab, b, a); sub3(ap, p, a);
+    double l = dot3(ab, ab), t = l > 0 ? clamp01(dot3(ap, ab) / l) : 0;
+    double c[3] = {a[0] + ab[0] * t, a[1] + ab[1] * t, a[2] + ab[2] * t};
+    return dist3(c, p);
+}
+
+void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule_t *sweep)
+{
+    const char_body_settings_t *s = &b->settings;
+    const fm_vec3_t *o = b->owner_pos;
+    double c[3] = {(double)o->x + s->center_offset.x, (double)o->y + s->center_offset.y,
+                   (double)o->z + s->center_offset.z};
+    double up[3] = {s->up.x, s->up.y, s->up.z};
+    double h = (double)s->height * 0.5 - s->radius;
+    if (h < 0) h = 0;
+    double step = s->step_height;
+    for (int k = 0; k < 3; k++) {
+        full->a[k] = c[k] - up[k] * h;
+        full->b[k] = c[k] + up[k] * h;
+        sweep->a[k] = c[k] - up[k] * (h - step);
+        sweep->b[k] = full->b[k];
+    }
+    full->r = sweep->r = s->radius;
+}
+
+static bool tri_seen(uint8_t mask, const char_body_settings_t *s)
+{
+    return (s->coll_types & COLL_TYPE_MESH) && (mask & s->read_mask);
+}
+
+/* Penetration the seed accepts on a walkable triangle: the probe stands the foot POINT on
+ * it, and the sweep capsule's bottom ball (centre r + step above the foot) then reaches
+ * r - (r + step) cos(slope) into a slope. The seed asks users to pick radius/step so this
+ * is <= 0 ("the maximum angle must not collide with the sweep capsule"); the generator
+ * mostly does, and when it does not, this much is tolerated on walkable triangles only. */
+static double walkable_allowance(const soak_wtri_t *w, const char_body_settings_t *s, const double mid[3])
+{
+    double e1[3], e2[3], n[3], d[3];
+    sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
+    cross3(n, e1, e2);
+    double l = sqrt(dot3(n, n));
+    if (!(l > 0)) return 0;
+    sub3(d, mid, w->v[0]);
+    if (dot3(n, d) < 0) l = -l;
+    double up[3] = {s->up.x, s->up.y, s->up.z};
+    double cs = dot3(n, up) / l;
+    if (cs < cos((double)s->floor_max_angle) - 1e-4) return 0;
+    double a = (double)s->radius - ((double)s->radius + s->step_height) * cs;
+    return a > 0 ? a : 0;
+}
+
+double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
+                             const soak_capsule_t *cap, int32_t *tri_out, double *raw_out)
+{
+    double best = 0, raw = 0;
+    int32_t bt = -1;
+    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
+    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(mid, w->c) > half + cap->r + w->rad) continue;
+        double d = soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
+        double pen = cap->r - d;
+        if (pen <= 0) continue;
+        double ex = pen - walkable_allowance(w, s, mid);
+        if (ex > best) { best = ex; bt = (int32_t)i; raw = pen; }
+    }
+    if (tri_out) *tri_out = bt;
+    if (raw_out) *raw_out = raw;
+    return best;
+}
+
+/* double transform of a point by an instance transform */
+static void xf_point(double out[3], const coll_transform_t *xf, const double lp[3])
+{
+    double q[4] = {xf->rot.x, xf->rot.y, xf->rot.z, xf->rot.w};
+    double v[3] = {lp[0] * xf->scale.x, lp[1] * xf->scale.y, lp[2] * xf->scale.z};
+    double u[3] = {q[0], q[1], q[2]}, t[3], t2[3];
+    cross3(t, u, v);
+    for (int k = 0; k < 3; k++) t[k] *= 2.0;
+    cross3(t2, u, t);
+    for (int k = 0; k < 3; k++) out[k] = v[k] + q[3] * t[k] + t2[k] + (double)xf->pos.v[k];
+}
+/* inverse rigid transform (bodies ignore scale) */
+static void xf_inv_rigid(double out[3], const coll_transform_t *xf, const double wp[3])
+{
+    double v[3] = {wp[0] - xf->pos.x, wp[1] - xf->pos.y, wp[2] - xf->pos.z};
+    double u[3] = {-(double)xf->rot.x, -(double)xf->rot.y, -(double)xf->rot.z}, w = xf->rot.w, t[3], t2[3];
+    cross3(t, u, v);
+    for (int k = 0; k < 3; k++) t[k] *= 2.0;
+    cross3(t2, u, t);
+    for (int k = 0; k < 3; k++) out[k] = v[k] + w * t[k] + t2[k];
+}
+
+static double body_dist(const soak_lbody_t *lb, const soak_capsule_t *cap)
+{
+    const coll_body_t *b = &lb->body;
+    double a[3], bb[3];
+    xf_inv_rigid(a, &b->xf, cap->a);
+    xf_inv_rigid(bb, &b->xf, cap->b);
+    double hx = b->half_extents.x, hy = b->half_extents.y, hz = b->half_extents.z;
+    switch (b->shape) {
+    case COLL_SHAPE_SPHERE: {
+        double o[3] = {0, 0, 0};
+        return pt_seg_dist(o, a, bb) - hx;
+    }
+    case COLL_SHAPE_CAPSULE:
+    case COLL_SHAPE_CYLINDER: { /* a cylinder lies inside its capsule: a lower bound */
+        double p[3] = {0, -hy, 0}, q[3] = {0, hy, 0};
+        return soak_seg_seg_dist(a, bb, p, q) - hx;
+    }
+    case COLL_SHAPE_BOX: {
+        for (int e = 0; e < 2; e++) {
+            const double *pt = e ? bb : a;
+            if (fabs(pt[0]) <= hx && fabs(pt[1]) <= hy && fabs(pt[2]) <= hz) return 0;
+        }
+        double best = 1e300;
+        for (int ax = 0; ax < 3; ax++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                double h[3] = {hx, hy, hz}, v[4][3];
+                int u = (ax + 1) % 3, w = (ax + 2) % 3;
+                for (int k = 0; k < 4; k++) {
+                    v[k][ax] = sgn * h[ax];
+                    v[k][u] = ((k == 1 || k == 2) ? 1 : -1) * h[u];
+                    v[k][w] = ((k >= 2) ? 1 : -1) * h[w];
+                }
+                double t1[3][3], t2[3][3];
+                memcpy(t1[0], v[0], sizeof v[0]); memcpy(t1[1], v[1], sizeof v[0]); memcpy(t1[2], v[2], sizeof v[0]);
+                memcpy(t2[0], v[0], sizeof v[0]); memcpy(t2[1], v[2], sizeof v[0]); memcpy(t2[2], v[3], sizeof v[0]);
+                double d = soak_seg_tri_dist(a, bb, t1[0], t1[1], t1[2]);
+                if (d < best) best = d;
+                d = soak_seg_tri_dist(a, bb, t2[0], t2[1], t2[2]);
+                if (d < best) best = d;
+            }
+        return best;
+    }
+    }
+    return 1e300;
+}
+
+double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
+{
+    double best = 1e300; /* segment distance */
+    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
+    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(mid, w->c) - half - w->rad > best) continue;
+        double d = soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
+        if (d < best) best = d;
+    }
+    for (uint32_t i = 0; i < lvl->npieces; i++) {
+        const soak_piece_t *p = &lvl->pieces[i];
+        if (!p->moving || !tri_seen(p->inst.write_mask, s)) continue;
+        double pc[3] = {p->inst.xf.pos.x, p->inst.xf.pos.y, p->inst.xf.pos.z};
+        double sc = fabs(p->inst.xf.scale.x);
+        if (fabs(p->inst.xf.scale.y) > sc) sc = fabs(p->inst.xf.scale.y);
+        if (fabs(p->inst.xf.scale.z) > sc) sc = fabs(p->inst.xf.scale.z);
+        if (dist3(mid, pc) - half - p->bound_radius * sc * 1.001 > best) continue;
+        for (uint32_t t = 0; t < p->ntris; t++) {
+            double v[3][3];
+            for (int j = 0; j < 3; j++) {
+                const float *lv = lvl->verts + (size_t)(p->first_vert + lvl->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
+                double l3[3] = {lv[0], lv[1], lv[2]};
+                xf_point(v[j], &p->inst.xf, l3);
+            }
+            double d = soak_seg_tri_dist(cap->a, cap->b, v[0], v[1], v[2]);
+            if (d < best) best = d;
+        }
+    }
+    if (s->coll_types & COLL_TYPE_BODY) {
+        for (uint32_t i = 0; i < lvl->nbodies; i++) {
+            const soak_lbody_t *lb = &lvl->bodies[i];
+            if (!(lb->body.write_mask & s->read_mask)) continue;
+            double d = body_dist(lb, cap);
+            if (d < 0) d = 0;
+            if (d < best) best = d;
+        }
+    }
+    return best - cap->r;
+}

@@ -1,0 +1,591 @@
+/* Soak harness: random play, the per-frame simulation with property checks, replay files. */
+#include "soak_sim.h"
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------------ play */
+static const float dt_choices[] = {1.0f / 240, 1.0f / 120, 1.0f / 60, 1.0f / 60, 1.0f / 30, 1.0f / 30, 1.0f / 20, 1.0f / 5};
+
+void soak_play_init(soak_play_t *p, uint64_t seed)
+{
+    memset(p, 0, sizeof *p);
+    soak_rng_seed(&p->rng, soak_mix64(seed ^ 0x9A7ull));
+    p->base_dt = dt_choices[soak_rng_below(&p->rng, (uint32_t)(sizeof dt_choices / sizeof dt_choices[0]))];
+}
+
+static float huge_value(soak_rng_t *r)
+{
+    static const float vals[] = {1e3f, 3e4f, 1e6f, 1e9f, 1e20f, FLT_MAX};
+    float v = vals[soak_rng_below(r, 6)];
+    return soak_rng_chance(r, 0.5) ? -v : v;
+}
+static float weird_value(soak_rng_t *r)
+{
+    switch (soak_rng_below(r, 4)) {
+    case 0: return NAN;
+    case 1: return INFINITY;
+    case 2: return -INFINITY;
+    default: return huge_value(r);
+    }
+}
+
+/* A point where the capsule centre is inside the room, possibly inside geometry. */
+static fm_vec3_t teleport_target(soak_rng_t *r, const soak_level_t *lvl, const char_body_settings_t *s)
+{
+    double c[3];
+    if (lvl->nwtris > 0 && soak_rng_chance(r, 0.5)) {
+        const soak_wtri_t *w = &lvl->wtris[soak_rng_below(r, lvl->nwtris)];
+        double u = soak_rng_unit(r), v = soak_rng_unit(r);
+        if (u + v > 1) { u = 1 - u; v = 1 - v; }
+        for (int k = 0; k < 3; k++)
+            c[k] = w->v[0][k] + (w->v[1][k] - w->v[0][k]) * u + (w->v[2][k] - w->v[0][k]) * v +
+                   soak_rng_range(r, -0.3, 0.3);
+    } else {
+        c[0] = soak_rng_range(r, -SOAK_ROOM_HALF, SOAK_ROOM_HALF);
+        c[1] = soak_rng_range(r, 0, SOAK_ROOM_HEIGHT * 0.6);
+        c[2] = soak_rng_range(r, -SOAK_ROOM_HALF, SOAK_ROOM_HALF);
+    }
+    const double m = 0.5 * (double)s->height + 0.1; /* the whole capsule inside, any up */
+    const double lo[3] = {-SOAK_ROOM_HALF + m, m, -SOAK_ROOM_HALF + m};
+    const double hi[3] = {SOAK_ROOM_HALF - m, SOAK_ROOM_HEIGHT - m, SOAK_ROOM_HALF - m};
+    fm_vec3_t o;
+    for (int k = 0; k < 3; k++) {
+        if (c[k] < lo[k]) c[k] = lo[k];
+        if (c[k] > hi[k]) c[k] = hi[k];
+        o.v[k] = (float)(c[k] - s->center_offset.v[k]); /* owner = centre - offset */
+    }
+    return o;
+}
+
+static bool center_clear_of_room(const char_body_settings_t *s, fm_vec3_t owner)
+{
+    double m = 0.5 * (double)s->height + 0.1, c[3];
+    for (int k = 0; k < 3; k++) c[k] = (double)owner.v[k] + s->center_offset.v[k];
+    return c[0] > -SOAK_ROOM_HALF + m && c[0] < SOAK_ROOM_HALF - m && c[1] > m && c[1] < SOAK_ROOM_HEIGHT - m &&
+           c[2] > -SOAK_ROOM_HALF + m && c[2] < SOAK_ROOM_HALF - m;
+}
+
+void soak_play_next(soak_play_t *p, const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner,
+                    soak_frame_t *f)
+{
+    soak_rng_t *r = &p->rng;
+    memset(f, 0, sizeof *f);
+    if (p->hold == 0) {
+        double u = soak_rng_unit(r);
+        double ang = soak_rng_range(r, 0, 6.283185307179586);
+        double sp;
+        if (u < 0.15) sp = 0;
+        else if (u < 0.75) sp = soak_rng_range(r, 0.5, 8);
+        else if (u < 0.94) sp = soak_rng_range(r, 8, 30);
+        else sp = -1;
+        if (sp >= 0) {
+            p->input.x = (float)(soak_cos(ang) * sp);
+            p->input.y = soak_rng_chance(r, 0.2) ? (float)soak_rng_range(r, -20, 20) : 0.0f; /* ignored part */
+            p->input.z = (float)(soak_sin(ang) * sp);
+        } else if (soak_rng_chance(r, 0.6)) {
+            float h = huge_value(r);
+            p->input.x = (float)(soak_cos(ang) * h);
+            p->input.y = 0.0f;
+            p->input.z = (float)(soak_sin(ang) * h);
+        } else {
+            p->input.x = soak_rng_chance(r, 0.5) ? weird_value(r) : 1.0f;
+            p->input.y = soak_rng_chance(r, 0.3) ? weird_value(r) : 0.0f;
+            p->input.z = soak_rng_chance(r, 0.5) ? weird_value(r) : 2.0f;
+        }
+        p->hold = 3 + soak_rng_below(r, sp < 0 ? 10 : 150);
+        if (soak_rng_chance(r, 0.02))
+            p->base_dt = dt_choices[soak_rng_below(r, (uint32_t)(sizeof dt_choices / sizeof dt_choices[0]))];
+    }
+    p->hold--;
+    f->input = p->input;
+
+    double u = soak_rng_unit(r);
+    if (u < 0.80) f->dt = p->base_dt;
+    else if (u < 0.995) f->dt = (float)soak_rng_range(r, 1.0 / 240, 1.0 / 5);
+    else {
+        static const float bad[] = {0.0f, -1.0f / 60, NAN, INFINITY, 1e-9f, 0.5f};
+        f->dt = bad[soak_rng_below(r, 6)];
+    }
+
+    if (soak_rng_chance(r, 0.015)) {
+        f->ops |= SOAK_OP_JUMP;
+        f->jump = soak_rng_chance(r, 0.95) ? (float)soak_rng_range(r, 2, 16) : (float)soak_rng_range(r, 30, 200);
+    }
+    if (soak_rng_chance(r, 0.003)) {
+        f->ops |= SOAK_OP_TELEPORT;
+        f->tele = teleport_target(r, lvl, s);
+        f->tele_reset = soak_rng_chance(r, 0.5) ? 1 : 0;
+    }
+    if (soak_rng_chance(r, 0.002) && center_clear_of_room(s, (f->ops & SOAK_OP_TELEPORT) ? f->tele : owner)) {
+        f->ops |= SOAK_OP_UP;
+        double v = soak_rng_unit(r);
+        if (v < 0.4) { f->up.x = 0; f->up.y = 1; f->up.z = 0; }
+        else if (v < 0.6) { /* a small tilt of +Y, scaled (set_up normalizes) */
+            f->up.x = (float)soak_rng_range(r, -0.3, 0.3); f->up.y = (float)soak_rng_range(r, 0.5, 3);
+            f->up.z = (float)soak_rng_range(r, -0.3, 0.3);
+        } else if (v < 0.9) {
+            for (int k = 0; k < 3; k++) f->up.v[k] = (float)soak_rng_range(r, -1, 1);
+        } else { /* zero or non-finite: must be ignored */
+            f->up.x = soak_rng_chance(r, 0.5) ? 0.0f : NAN; f->up.y = 0; f->up.z = 0;
+        }
+    }
+    if (soak_rng_chance(r, 0.003)) {
+        f->ops |= SOAK_OP_VEL;
+        for (int k = 0; k < 3; k++) f->vel.v[k] = (float)soak_rng_range(r, -15, 15);
+        if (soak_rng_chance(r, 0.2)) {
+            uint32_t k = soak_rng_below(r, 3);
+            f->vel.v[k] = weird_value(r);
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ simulation */
+const char *soak_fail_name(int kind)
+{
+    static const char *names[SOAK_FAIL_COUNT] = {"none", "nonfinite", "penetration", "escape", "floor", "state"};
+    return (kind >= 0 && kind < SOAK_FAIL_COUNT) ? names[kind] : "unknown";
+}
+
+static int fail_kind_from_name(const char *n)
+{
+    for (int k = 0; k < SOAK_FAIL_COUNT; k++)
+        if (strcmp(n, soak_fail_name(k)) == 0) return k;
+    return -1;
+}
+
+void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t start)
+{
+    memset(sim, 0, sizeof *sim);
+    sim->lvl = lvl;
+    soak_level_animate(lvl, 0.0);
+    sim->owner = start;
+    char_body_init(&sim->body, &sim->owner);
+    char_body_configure(&sim->body, s);
+    char_body_teleport(&sim->body, start, true);
+    sim->excused = true; /* the start point may be inside geometry */
+}
+
+static bool vfinite(fm_vec3_t v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
+
+/* A moving platform or moving collider body close to (or carrying) the capsule. */
+static bool mover_near(const soak_sim_t *sim, const soak_capsule_t *cap)
+{
+    const soak_level_t *l = sim->lvl;
+    const char_body_settings_t *s = &sim->body.settings;
+    double mid[3], half = 0;
+    for (int k = 0; k < 3; k++) {
+        mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+        half += (cap->b[k] - cap->a[k]) * (cap->b[k] - cap->a[k]);
+    }
+    half = sqrt(half) * 0.5 + cap->r + 0.5; /* 0.5 m margin */
+    for (uint32_t i = 0; i < l->npieces; i++) {
+        const soak_piece_t *p = &l->pieces[i];
+        if (!p->moving) continue;
+        if (sim->body.floor_instance == &p->inst) return true;
+        double sc = fabs(p->inst.xf.scale.x), d = 0;
+        for (int k = 0; k < 3; k++) d += (mid[k] - p->inst.xf.pos.v[k]) * (mid[k] - p->inst.xf.pos.v[k]);
+        if (sqrt(d) < half + p->bound_radius * sc) return true;
+    }
+    if (s->coll_types & COLL_TYPE_BODY)
+        for (uint32_t i = 0; i < l->nbodies; i++) {
+            const soak_lbody_t *b = &l->bodies[i];
+            if (!b->moving) continue;
+            double rad = sqrt((double)b->body.half_extents.x * b->body.half_extents.x +
+                              (double)b->body.half_extents.y * b->body.half_extents.y +
+                              (double)b->body.half_extents.z * b->body.half_extents.z) + b->body.half_extents.y;
+            double d = 0;
+            for (int k = 0; k < 3; k++) d += (mid[k] - b->body.xf.pos.v[k]) * (mid[k] - b->body.xf.pos.v[k]);
+            if (sqrt(d) < half + rad) return true;
+        }
+    return false;
+}
+
+#define FAIL(kind, ...) do { snprintf(sim->msg, sizeof sim->msg, __VA_ARGS__); sim->last_fail = (kind); \
+        sim->st.hard[(kind)]++; return (kind); } while (0)
+
+int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
+{
+    char_body_t *b = &sim->body;
+    bool excuse = false;
+    sim->last_fail = SOAK_FAIL_NONE;
+    sim->msg[0] = 0;
+
+    if (f->ops & SOAK_OP_UP) { char_body_set_up(b, f->up); excuse = true; sim->last_up = sim->frame + 1; }
+    if (f->ops & SOAK_OP_TELEPORT) { char_body_teleport(b, f->tele, f->tele_reset != 0); excuse = true; sim->last_teleport = sim->frame + 1; }
+    if (f->ops & SOAK_OP_VEL) char_body_set_velocity(b, f->vel);
+    if (f->ops & SOAK_OP_JUMP) {
+        fm_vec3_t v = char_body_get_velocity(b), up = char_body_get_settings(b)->up, j;
+        fm_vec3_scale(&j, &up, f->jump);
+        fm_vec3_add(&v, &v, &j);
+        char_body_set_velocity(b, v);
+    }
+    b->input_velocity = f->input;
+    if (isfinite(f->dt) && f->dt > 0.0f) sim->time += (double)f->dt;
+    soak_level_animate(sim->lvl, sim->time);
+
+    soak_capsule_t full, sweep;
+    const char_body_settings_t *s = char_body_get_settings(b);
+    if (check) {
+        soak_body_capsules(b, &full, &sweep);
+        if (mover_near(sim, &sweep)) { excuse = true; sim->last_mover = sim->frame + 1; }
+        sim->pen_before = soak_check_static_pen(sim->lvl, s, &sweep, NULL, NULL);
+        sim->pos_before = sim->owner;
+        sim->vel_before = char_body_get_velocity(b);
+    }
+
+    char_body_move_and_slide_in(b, &sim->lvl->scene, f->dt);
+    sim->frame++;
+    sim->st.frames++;
+    if (!check || sim->escaped) return SOAK_FAIL_NONE;
+
+    fm_vec3_t pos = sim->owner, vel = char_body_get_velocity(b);
+    if (!vfinite(pos) || !vfinite(vel))
+        FAIL(SOAK_FAIL_NONFINITE, "pos (%g %g %g) vel (%g %g %g)", (double)pos.x, (double)pos.y, (double)pos.z,
+             (double)vel.x, (double)vel.y, (double)vel.z);
+
+    soak_body_capsules(b, &full, &sweep);
+    double c[3];
+    for (int k = 0; k < 3; k++) c[k] = (full.a[k] + full.b[k]) * 0.5;
+    const double et = 0.01;
+    if (c[0] < -SOAK_ROOM_HALF - et || c[0] > SOAK_ROOM_HALF + et || c[1] < -et || c[1] > SOAK_ROOM_HEIGHT + et ||
+        c[2] < -SOAK_ROOM_HALF - et || c[2] > SOAK_ROOM_HALF + et)
+    {
+        if (excuse || sim->excused) {
+            /* pushed out of an overlap it was put into (teleport, up change, mover) through
+             * the room: reported separately; the run is over for the checks */
+            sim->st.excused_escapes++;
+            sim->escaped = true;
+            return SOAK_FAIL_NONE;
+        }
+        FAIL(SOAK_FAIL_ESCAPE, "capsule centre (%.4f %.4f %.4f) outside the room", c[0], c[1], c[2]);
+    }
+
+    int32_t tri = -1;
+    double raw = 0;
+    double pen = soak_check_static_pen(sim->lvl, s, &sweep, &tri, &raw);
+    sim->last_pen = pen;
+    sim->last_raw = raw;
+    sim->last_tri = tri;
+    if (pen > SOAK_PEN_TOL) {
+        if (excuse || sim->excused) {
+            sim->excused = true;
+            sim->st.soft_pen_frames++;
+            if (pen > sim->st.max_soft_pen) sim->st.max_soft_pen = pen;
+            if (++sim->excused_frames == SOAK_RECOVER_FRAMES) sim->st.stuck_events++;
+        } else {
+            if (pen > sim->st.max_hard_pen) sim->st.max_hard_pen = pen;
+            FAIL(SOAK_FAIL_PENETRATION, "sweep capsule %.2f mm into static tri %d (%.2f mm past the slope allowance), pos (%.4f %.4f %.4f)",
+                 raw * 1000.0, (int)tri, pen * 1000.0, (double)pos.x, (double)pos.y, (double)pos.z);
+        }
+    } else {
+        sim->excused = false;
+        sim->excused_frames = 0;
+    }
+
+    /* A skipped step (dt <= 0 or not finite) leaves the floor state of the last step. */
+    if (!(isfinite(f->dt) && f->dt > 0.0f)) return SOAK_FAIL_NONE;
+    bool on = char_body_is_on_floor(b), steep = char_body_is_on_steep_surface(b);
+    if (steep && !on) FAIL(SOAK_FAIL_STATE, "on steep surface but not on floor");
+    if (on) {
+        sim->st.on_floor_frames++;
+        if (steep) sim->st.steep_frames++;
+        double near = soak_check_nearest(sim->lvl, s, &full);
+        if (near > (double)s->floor_snap_distance + SOAK_FLOOR_TOL)
+            FAIL(SOAK_FAIL_FLOOR, "is_on_floor but nearest seen surface is %.4f m from the capsule (snap %.4f)",
+                 near, (double)s->floor_snap_distance);
+        fm_vec3_t n = char_body_floor_normal(b);
+        float nl = fm_vec3_len(&n);
+        if (!(nl > 0.99f && nl < 1.01f)) FAIL(SOAK_FAIL_STATE, "on floor with floor normal length %g", (double)nl);
+        if (char_body_floor_id(b) < 0) FAIL(SOAK_FAIL_STATE, "on floor with floor id -1");
+    } else if (char_body_floor_id(b) != -1) {
+        FAIL(SOAK_FAIL_STATE, "not on floor but floor id %d", (int)char_body_floor_id(b));
+    }
+    return SOAK_FAIL_NONE;
+}
+
+/* ------------------------------------------------------------------ replay files */
+const char *soak_arch(void)
+{
+#if defined(__mips__)
+#if defined(__MIPSEB__)
+    return "mips";
+#else
+    return "mipsel";
+#endif
+#elif defined(__x86_64__)
+    return "x86_64";
+#elif defined(__i386__)
+    return "i386";
+#elif defined(__aarch64__)
+    return "aarch64";
+#else
+    return "other";
+#endif
+}
+
+#define SOAK_STR2(x) #x
+#define SOAK_STR(x) SOAK_STR2(x)
+const char *soak_lib_version(void)
+{
+#ifdef SOAK_LIB_FP
+    return SOAK_STR(SOAK_LIB_FP);
+#else
+    return "unknown";
+#endif
+}
+
+static void wv(FILE *f, fm_vec3_t v) { fprintf(f, " %a %a %a", (double)v.x, (double)v.y, (double)v.z); }
+
+int soak_replay_write(const char *path, const soak_replay_t *rp)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    const char_body_settings_t *s = &rp->settings;
+    fprintf(f, "# charbody64 soak replay: regenerate level from seed, replay frames, check properties\n");
+    fprintf(f, "soak-replay 1\n");
+    if (rp->note[0]) fprintf(f, "note %s\n", rp->note);
+    fprintf(f, "level 0x%016llx\n", (unsigned long long)rp->level_seed);
+    fprintf(f, "settings %a %a %a %a %a %a %a %u %u %u %u\n", (double)s->radius, (double)s->height,
+            (double)s->step_height, (double)s->floor_snap_distance, (double)s->floor_max_angle, (double)s->gravity,
+            (double)s->max_fall_speed, (unsigned)s->max_slides, (unsigned)s->coll_types, (unsigned)s->read_mask,
+            (unsigned)s->follow_floor);
+    fprintf(f, "up"); wv(f, s->up); fprintf(f, "\n");
+    fprintf(f, "offset"); wv(f, s->center_offset); fprintf(f, "\n");
+    fprintf(f, "start"); wv(f, rp->start); fprintf(f, "\n");
+    if (rp->t0 != 0.0) fprintf(f, "time %a\n", rp->t0);
+    if (rp->has_vel0) { fprintf(f, "velocity"); wv(f, rp->vel0); fprintf(f, "\n"); }
+    if (rp->start_clear) fprintf(f, "clear 1\n");
+    if (rp->fail_kind > 0) fprintf(f, "fail %s %u\n", soak_fail_name(rp->fail_kind), (unsigned)rp->fail_frame);
+    fprintf(f, "frames %u\n", (unsigned)rp->nframes);
+    for (uint32_t i = 0; i < rp->nframes; i++) {
+        const soak_frame_t *fr = &rp->frames[i];
+        fprintf(f, "f %a", (double)fr->dt); wv(f, fr->input);
+        if (fr->ops & SOAK_OP_JUMP) fprintf(f, " J %a", (double)fr->jump);
+        if (fr->ops & SOAK_OP_TELEPORT) { fprintf(f, " T"); wv(f, fr->tele); fprintf(f, " %u", (unsigned)fr->tele_reset); }
+        if (fr->ops & SOAK_OP_UP) { fprintf(f, " U"); wv(f, fr->up); }
+        if (fr->ops & SOAK_OP_VEL) { fprintf(f, " V"); wv(f, fr->vel); }
+        fprintf(f, "\n");
+    }
+    for (uint32_t i = 0; i < rp->nexpect; i++) {
+        const soak_expect_t *e = &rp->expect[i];
+        fprintf(f, "expect %s %s", e->arch, e->lib[0] ? e->lib : "unknown"); wv(f, e->pos); wv(f, e->vel); fprintf(f, " %d\n", e->on_floor);
+    }
+    int bad = ferror(f);
+    return (fclose(f) != 0 || bad) ? -1 : 0;
+}
+
+/* token reader over one line */
+typedef struct { char *p; int ok; } tok_t;
+static char *next_tok(tok_t *t)
+{
+    while (*t->p == ' ' || *t->p == '\t') t->p++;
+    if (!*t->p || *t->p == '\n' || *t->p == '\r') { t->ok = 0; return NULL; }
+    char *s = t->p;
+    while (*t->p && *t->p != ' ' && *t->p != '\t' && *t->p != '\n' && *t->p != '\r') t->p++;
+    if (*t->p) *t->p++ = 0;
+    return s;
+}
+static float tok_f(tok_t *t)
+{
+    char *s = next_tok(t), *end;
+    if (!s) return 0.0f;
+    double d = strtod(s, &end);
+    if (end == s) t->ok = 0;
+    return (float)d;
+}
+static unsigned long tok_u(tok_t *t)
+{
+    char *s = next_tok(t), *end;
+    if (!s) return 0;
+    unsigned long v = strtoul(s, &end, 0);
+    if (end == s) t->ok = 0;
+    return v;
+}
+static fm_vec3_t tok_v(tok_t *t) { fm_vec3_t v; v.x = tok_f(t); v.y = tok_f(t); v.z = tok_f(t); return v; }
+
+int soak_replay_read(const char *path, soak_replay_t *rp, int *err_line)
+{
+    FILE *f = fopen(path, "r");
+    int line_no = 0;
+    if (err_line) *err_line = 0;
+    if (!f) return -1;
+    soak_frame_t *frames = rp->frames;
+    uint32_t cap = rp->cap;
+    memset(rp, 0, sizeof *rp);
+    rp->frames = frames;
+    rp->cap = cap;
+    rp->settings = CHAR_BODY_SETTINGS_DEFAULT;
+    char line[1024];
+    int have_magic = 0, rc = 0;
+    while (fgets(line, sizeof line, f)) {
+        line_no++;
+        tok_t t = {line, 1};
+        char *kw = next_tok(&t);
+        if (!kw || kw[0] == '#') continue;
+        t.ok = 1;
+        if (strcmp(kw, "soak-replay") == 0) { have_magic = (tok_u(&t) == 1); }
+        else if (strcmp(kw, "note") == 0) {
+            while (*t.p == ' ') t.p++;
+            snprintf(rp->note, sizeof rp->note, "%s", t.p);
+            size_t n = strlen(rp->note);
+            while (n && (rp->note[n - 1] == '\n' || rp->note[n - 1] == '\r')) rp->note[--n] = 0;
+        } else if (strcmp(kw, "level") == 0) {
+            char *s = next_tok(&t);
+            if (s) rp->level_seed = (uint64_t)strtoull(s, NULL, 0); else t.ok = 0;
+        } else if (strcmp(kw, "settings") == 0) {
+            char_body_settings_t *s = &rp->settings;
+            s->radius = tok_f(&t); s->height = tok_f(&t); s->step_height = tok_f(&t);
+            s->floor_snap_distance = tok_f(&t); s->floor_max_angle = tok_f(&t); s->gravity = tok_f(&t);
+            s->max_fall_speed = tok_f(&t); s->max_slides = (uint8_t)tok_u(&t); s->coll_types = (uint8_t)tok_u(&t);
+            s->read_mask = (uint8_t)tok_u(&t); s->follow_floor = tok_u(&t) != 0;
+        } else if (strcmp(kw, "up") == 0) rp->settings.up = tok_v(&t);
+        else if (strcmp(kw, "offset") == 0) rp->settings.center_offset = tok_v(&t);
+        else if (strcmp(kw, "start") == 0) rp->start = tok_v(&t);
+        else if (strcmp(kw, "time") == 0) {
+            char *v = next_tok(&t), *end = NULL;
+            rp->t0 = v ? strtod(v, &end) : 0.0;
+            if (!v || end == v) t.ok = 0;
+        } else if (strcmp(kw, "velocity") == 0) { rp->vel0 = tok_v(&t); rp->has_vel0 = true; }
+        else if (strcmp(kw, "clear") == 0) rp->start_clear = tok_u(&t) != 0;
+        else if (strcmp(kw, "fail") == 0) {
+            char *n = next_tok(&t);
+            rp->fail_kind = n ? fail_kind_from_name(n) : -1;
+            rp->fail_frame = (uint32_t)tok_u(&t);
+        } else if (strcmp(kw, "frames") == 0) {
+            (void)tok_u(&t); /* informational; the f lines count */
+        } else if (strcmp(kw, "f") == 0) {
+            if (rp->nframes >= rp->cap) { rc = -3; break; }
+            soak_frame_t *fr = &rp->frames[rp->nframes];
+            memset(fr, 0, sizeof *fr);
+            fr->dt = tok_f(&t);
+            fr->input = tok_v(&t);
+            char *op;
+            while (t.ok && (op = next_tok(&t)) != NULL) {
+                if (strcmp(op, "J") == 0) { fr->ops |= SOAK_OP_JUMP; fr->jump = tok_f(&t); }
+                else if (strcmp(op, "T") == 0) { fr->ops |= SOAK_OP_TELEPORT; fr->tele = tok_v(&t); fr->tele_reset = (uint8_t)tok_u(&t); }
+                else if (strcmp(op, "U") == 0) { fr->ops |= SOAK_OP_UP; fr->up = tok_v(&t); }
+                else if (strcmp(op, "V") == 0) { fr->ops |= SOAK_OP_VEL; fr->vel = tok_v(&t); }
+                else { t.ok = 0; break; }
+            }
+            t.ok = 1; /* end of line ends the op list */
+            rp->nframes++;
+        } else if (strcmp(kw, "expect") == 0) {
+            if (rp->nexpect >= SOAK_MAX_EXPECT) { rc = -4; break; }
+            soak_expect_t *e = &rp->expect[rp->nexpect++];
+            char *a = next_tok(&t);
+            snprintf(e->arch, sizeof e->arch, "%s", a ? a : "?");
+            a = next_tok(&t);
+            snprintf(e->lib, sizeof e->lib, "%s", a ? a : "?");
+            e->pos = tok_v(&t); e->vel = tok_v(&t); e->on_floor = (int)tok_u(&t);
+        } else {
+            t.ok = 0;
+        }
+        if (!t.ok) { rc = -2; break; }
+    }
+    fclose(f);
+    if (rc == 0 && !have_magic) rc = -5;
+    if (rc != 0 && err_line) *err_line = line_no;
+    return rc;
+}
+
+const soak_expect_t *soak_replay_expect_for(const soak_replay_t *rp, const char *arch)
+{
+    for (uint32_t i = 0; i < rp->nexpect; i++)
+        if (strcmp(rp->expect[i].arch, arch) == 0) return &rp->expect[i];
+    return NULL;
+}
+
+int soak_replay_run(const soak_replay_t *rp, soak_level_t *lvl, soak_replay_result_t *res)
+{
+    return soak_replay_run_explain(rp, lvl, res, NULL);
+}
+
+int soak_replay_run_explain(const soak_replay_t *rp, soak_level_t *lvl, soak_replay_result_t *res, FILE *out)
+{
+    static soak_sim_t sim; /* large-ish; one replay at a time */
+    memset(res, 0, sizeof *res);
+    if (soak_level_generate(lvl, rp->level_seed) != 0) return -1;
+    soak_sim_begin(&sim, lvl, &rp->settings, rp->start);
+    if (rp->t0 != 0.0) { sim.time = rp->t0; soak_level_animate(lvl, rp->t0); }
+    if (rp->has_vel0) char_body_set_velocity(&sim.body, rp->vel0);
+    if (rp->start_clear) sim.excused = false;
+    for (uint32_t i = 0; i < rp->nframes; i++) {
+        int k = soak_sim_step(&sim, &rp->frames[i], true);
+        if (k != SOAK_FAIL_NONE) {
+            if (res->fails++ == 0) {
+                res->first_fail_kind = k;
+                res->first_fail_frame = i;
+                snprintf(res->first_msg, sizeof res->first_msg, "%s", sim.msg);
+                if (out) soak_sim_explain(&sim, out);
+            }
+        }
+    }
+    res->pos = sim.owner;
+    res->vel = char_body_get_velocity(&sim.body);
+    res->on_floor = char_body_is_on_floor(&sim.body) ? 1 : 0;
+    res->st = sim.st;
+    return 0;
+}
+
+void soak_sim_explain(const soak_sim_t *sim, FILE *out)
+{
+    const char_body_t *b = &sim->body;
+    const char_body_settings_t *s = &b->settings;
+    soak_capsule_t full, sweep;
+    soak_body_capsules(b, &full, &sweep);
+    fprintf(out, "  frame %u t %.4f: pos %.5f %.5f %.5f vel %.4f %.4f %.4f on_floor %d steep %d floor_id %d\n",
+            (unsigned)sim->frame, sim->time, (double)sim->owner.x, (double)sim->owner.y, (double)sim->owner.z,
+            (double)b->velocity.x, (double)b->velocity.y, (double)b->velocity.z, char_body_is_on_floor(b),
+            char_body_is_on_steep_surface(b), (int)char_body_floor_id(b));
+    fprintf(out, "  before the step: pos %.5f %.5f %.5f vel %.4f %.4f %.4f, penetration %.3f mm; input %.3f %.3f %.3f\n",
+            (double)sim->pos_before.x, (double)sim->pos_before.y, (double)sim->pos_before.z, (double)sim->vel_before.x,
+            (double)sim->vel_before.y, (double)sim->vel_before.z, sim->pen_before * 1000.0, (double)b->input_velocity.x,
+            (double)b->input_velocity.y, (double)b->input_velocity.z);
+    fprintf(out, "  excused %d for %u frames; last teleport frame %d, up change %d, mover near %d (-1: never)\n",
+            sim->excused, (unsigned)sim->excused_frames, (int)sim->last_teleport - 1, (int)sim->last_up - 1,
+            (int)sim->last_mover - 1);
+    fprintf(out, "  settings: r %.4f h %.4f step %.4f snap %.4f angle %.1f deg slides %u types %u mask %u follow %d"
+                 " up %.3f %.3f %.3f offset %.3f %.3f %.3f\n",
+            (double)s->radius, (double)s->height, (double)s->step_height, (double)s->floor_snap_distance,
+            (double)s->floor_max_angle * 57.29577951308232, (unsigned)s->max_slides, (unsigned)s->coll_types,
+            (unsigned)s->read_mask, s->follow_floor, (double)s->up.x, (double)s->up.y, (double)s->up.z,
+            (double)s->center_offset.x, (double)s->center_offset.y, (double)s->center_offset.z);
+    fprintf(out, "  sweep capsule a %.5f %.5f %.5f b %.5f %.5f %.5f r %.4f\n", sweep.a[0], sweep.a[1], sweep.a[2],
+            sweep.b[0], sweep.b[1], sweep.b[2], sweep.r);
+    if (sim->last_tri >= 0) {
+        const soak_wtri_t *w = &sim->lvl->wtris[sim->last_tri];
+        fprintf(out, "  deepest static triangle %d (checker depth %.3f mm): (%.5f %.5f %.5f) (%.5f %.5f %.5f) (%.5f %.5f %.5f)\n",
+                (int)sim->last_tri, sim->last_raw * 1000.0, w->v[0][0], w->v[0][1], w->v[0][2], w->v[1][0], w->v[1][1],
+                w->v[1][2], w->v[2][0], w->v[2][1], w->v[2][2]);
+    }
+    /* what the library itself says about the same capsule (diagnosis only) */
+    fm_vec3_t c, up = s->up;
+    for (int k = 0; k < 3; k++) c.v[k] = (float)((sweep.a[k] + sweep.b[k]) * 0.5);
+    float ihh = (float)(b->inner_half_height - 0.5 * (double)s->step_height);
+    if (ihh < 0.0f) ihh = 0.0f;
+    coll_contact_t ct[4];
+    uint32_t n = coll_capsule_overlaps(&sim->lvl->scene, c, up, s->radius, ihh, s->read_mask, s->coll_types, ct, 4);
+    fprintf(out, "  library coll_capsule_overlaps on the sweep capsule: %u contact(s)", (unsigned)n);
+    for (uint32_t i = 0; i < n && i < 4; i++)
+        fprintf(out, "%s id %u tri %d depth %.3f mm n (%.3f %.3f %.3f)", i ? ";" : ":", (unsigned)ct[i].id,
+                (int)ct[i].triangle, (double)ct[i].depth * 1000.0, (double)ct[i].normal.x, (double)ct[i].normal.y,
+                (double)ct[i].normal.z);
+    fprintf(out, "\n");
+    fm_vec3_t fc, down;
+    for (int k = 0; k < 3; k++) fc.v[k] = (float)((full.a[k] + full.b[k]) * 0.5);
+    fm_vec3_scale(&down, &up, -1.0f);
+    coll_ray_hit_t rh;
+    float reach = 0.5f * s->height + s->floor_snap_distance;
+    if (coll_raycast(&sim->lvl->scene, fc, down, reach + 5.0f, s->read_mask, s->coll_types, &rh))
+        fprintf(out, "  library ray from the full centre along -up: hit id %u tri %d at %.4f m (foot at %.4f) n (%.3f %.3f %.3f)\n",
+                (unsigned)rh.id, (int)rh.triangle, (double)rh.distance, 0.5 * (double)s->height, (double)rh.normal.x,
+                (double)rh.normal.y, (double)rh.normal.z);
+    else
+        fprintf(out, "  library ray from the full centre along -up: no hit within %.3f m\n", (double)reach + 5.0);
+    n = coll_capsule_overlaps(&sim->lvl->scene, fc, up, s->radius + s->floor_snap_distance + (float)SOAK_FLOOR_TOL,
+                              b->inner_half_height, s->read_mask, s->coll_types, ct, 4);
+    fprintf(out, "  library overlaps of the full capsule grown by snap+tol: %u; checker nearest %.4f m\n", (unsigned)n,
+            soak_check_nearest(sim->lvl, s, &full));
+}

@@ -1,0 +1,270 @@
+/**
+ * @file soak_sim.h
+ * @brief Soak / property / determinism harness shared by the soak program
+ *        (host_tests/soak/soak_main.c) and the Unity suites test_replays and test_determinism.
+ *
+ * Pieces:
+ *  - soak_rng_*      splitmix64 PRNG (never rand()): identical streams on every platform.
+ *  - soak_level_*    random level from a seed: enclosure, boxes, ramps, stairs, thin walls,
+ *                    V-corners, triangle soups, overlapping/coplanar copies, moving mesh
+ *                    platforms (translate/rotate/scale) and collider bodies, all built with
+ *                    coll_mesh_build into the level's own static pool (no malloc).
+ *                    Generation uses double arithmetic and our own sin/cos only, so a seed
+ *                    gives bit-identical levels on x86-64 and big-endian MIPS.
+ *  - soak_play_*     random per-frame play (inputs, jumps, teleports, up changes, dt, NaN).
+ *  - soak_check_*    independent double-precision brute-force property checker.
+ *  - soak_sim_*      runs a body on a level frame by frame and classifies property failures.
+ *  - soak_replay_*   text replay files (hex floats) with per-architecture expected states.
+ *
+ * Every non-static symbol starts with soak_ (this file's objects are linked into every
+ * test binary).
+ */
+#ifndef SOAK_SIM_H
+#define SOAK_SIM_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdbool.h>
+#include "coll/char_body.h"
+
+/* ------------------------------------------------------------------ PRNG */
+typedef struct { uint64_t s; } soak_rng_t;
+void     soak_rng_seed(soak_rng_t *r, uint64_t seed);
+uint64_t soak_rng_next(soak_rng_t *r);
+double   soak_rng_unit(soak_rng_t *r);                 ///< [0, 1)
+double   soak_rng_range(soak_rng_t *r, double a, double b);
+uint32_t soak_rng_below(soak_rng_t *r, uint32_t n);    ///< [0, n)
+bool     soak_rng_chance(soak_rng_t *r, double p);
+/** splitmix64 finalizer, used to derive independent sub-seeds. */
+uint64_t soak_mix64(uint64_t x);
+
+/** Deterministic double sine/cosine (no libm: same bits on every IEEE platform). */
+double soak_sin(double x);
+double soak_cos(double x);
+
+/* ------------------------------------------------------------------ level */
+#define SOAK_MAX_PIECES   40      ///< mesh instances per level (scene holds 64)
+#define SOAK_MAX_BODIES   10
+#define SOAK_MAX_VERTS    12000
+#define SOAK_MAX_TRIS     8000
+#define SOAK_POOL_BYTES   (1u << 20)
+
+/** Room interior (the enclosure): x,z in [-HALF, HALF], y in [0, HEIGHT]. */
+#define SOAK_ROOM_HALF    24.0
+#define SOAK_ROOM_HEIGHT  24.0
+
+typedef struct {
+    uint32_t first_vert, nverts, first_tri, ntris; ///< ranges in the level arrays (local coords)
+    coll_mesh_instance_t inst;
+    bool moving;
+    /* motion (moving pieces): xf(t) from the base transform */
+    float base_pos[3];
+    float base_rot[4];
+    float move_dir[3];
+    double move_amp, move_omega, move_phase;
+    float rot_axis[3];
+    double rot_omega;
+    double scale_amp, scale_omega;
+    double bound_radius;          ///< local bounding-sphere radius (around local origin)
+    int kind;                     ///< generator kind (for stats)
+} soak_piece_t;
+
+typedef struct {
+    coll_body_t body;
+    bool moving;
+    float base_pos[3];
+    float move_dir[3];
+    double move_amp, move_omega;
+} soak_lbody_t;
+
+/** Static triangle in world space, double precision (checker data). */
+typedef struct {
+    double v[3][3];
+    double c[3];      ///< bounding-sphere centre
+    double rad;       ///< bounding-sphere radius
+    uint8_t mask;     ///< write mask of its piece
+} soak_wtri_t;
+
+typedef struct {
+    uint64_t seed;
+    uint32_t npieces, nbodies, nverts, ntris, nwtris;
+    soak_piece_t pieces[SOAK_MAX_PIECES];
+    soak_lbody_t bodies[SOAK_MAX_BODIES];
+    float verts[SOAK_MAX_VERTS * 3];
+    uint32_t idx[SOAK_MAX_TRIS * 3];
+    soak_wtri_t wtris[SOAK_MAX_TRIS];   ///< static pieces only, world space
+    coll_scene_t scene;
+    size_t pool_used;
+    _Alignas(16) unsigned char pool[SOAK_POOL_BYTES];
+} soak_level_t;
+
+/** Generates and builds the level for seed (0 on success, else a negative code). */
+int  soak_level_generate(soak_level_t *lvl, uint64_t seed);
+/** Sets the transforms of moving pieces and bodies for time t (seconds). */
+void soak_level_animate(soak_level_t *lvl, double t);
+/** FNV-1a hash of the generated geometry, transforms and body data (cross-platform). */
+uint64_t soak_level_hash(const soak_level_t *lvl);
+
+/** Random character settings within the documented ranges, plus a start position. */
+void soak_settings_random(soak_rng_t *r, char_body_settings_t *s, fm_vec3_t *start);
+
+/* ------------------------------------------------------------------ play */
+enum {
+    SOAK_OP_JUMP = 1,      ///< velocity += up * jump
+    SOAK_OP_TELEPORT = 2,  ///< teleport(tele, tele_reset)
+    SOAK_OP_UP = 4,        ///< set_up(up)
+    SOAK_OP_VEL = 8,       ///< set_velocity(vel)
+};
+
+typedef struct {
+    float dt;
+    fm_vec3_t input;
+    uint8_t ops;
+    uint8_t tele_reset;
+    float jump;
+    fm_vec3_t tele;
+    fm_vec3_t up;
+    fm_vec3_t vel;
+} soak_frame_t;
+
+typedef struct {
+    soak_rng_t rng;
+    fm_vec3_t input;
+    float base_dt;
+    uint32_t hold;        ///< frames left before the input changes
+} soak_play_t;
+
+void soak_play_init(soak_play_t *p, uint64_t seed);
+/** Next frame's play; owner is the body's current origin (teleports and up changes keep
+ *  the whole capsule inside the room so it can always get out without leaving it). */
+void soak_play_next(soak_play_t *p, const soak_level_t *lvl, const char_body_settings_t *s,
+                    fm_vec3_t owner, soak_frame_t *f);
+
+/* ------------------------------------------------------------------ checker */
+/** Closest distance between segment [p0,p1] and triangle (double). */
+double soak_seg_tri_dist(const double p0[3], const double p1[3], const double *v0, const double *v1,
+                         const double *v2);
+/** Closest distance between two segments. */
+double soak_seg_seg_dist(const double p0[3], const double p1[3], const double q0[3], const double q1[3]);
+
+/** World capsule: segment a..b, radius r. */
+typedef struct { double a[3], b[3], r; } soak_capsule_t;
+
+/** Full capsule and sweep capsule (shortened from the bottom by step_height) of a body. */
+void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule_t *sweep);
+
+/** Deepest penetration (r - distance) of cap into a seen static triangle beyond what the
+ *  seed accepts (walkable slopes when radius/step/angle break the seed's rule); 0 when none.
+ *  tri_out: index in lvl->wtris; raw_out: the raw depth of that triangle. */
+double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
+                             const soak_capsule_t *cap, int32_t *tri_out, double *raw_out);
+/** Smallest distance from the capsule surface to any seen geometry (static, moving, bodies). */
+double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s,
+                          const soak_capsule_t *cap);
+
+/* ------------------------------------------------------------------ simulation */
+enum {
+    SOAK_FAIL_NONE = 0,
+    SOAK_FAIL_NONFINITE,    ///< position or velocity not finite
+    SOAK_FAIL_PENETRATION,  ///< sweep capsule > 1 mm into a static triangle, no excuse
+    SOAK_FAIL_ESCAPE,       ///< capsule centre left the room (below the lowest floor etc.)
+    SOAK_FAIL_FLOOR,        ///< is_on_floor with no surface within snap reach
+    SOAK_FAIL_STATE,        ///< inconsistent state (steep without floor, floor id, normal)
+    SOAK_FAIL_COUNT
+};
+const char *soak_fail_name(int kind);
+
+#define SOAK_PEN_TOL     1e-3   ///< allowed penetration, m
+#define SOAK_FLOOR_TOL   1e-2   ///< slack of the is_on_floor reach check, m
+#define SOAK_RECOVER_FRAMES 120 ///< excused penetration longer than this counts as "stuck"
+
+typedef struct {
+    uint64_t frames, hard[SOAK_FAIL_COUNT];
+    uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
+    uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
+    uint64_t excused_escapes;     ///< left the room while recovering from an excused overlap
+    uint64_t on_floor_frames, steep_frames;
+    double max_soft_pen, max_hard_pen;
+} soak_stats_t;
+
+typedef struct {
+    soak_level_t *lvl;
+    char_body_t body;
+    fm_vec3_t owner;
+    double time;
+    uint32_t frame;
+    bool excused;
+    bool escaped;                 ///< left the room after an excused overlap: checks end
+    uint32_t excused_frames;
+    uint32_t last_teleport, last_up, last_mover; ///< frame numbers of the last excuse events (+1)
+    int last_fail;
+    double last_pen, last_raw;
+    double pen_before;          ///< checker penetration before the last step (diagnosis)
+    fm_vec3_t pos_before, vel_before;
+    int32_t last_tri;
+    char msg[256];
+    soak_stats_t st;
+} soak_sim_t;
+
+/** Starts a run on an already generated level (animated to t = 0). */
+void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings_t *s,
+                    fm_vec3_t start);
+/** Runs one frame and checks it; returns SOAK_FAIL_* (msg describes a failure). */
+int  soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check);
+/** Prints the body state, the deepest triangle and the library's own overlap view (diagnosis). */
+void soak_sim_explain(const soak_sim_t *sim, FILE *out);
+
+/* ------------------------------------------------------------------ replay */
+#define SOAK_MAX_EXPECT 4
+typedef struct {
+    char arch[24];
+    char lib[24];                   ///< library source fingerprint the state was stored with
+    fm_vec3_t pos, vel;
+    int on_floor;
+} soak_expect_t;
+
+typedef struct {
+    uint64_t level_seed;
+    char_body_settings_t settings;
+    fm_vec3_t start;
+    double t0;                      ///< level time at the start (moving pieces), s
+    bool has_vel0, start_clear;     ///< start velocity given; start known to be overlap-free
+    fm_vec3_t vel0;
+    uint32_t nframes, cap;
+    soak_frame_t *frames;           ///< caller-owned, cap entries
+    int fail_kind;                  ///< failure recorded when written (informational)
+    uint32_t fail_frame;
+    uint32_t nexpect;
+    soak_expect_t expect[SOAK_MAX_EXPECT];
+    char note[160];
+} soak_replay_t;
+
+/** This build's architecture tag ("x86_64", "mips", ...). */
+const char *soak_arch(void);
+/** Fingerprint (cksum) of the library sources this harness was built with (mk/soak.mk). */
+const char *soak_lib_version(void);
+
+int  soak_replay_write(const char *path, const soak_replay_t *rp);
+/** 0 on success; negative on parse error (line number in *err_line). */
+int  soak_replay_read(const char *path, soak_replay_t *rp, int *err_line);
+
+/** Result of replaying a file. */
+typedef struct {
+    int fails;                      ///< hard property failures
+    int first_fail_kind;
+    uint32_t first_fail_frame;
+    char first_msg[256];
+    fm_vec3_t pos, vel;
+    int on_floor;
+    soak_stats_t st;
+} soak_replay_result_t;
+
+/** Replays rp on lvl (regenerated from rp->level_seed), checking every frame. */
+int soak_replay_run(const soak_replay_t *rp, soak_level_t *lvl, soak_replay_result_t *res);
+/** Like soak_replay_run, printing a diagnosis of the first failure to out (may be NULL). */
+int soak_replay_run_explain(const soak_replay_t *rp, soak_level_t *lvl, soak_replay_result_t *res, FILE *out);
+
+/** Expected state for this architecture, or NULL. */
+const soak_expect_t *soak_replay_expect_for(const soak_replay_t *rp, const char *arch);
+
+#endif
