@@ -257,6 +257,35 @@ static void test_capsule_body(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f - sqrtf(0.25f - 0.04f), h.t);
 }
 
+static void test_crossing_segments_push_out_perpendicular(void)
+{
+    coll_prim_hit_t h;
+    fm_vec3_t pos = V(0, 0, 0);
+    /* capsule body along Y, query capsule along X through it: push along +-Z */
+    coll_body_t cap = make_body(COLL_SHAPE_CAPSULE, V(0.5f, 1, 0), QID);
+    fm_vec3_t seg[2] = { V(-2, 0, 0.0f), V(2, 0, 0.0f) };
+    TEST_ASSERT_TRUE(coll_capsule_body_overlap(seg, 0.25f, &cap, &pos, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.75f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, fabsf(h.normal.z));
+    /* query axis through a sphere body's centre: any direction perpendicular to the axis */
+    coll_body_t sph = make_body(COLL_SHAPE_SPHERE, V(1, 0, 0), QID);
+    fm_vec3_t seg2[2] = { V(0, -2, 0), V(0, 2, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_body_overlap(seg2, 0.25f, &sph, &pos, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.25f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.0f, h.normal.y);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, sqrtf(h.normal.x * h.normal.x + h.normal.z * h.normal.z));
+    /* parallel overlapping axes, offset a little: pushed away sideways */
+    fm_vec3_t seg3[2] = { V(0.01f, -0.5f, 0), V(0.01f, 0.5f, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_body_overlap(seg3, 0.25f, &cap, &pos, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.74f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.normal.x);
+    /* sphere at the sphere's centre: a finite unit normal */
+    fm_vec3_t pt[2] = { V(0, 0, 0), V(0, 0, 0) };
+    TEST_ASSERT_TRUE(coll_capsule_body_overlap(pt, 0.25f, &sph, &pos, &h));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.25f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, sqrtf(h.normal.x * h.normal.x + h.normal.y * h.normal.y + h.normal.z * h.normal.z));
+}
+
 static void test_box_body(void)
 {
     fm_quat_t q;
@@ -592,6 +621,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_sphere_body_sweep_and_ray);
     RUN_TEST(test_capsule_body);
+    RUN_TEST(test_crossing_segments_push_out_perpendicular);
     RUN_TEST(test_box_body);
     RUN_TEST(test_cylinder_body);
     RUN_TEST(test_degenerate_bodies_rejected);

@@ -126,6 +126,32 @@ float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q
 
 /* ---------------------------------------------------------------- triangle helpers */
 
+/* a*b - c*d with both products error-free (Veltkamp split, no FMA needed): the cross
+ * product of two nearly parallel edges (a flat sliver) would otherwise lose its direction. */
+static float split_hi(float a)
+{
+    volatile float t = 4097.0f * a; /* volatile: keep the split exact under any contraction */
+    return t - (t - a);
+}
+
+static float prod_err(float a, float b, float p)
+{
+    float ah = split_hi(a), al = a - ah, bh = split_hi(b), bl = b - bh;
+    return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
+static float diff_of_products(float a, float b, float c, float d)
+{
+    float p1 = a * b, p2 = c * d;
+    return (p1 - p2) + (prod_err(a, b, p1) - prod_err(c, d, p2));
+}
+
+static fm_vec3_t cross_accurate(fm_vec3_t a, fm_vec3_t b)
+{
+    return pv_make(diff_of_products(a.y, b.z, a.z, b.y), diff_of_products(a.z, b.x, a.x, b.z),
+                   diff_of_products(a.x, b.y, a.y, b.x));
+}
+
 typedef struct {
     fm_vec3_t v[3];
     fm_vec3_t e[3];    /* v[i+1] - v[i] */
@@ -140,10 +166,17 @@ static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
     for (int i = 0; i < 3; i++) t->e[i] = pv_sub(t->v[(i + 1) % 3], t->v[i]);
     /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
     float l0 = pv_len2(t->e[0]), l1 = pv_len2(t->e[1]), l2 = pv_len2(t->e[2]);
-    if (l0 >= l1 && l0 >= l2)      t->nraw = pv_cross(t->e[1], t->e[2]);
-    else if (l1 >= l0 && l1 >= l2) t->nraw = pv_cross(t->e[2], t->e[0]);
-    else                           t->nraw = pv_cross(t->e[0], t->e[1]);
+    int ia, ib;
+    if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; }
+    else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; }
+    else                           { ia = 0; ib = 1; }
+    t->nraw = pv_cross(t->e[ia], t->e[ib]);
     float nn = pv_len2(t->nraw);
+    /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
+    if (nn < 1e-4f * pv_len2(t->e[ia]) * pv_len2(t->e[ib])) {
+        t->nraw = cross_accurate(t->e[ia], t->e[ib]);
+        nn = pv_len2(t->nraw);
+    }
     float lmax = pv_maxf(l0, pv_maxf(l1, l2));
     t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && pv_finite(nn);
     t->n = t->has_face ? pv_scale(t->nraw, 1.0f / sqrtf(nn)) : pv_make(0.0f, 0.0f, 0.0f);
@@ -197,9 +230,33 @@ static void overlap_result(const tri_t *t, fm_vec3_t a, fm_vec3_t b, float r, fl
     float dist = sqrtf(d2);
     hit->t = 0.0f;
     hit->point = pt;
-    if (dist > 1e-6f || !t->has_face) {
-        fm_vec3_t fb = t->has_face ? t->n : pv_make(0.0f, 1.0f, 0.0f);
-        hit->normal = pv_unit_or(pv_sub(ps, pt), fb);
+    if (dist > 1e-6f) {
+        hit->normal = pv_unit_or(pv_sub(ps, pt), t->has_face ? t->n : pv_make(0.0f, 1.0f, 0.0f));
+        hit->depth = r - dist;
+        return;
+    }
+    if (!t->has_face) {
+        /* A segment-like "triangle" (used for capsule and sphere bodies) crossing the
+         * capsule's segment: push out perpendicular to both, away from the collider. */
+        fm_vec3_t e = t->e[0];
+        if (pv_len2(t->e[1]) > pv_len2(e)) e = t->e[1];
+        if (pv_len2(t->e[2]) > pv_len2(e)) e = t->e[2];
+        fm_vec3_t s = pv_sub(b, a);
+        fm_vec3_t away = pv_sub(pv_scale(pv_add(a, b), 0.5f),
+                                pv_scale(pv_add(pv_add(t->v[0], t->v[1]), t->v[2]), 1.0f / 3.0f));
+        fm_vec3_t n = pv_cross(e, s);
+        if (!(pv_len2(n) > 1e-12f * pv_len2(e) * pv_len2(s))) {
+            /* parallel or point-like: the part of `away` perpendicular to the longer one */
+            fm_vec3_t ax = pv_len2(s) > pv_len2(e) ? s : e;
+            float l2 = pv_len2(ax);
+            n = l2 > 1e-20f ? pv_madd(away, ax, -pv_dot(away, ax) / l2) : away;
+            if (!(pv_len2(n) > 1e-20f)) { /* any perpendicular of ax */
+                n = fabsf(ax.x) < 0.6f * sqrtf(l2) ? pv_cross(ax, pv_make(1.0f, 0.0f, 0.0f))
+                                                   : pv_cross(ax, pv_make(0.0f, 1.0f, 0.0f));
+            }
+        }
+        if (pv_dot(n, away) < 0.0f) n = pv_neg(n);
+        hit->normal = pv_unit_or(n, pv_make(0.0f, 1.0f, 0.0f));
         hit->depth = r - dist;
         return;
     }
@@ -465,8 +522,6 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     hit->t = s;
     hit->depth = 0.0f;
     hit->normal = n;
-    /* Barycentric point: exact on the triangle, even for grazing rays. */
-    float inv = 1.0f / det;
-    hit->point = pv_add(pv_add(pv_scale(tri[0], U * inv), pv_scale(tri[1], V * inv)), pv_scale(tri[2], W * inv));
+    hit->point = pv_madd(*o, *d, s);
     return true;
 }
