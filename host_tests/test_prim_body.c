@@ -421,10 +421,14 @@ static void test_degenerate_bodies_rejected(void)
         TEST_ASSERT_FALSE(coll_capsule_body_sweep(pt, 0.5f, &zero, &good[i], &pos, 1.0f, &h));
         TEST_ASSERT_TRUE(coll_capsule_body_sweep(pt, 0.5f, &left, &good[i], &pos, 1.0f, &h));
         TEST_ASSERT_TRUE(isfinite(h.t) && isfinite(h.normal.x) && isfinite(h.normal.y) && isfinite(h.normal.z));
-        /* huge but finite coordinates terminate */
-        fm_vec3_t far[2] = { V(1e30f, 0, 0), V(-1e30f, 0, 0) }, fard = V(0, 1e30f, 0);
-        coll_capsule_body_sweep(far, 0.5f, &fard, &good[i], &pos, 1.0f, &h);
-        coll_capsule_body_overlap(far, 1e30f, &good[i], &pos, &h);
+        /* huge but finite coordinates (beyond 1e7 m from the query origin) are rejected */
+        fm_vec3_t far[2] = { V(1e30f, 0, 0), V(-1e30f, 0, 0) }, fard = V(0, 1e30f, 0), farpos = V(0, 0, 3e7f);
+        TEST_ASSERT_FALSE(coll_capsule_body_sweep(far, 0.5f, &d, &good[i], &pos, 1.0f, &h));
+        TEST_ASSERT_FALSE(coll_capsule_body_sweep(seg, 0.5f, &fard, &good[i], &pos, 1.0f, &h));
+        TEST_ASSERT_FALSE(coll_capsule_body_sweep(seg, 0.5f, &d, &good[i], &pos, 1e30f, &h));
+        TEST_ASSERT_FALSE(coll_capsule_body_overlap(seg, 1e30f, &good[i], &pos, &h));
+        TEST_ASSERT_FALSE(coll_capsule_body_overlap(seg, 0.5f, &good[i], &farpos, &h));
+        TEST_ASSERT_FALSE(coll_ray_body(&o, &rd, &good[i], &farpos, 1e30f, &h));
     }
 }
 

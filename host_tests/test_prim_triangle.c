@@ -280,6 +280,14 @@ static void test_degenerate_input_never_nan(void)
     TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &inf_d, floor_tri, 1.0f, &h));
     fm_vec3_t o = V(0, 5, 0), zero = V(0, 0, 0);
     TEST_ASSERT_FALSE(coll_ray_triangle(&o, &zero, floor_tri, 10.0f, &h));
+    /* beyond 1e7 m from the query origin: rejected, not overflowed */
+    fm_vec3_t huge[3] = { V(1e30f, 0, 0), V(0, 1e30f, 0), V(0, 0, 1e30f) };
+    fm_vec3_t far_seg[2] = { V(-1e30f, 0, 0), V(1e30f, 0, 0) };
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, huge, 1.0f, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(far_seg, 0.5f, &d, floor_tri, 1.0f, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1e30f, &h));
+    TEST_ASSERT_FALSE(coll_capsule_triangle_overlap(far_seg, 0.5f, floor_tri, &h));
+    TEST_ASSERT_FALSE(coll_ray_triangle(&o, &d, huge, 1e30f, &h));
 }
 
 static bool g_custom_called;

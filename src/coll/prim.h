@@ -70,6 +70,17 @@ void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
  * capsule sliding along a surface it touches, or touching and moving away, is not blocked.
  */
 #define COLL_PRIM_TOUCH_TOL 1e-4f
+/*
+ * Notes for callers (prim part):
+ *  - The tolerance is judged per call: a caller taking the minimum over several triangles
+ *    may get a time up to "tol deep" later than the exact first contact with their union
+ *    (when the first-touched triangle is only grazed while another is entered); the
+ *    capsule never penetrates any triangle deeper than tol before the reported time.
+ *    Box bodies judge it on the whole box.
+ *  - Coordinates (and disp * t_max, radii) beyond +-1e7 m are rejected (false), as are
+ *    NaN and infinities. A ray starting inside a body hits at s = 0 with the normal of
+ *    the nearest surface.
+ */
 
 /**
  * The triangle sweep the scene code calls: runs the installed method, or

@@ -46,7 +46,7 @@ static fm_vec3_t q_rot_inv(const fm_quat_t *q, fm_vec3_t v)
 
 static bool body_setup(const coll_body_t *body, const fm_vec3_t *pos, body_frame_t *f)
 {
-    if (!body || !pos || !pv_finite3(*pos) || !pv_finite3(body->half_extents)) return false;
+    if (!body || !pos || !pv_sane3(*pos) || !pv_finite3(body->half_extents)) return false;
     const fm_quat_t *q = &body->xf.rot;
     if (!pv_finite(q->x) || !pv_finite(q->y) || !pv_finite(q->z) || !pv_finite(q->w)) return false;
     float qq = q->x * q->x + q->y * q->y + q->z * q->z + q->w * q->w;
@@ -74,7 +74,7 @@ static bool body_setup(const coll_body_t *body, const fm_vec3_t *pos, body_frame
 
 static bool seg_ok(const fm_vec3_t seg[2], float r)
 {
-    return seg && pv_finite3(seg[0]) && pv_finite3(seg[1]) && r >= 0.0f && pv_finite(r);
+    return seg && pv_sane3(seg[0]) && pv_sane3(seg[1]) && r >= 0.0f && pv_sane(r);
 }
 
 /** World inner segment of a capsule body (local Y axis). */
@@ -174,7 +174,7 @@ bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *bo
                    const fm_vec3_t *body_pos_rel, float s_max, coll_prim_hit_t *hit)
 {
     body_frame_t f;
-    if (!o || !d || !hit || !pv_finite3(*o) || !pv_finite3(*d) || !(s_max >= 0.0f)) return false;
+    if (!o || !d || !hit || !pv_sane3(*o) || !pv_sane3(*d) || !(s_max >= 0.0f)) return false;
     if (!body_setup(body, body_pos_rel, &f)) return false;
     if (!(pv_len2(*d) > 0.0f)) return false;
     prim_ray_t h;
@@ -559,7 +559,8 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
                              float t_max, coll_prim_hit_t *hit)
 {
     body_frame_t f;
-    if (!hit || !disp || !seg_ok(seg, r) || !pv_finite3(*disp) || !(t_max >= 0.0f) || !pv_finite(t_max))
+    if (!hit || !disp || !seg_ok(seg, r) || !pv_sane3(*disp) || !(t_max >= 0.0f) || !pv_sane(t_max) ||
+        !pv_sane3(pv_scale(*disp, t_max)))
         return false;
     if (!body_setup(body, body_pos_rel, &f)) return false;
     const float tol = pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);

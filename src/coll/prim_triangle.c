@@ -375,9 +375,10 @@ bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, c
                        float t_max, bool confirm, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !pv_finite(r) || !(t_max >= 0.0f) || !pv_finite(t_max)) return false;
-    if (!pv_finite3(seg[0]) || !pv_finite3(seg[1]) || !pv_finite3(*disp) ||
-        !pv_finite3(tri[0]) || !pv_finite3(tri[1]) || !pv_finite3(tri[2])) return false;
+    if (!(r >= 0.0f) || !pv_sane(r) || !(t_max >= 0.0f) || !pv_sane(t_max)) return false;
+    if (!pv_sane3(seg[0]) || !pv_sane3(seg[1]) || !pv_sane3(*disp) ||
+        !pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
+    if (!pv_sane3(pv_scale(*disp, t_max))) return false;
 
     sweep_ctx_t c;
     tri_setup(&c.tri, tri);
@@ -454,9 +455,9 @@ bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec
                                    coll_prim_hit_t *hit)
 {
     if (!seg || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !pv_finite(r)) return false;
-    if (!pv_finite3(seg[0]) || !pv_finite3(seg[1]) ||
-        !pv_finite3(tri[0]) || !pv_finite3(tri[1]) || !pv_finite3(tri[2])) return false;
+    if (!(r >= 0.0f) || !pv_sane(r)) return false;
+    if (!pv_sane3(seg[0]) || !pv_sane3(seg[1]) ||
+        !pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
     tri_t t;
     tri_setup(&t, tri);
     fm_vec3_t ps, pt;
@@ -479,7 +480,8 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
                        float s_max, coll_prim_hit_t *hit)
 {
     if (!o || !d || !tri || !hit) return false;
-    if (!pv_finite3(*o) || !pv_finite3(*d) || !(s_max >= 0.0f)) return false;
+    if (!pv_sane3(*o) || !pv_sane3(*d) || !(s_max >= 0.0f)) return false;
+    if (!pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
     int kz = 0;
     float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
     if (ay > ax && ay >= az) kz = 1;

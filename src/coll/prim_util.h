@@ -29,6 +29,12 @@ static inline float pv_maxf(float a, float b) { return a > b ? a : b; }
 /** True for a finite float (NaN and infinities give false); needs no libm. */
 static inline bool pv_finite(float x) { return (x - x) == 0.0f; }
 static inline bool pv_finite3(fm_vec3_t v) { return pv_finite(v.x) && pv_finite(v.y) && pv_finite(v.z); }
+/** Largest coordinate magnitude the primitives accept (inputs are relative to a nearby
+ *  origin; beyond this products overflow float and the answer means nothing). */
+#define PRIM_MAX_COORD 1.0e7f
+/** Finite, and every component within +-PRIM_MAX_COORD (false for NaN too). */
+static inline bool pv_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM_MAX_COORD; }
+static inline bool pv_sane3(fm_vec3_t v) { return pv_sane(v.x) && pv_sane(v.y) && pv_sane(v.z); }
 /** Unit vector along a, or `fallback` when a is (nearly) zero. */
 static inline fm_vec3_t pv_unit_or(fm_vec3_t a, fm_vec3_t fallback)
 {
