@@ -134,7 +134,8 @@ static void random_world(core_rng_t *r, bool with_bodies)
         double b[3];
         for (int a = 0; a < 3; a++) b[a] = base[a];
         random_xf(r, &in->xf, b);
-        in->write_mask = 1;
+        static const uint8_t masks[] = { 1, 1, 3, 5 };
+        in->write_mask = masks[core_rng_u32(r) % 4];
         in->id = (uint16_t)(100 + i);
         TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&g_w.scene, in));
     }
@@ -166,14 +167,17 @@ static void random_world(core_rng_t *r, bool with_bodies)
         int nb = (int)(core_rng_u32(r) % 5);
         for (int i = 0; i < nb; i++) {
             coll_body_t *b = &g_w.body[i];
-            b->shape = (coll_shape_t)(core_rng_u32(r) % 2 ? COLL_SHAPE_SPHERE : COLL_SHAPE_CAPSULE);
+            b->shape = (coll_shape_t)(core_rng_u32(r) % 4);
             b->half_extents.x = (float)core_rng_range(r, 0.2, 2);
             b->half_extents.y = (float)core_rng_range(r, 0.1, 2);
-            b->half_extents.z = 0;
+            b->half_extents.z = b->shape == COLL_SHAPE_BOX ? (float)core_rng_range(r, 0.2, 2) : 0.0f;
             for (int a = 0; a < 3; a++) b->xf.pos.v[a] = (float)core_rng_range(r, g_w.lo[a], g_w.hi[a]);
             random_quat(r, &b->xf.rot);
             b->xf.scale.x = b->xf.scale.y = b->xf.scale.z = 1;
-            b->write_mask = 1;
+            /* boxes and cylinders only on layer 2: the sweep reference (segment distances)
+             * covers spheres and capsules; sweeps read layers 1 and 4 */
+            bool round = b->shape == COLL_SHAPE_SPHERE || b->shape == COLL_SHAPE_CAPSULE;
+            b->write_mask = round ? (core_rng_u32(r) % 2 ? 1 : 3) : 2;
             b->id = (uint16_t)(200 + i);
             TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_body(&g_w.scene, b));
         }
@@ -336,9 +340,12 @@ static void test_random_raycasts_match_reference(void)
             smax = smaxf;
             coll_ray_hit_t h;
             bool got;
-            ASSERT_NO_ALLOC(got = coll_raycast(&g_w.scene, of, df, smaxf, 0xFF, COLL_TYPE_ALL, &h));
+            static const uint8_t rmasks[] = { 0xFF, 0xFF, 0xFF, 1, 2, 4 };
+            static const uint8_t rtypes[] = { COLL_TYPE_ALL, COLL_TYPE_ALL, COLL_TYPE_ALL, COLL_TYPE_MESH, COLL_TYPE_BODY };
+            uint8_t mask = rmasks[core_rng_u32(&r) % 6], types = rtypes[core_rng_u32(&r) % 5];
+            ASSERT_NO_ALLOC(got = coll_raycast(&g_w.scene, of, df, smaxf, mask, types, &h));
             ray_ref_t rr;
-            ray_reference(o, d, smax, 0xFF, COLL_TYPE_ALL, &rr);
+            ray_reference(o, d, smax, mask, types, &rr);
             double tol = 1e-4 * fmax(1.0, fmin(smax, 1e3));
             char msg[200];
             snprintf(msg, sizeof msg, "world %d query %d: got %d (%.6f) certain %d (%.6f) possible %d (%.6f)", wi, q,
@@ -380,6 +387,8 @@ static void test_random_raycasts_match_reference(void)
             /* the reported collider really is there, at that distance, with that normal */
             double s_rep, ed;
             core_d3 n_rep;
+            TEST_ASSERT_TRUE((h.type & types) != 0);
+            TEST_ASSERT_TRUE(((h.instance ? h.instance->write_mask : h.body->write_mask) & mask) != 0);
             TEST_ASSERT_TRUE_MESSAGE(ray_ref_for_reported(o, d, smax, &h, &s_rep, &n_rep, &ed), msg);
             double amb_rep = h.type == COLL_TYPE_MESH ? g_amb : AMBIG;
             TEST_ASSERT_TRUE_MESSAGE(fabs(s_rep - h.distance) <= tol + amb_rep, msg);
@@ -395,6 +404,8 @@ static void test_random_raycasts_match_reference(void)
             if (rr.certain_hit) {
                 certain++;
                 double e = fabs(h.distance - rr.s_certain_exact);
+                if (getenv("CORE_DEBUG") && e > tol)
+                    printf("RAYDIFF %s: e %.4g amb_rep %.4g ed %.4g type %d\n", msg, e, amb_rep, ed, h.type);
                 worst = fmax(worst, e / fmax(1.0, smax));
                 if (e <= tol) strict++;
             }
@@ -575,11 +586,18 @@ static void test_random_capsule_sweeps_match_reference(void)
             double tol = 1e-4 * fmax(1.0, L);
             double band = TOUCH + tol + g_float_err + 3e-7 * (core_d3_len(c) + L); /* + float rounding */
             sweep_ref_t sr;
-            sweep_reference(c, axis, rad, hh, disp, 0xFF, COLL_TYPE_ALL, band, &sr);
+            static const uint8_t smasks[] = { 1, 1, 1, 4, 5 };
+            static const uint8_t stypes[] = { COLL_TYPE_ALL, COLL_TYPE_ALL, COLL_TYPE_ALL, COLL_TYPE_MESH, COLL_TYPE_BODY };
+            uint8_t mask = smasks[core_rng_u32(&r) % 5], types = stypes[core_rng_u32(&r) % 5];
+            sweep_reference(c, axis, rad, hh, disp, mask, types, band, &sr);
             if (sr.ambiguous_start) { skipped++; continue; }
             coll_sweep_hit_t h;
             bool got;
-            ASSERT_NO_ALLOC(got = coll_capsule_sweep(&g_w.scene, cf, af, rf, hf, df, 0xFF, COLL_TYPE_ALL, &h));
+            ASSERT_NO_ALLOC(got = coll_capsule_sweep(&g_w.scene, cf, af, rf, hf, df, mask, types, &h));
+            if (got) {
+                TEST_ASSERT_TRUE((h.type & types) != 0);
+                TEST_ASSERT_TRUE(((h.instance ? h.instance->write_mask : h.body->write_mask) & mask) != 0);
+            }
             n++;
             char msg[240];
             snprintf(msg, sizeof msg, "world %d query %d: got %d t=%.7f depth=%.6f | overlap %d depth %.6f certain %d "
