@@ -1114,6 +1114,43 @@ static void test_sweep_uses_installed_method(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 1.0f / 3.0f, h.t); /* bottom at 1.0, floor at 0, 3 m travel */
 }
 
+/* The grid keeps the work per query small: character-sized sweeps over a 10k-triangle
+ * level call the triangle sweep a handful of times, not 10,000 (counted, not timed). */
+static void test_sweeps_test_few_triangles_on_a_big_level(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 100, 50, 1.5f, -75, 0, -37);
+    TEST_ASSERT_EQUAL_UINT32(10000, nt);
+    const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+    coll_scene_t s;
+    coll_scene_init(&s);
+    coll_mesh_instance_t a;
+    place(&a, m, 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(&s, &a);
+    core_rng_t r;
+    core_rng_seed(&r, 3);
+    coll_set_tri_sweep_method(counting_method, NULL);
+    int total = 0, worst = 0, hits = 0;
+    const int N = 1000;
+    for (int i = 0; i < N; i++) {
+        fm_vec3_t c = {{ (float)core_rng_range(&r, -70, 70), (float)core_rng_range(&r, 1.0, 1.6),
+                         (float)core_rng_range(&r, -33, 33) }};
+        fm_vec3_t d = {{ (float)core_rng_range(&r, -0.3, 0.3), (float)core_rng_range(&r, -0.6, 0.0),
+                         (float)core_rng_range(&r, -0.3, 0.3) }};
+        coll_sweep_hit_t h;
+        g_method_calls = 0;
+        hits += coll_capsule_sweep(&s, c, UP, 0.3f, 0.6f, d, 0xFF, COLL_TYPE_ALL, &h);
+        total += g_method_calls;
+        if (g_method_calls > worst) worst = g_method_calls;
+    }
+    coll_set_tri_sweep_method(NULL, NULL);
+    printf("10k-triangle level, %d character sweeps (%d hits): %.1f triangle sweeps per query on average, "
+           "%d at most\n", N, hits, (double)total / N, worst);
+    TEST_ASSERT_TRUE(hits > N / 10);
+    TEST_ASSERT_TRUE(total < 30 * N);
+    TEST_ASSERT_TRUE(worst < 100);
+}
+
 static void probe_bodies(void)
 {
     coll_body_t b;
@@ -1144,6 +1181,7 @@ int main(void)
     RUN_TEST(test_ray_along_cell_boundary);
     RUN_TEST(test_loaded_blob_queries_like_built);
     RUN_TEST(test_sweep_uses_installed_method);
+    RUN_TEST(test_sweeps_test_few_triangles_on_a_big_level);
     RUN_TEST(test_random_raycasts_match_reference);
     RUN_TEST(test_random_capsule_sweeps_match_reference);
     return UNITY_END();
