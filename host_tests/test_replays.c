@@ -7,6 +7,7 @@
 #define _FILE_OFFSET_BITS 64 /* 32-bit MIPS under qemu: readdir with 64-bit directory offsets */
 #include "unity.h"
 #include "soak_sim.h"
+#include "coll/char_body_internal.h" /* CB_FLAG_*: to fake states a buggy step could leave */
 #include <dirent.h>
 #include <math.h>
 #include <stdlib.h>
@@ -77,6 +78,58 @@ static void test_checker_sees_penetration_and_floor_reach(void)
     owner.y = 3.0f;                       /* foot 3 m above the floor */
     soak_body_capsules(&body, &full, &sweep);
     TEST_ASSERT_DOUBLE_WITHIN(1e-5, 3.0, soak_check_nearest(&lvl, &body.settings, &full));
+}
+
+/* soak_sim_check flags each bad state it is shown (the body's private flags are set by
+ * hand, as a buggy step could leave them), and excuses what it should. */
+static void test_checker_flags_bad_body_states(void)
+{
+    static soak_sim_t sim;
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate(&lvl, 3));
+    lvl.nwtris = lvl.pieces[0].ntris; /* the room only */
+    lvl.npieces = 1;
+    lvl.nbodies = 0;
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT; /* r 0.5, height 2, step 0.25, snap 0.3 */
+    s.center_offset.y = 1.0f;                              /* foot at the owner origin */
+    fm_vec3_t start = {{0.0f, 0.0f, 0.0f}};
+    soak_sim_begin(&sim, &lvl, &s, start);
+    sim.excused = false;
+    char_body_t *b = &sim.body;
+    fm_vec3_t up = {{0.0f, 1.0f, 0.0f}};
+
+    /* standing 0.2 m above the floor, snap 0.3: fine */
+    sim.owner.y = 0.2f;
+    b->flags = CB_FLAG_GROUNDED; b->floor_id = 1; b->floor_normal = up;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, false, true));
+    /* "on floor" 5 m up */
+    sim.owner.y = 5.0f;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FLOOR, soak_sim_check(&sim, false, true));
+    /* ... unless the step did not run (stale state after dt <= 0) */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, false, false));
+    /* on the floor with no floor id, or not on it with one */
+    sim.owner.y = 0.0f;
+    b->floor_id = -1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_STATE, soak_sim_check(&sim, false, true));
+    b->flags = 0; b->floor_id = 1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_STATE, soak_sim_check(&sim, false, true));
+    b->floor_id = -1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, false, true));
+    /* sweep capsule 15 cm into the floor: a failure, or excused after a teleport */
+    sim.owner.y = -0.4f;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_PENETRATION, soak_sim_check(&sim, false, true));
+    uint64_t soft = sim.st.soft_pen_frames;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, true, true));
+    TEST_ASSERT_EQUAL_UINT64(soft + 1, sim.st.soft_pen_frames);
+    /* below the lowest floor: an escape, not excused once clear of the overlap state */
+    sim.excused = false;
+    sim.owner.y = -3.0f;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_ESCAPE, soak_sim_check(&sim, false, true));
+    sim.owner.y = 0.0f;
+    sim.owner.x = NAN;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONFINITE, soak_sim_check(&sim, false, true));
+    sim.owner.x = 0.0f;
+    b->velocity.z = INFINITY;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONFINITE, soak_sim_check(&sim, false, true));
 }
 
 /* The walkable-slope allowance: a ball whose foot point stands on a 40-degree ramp with a
@@ -274,6 +327,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_checker_segment_triangle_distance);
     RUN_TEST(test_checker_sees_penetration_and_floor_reach);
+    RUN_TEST(test_checker_flags_bad_body_states);
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
     RUN_TEST(test_replay_format_round_trips_special_values);
     RUN_TEST(test_every_replay_passes);

@@ -239,7 +239,16 @@ int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
     sim->frame++;
     sim->st.frames++;
     if (!check || sim->escaped) return SOAK_FAIL_NONE;
+    return soak_sim_check(sim, excuse, isfinite(f->dt) && f->dt > 0.0f);
+}
 
+int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
+{
+    char_body_t *b = &sim->body;
+    const char_body_settings_t *s = char_body_get_settings(b);
+    soak_capsule_t full, sweep;
+    sim->last_fail = SOAK_FAIL_NONE;
+    sim->msg[0] = 0;
     fm_vec3_t pos = sim->owner, vel = char_body_get_velocity(b);
     if (!vfinite(pos) || !vfinite(vel))
         FAIL(SOAK_FAIL_NONFINITE, "pos (%g %g %g) vel (%g %g %g)", (double)pos.x, (double)pos.y, (double)pos.z,
@@ -285,15 +294,21 @@ int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
     }
 
     /* A skipped step (dt <= 0 or not finite) leaves the floor state of the last step. */
-    if (!(isfinite(f->dt) && f->dt > 0.0f)) return SOAK_FAIL_NONE;
+    if (!stepped) return SOAK_FAIL_NONE;
     bool on = char_body_is_on_floor(b), steep = char_body_is_on_steep_surface(b);
     if (steep && !on) FAIL(SOAK_FAIL_STATE, "on steep surface but not on floor");
     if (on) {
         sim->st.on_floor_frames++;
         if (steep) sim->st.steep_frames++;
-        double near = soak_check_nearest(sim->lvl, s, &full);
-        if (near > (double)s->floor_snap_distance + SOAK_FLOOR_TOL)
-            FAIL(SOAK_FAIL_FLOOR, "is_on_floor but nearest seen surface is %.4f m from the capsule (snap %.4f)",
+        /* The probe's reach: the sweep capsule's bottom ball (step_height above the full
+         * one: treads in the step zone are found by the probe) swept down to
+         * floor_snap_distance below the foot. A ray along the axis and a sphere cast both
+         * stay inside it. */
+        soak_capsule_t reach = sweep;
+        for (int k = 0; k < 3; k++) reach.b[k] = full.a[k] - (double)s->up.v[k] * (double)s->floor_snap_distance;
+        double near = soak_check_nearest(sim->lvl, s, &reach);
+        if (near > SOAK_FLOOR_TOL)
+            FAIL(SOAK_FAIL_FLOOR, "is_on_floor but no seen surface within snap reach below the foot (%.4f m beyond; snap %.4f)",
                  near, (double)s->floor_snap_distance);
         fm_vec3_t n = char_body_floor_normal(b);
         float nl = fm_vec3_len(&n);

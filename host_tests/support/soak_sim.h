@@ -211,6 +211,10 @@ void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings
                     fm_vec3_t start);
 /** Runs one frame and checks it; returns SOAK_FAIL_* (msg describes a failure). */
 int  soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check);
+/** The property checks of one frame on the body's current state (soak_sim_step calls it
+ *  after the step). excuse: the frame teleported, changed up or had a mover near;
+ *  stepped: the step ran (valid dt), so the floor state is fresh. */
+int  soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped);
 /** Prints the body state, the deepest triangle and the library's own overlap view (diagnosis). */
 void soak_sim_explain(const soak_sim_t *sim, FILE *out);
 
