@@ -119,7 +119,7 @@ static void test_checker_flags_bad_body_states(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_PENETRATION, soak_sim_check(&sim, false, true));
     uint64_t soft = sim.st.soft_pen_frames;
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, true, true));
-    TEST_ASSERT_EQUAL_UINT64(soft + 1, sim.st.soft_pen_frames);
+    TEST_ASSERT_TRUE(sim.st.soft_pen_frames == soft + 1); /* no 64-bit asserts on 32-bit MIPS */
     /* below the lowest floor: an escape, not excused once clear of the overlap state */
     sim.excused = false;
     sim.owner.y = -3.0f;
