@@ -73,12 +73,23 @@ static fm_vec3_t mul3_abs(const float m[3][3], const fm_vec3_t *v)
     return o;
 }
 
-/* Query origin in mesh-local space. */
-static fm_vec3_t to_local_point(const xf3_t *x, const coll_transform_t *xf, const fm_vec3_t *p)
+/* Query origin in mesh-local space. Rotated/scaled instances go through a pivot at the
+ * centre of the mesh bounds: o_local = c + M^-1 (p - (pos + M c)), so a query near the
+ * mesh only pushes a short vector through M^-1 and meshes whose local coordinates are
+ * far from their own origin do not lose the condition number of M in precision. */
+static fm_vec3_t to_local_point(const xf3_t *x, const coll_transform_t *xf, const coll_mesh_t *m,
+                                const fm_vec3_t *p)
 {
     fm_vec3_t d;
     fm_vec3_sub(&d, p, &xf->pos);
-    return x->simple ? d : mul3(x->inv, &d);
+    if (x->simple) return d;
+    fm_vec3_t c, mc, l;
+    for (int a = 0; a < 3; a++) c.v[a] = 0.5f * (m->bmin[a] + m->bmax[a]);
+    mc = mul3(x->m, &c);
+    fm_vec3_sub(&d, &d, &mc);
+    l = mul3(x->inv, &d);
+    fm_vec3_add(&l, &l, &c);
+    return l;
 }
 
 static fm_vec3_t to_local_dir(const xf3_t *x, const fm_vec3_t *d)
@@ -272,7 +283,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
-    fm_vec3_t o_l = to_local_point(&x, &inst->xf, origin);
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, origin);
     fm_vec3_t d_l = to_local_dir(&x, dir);
     float mg = mesh_margin(m);
     float lo[3], hi[3];
@@ -464,7 +475,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
-    fm_vec3_t o_l = to_local_point(&x, &inst->xf, center);
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, center);
     fm_vec3_t lo, hi;
     swept_box(q, sb->best_t, &lo, &hi);
     uint32_t clo[3], chi[3];
@@ -619,7 +630,7 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
-    fm_vec3_t o_l = to_local_point(&x, &inst->xf, &c->center);
+    fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &c->center);
     fm_vec3_t lo, hi;
     swept_box(q, 0.0f, &lo, &hi);
     uint32_t clo[3], chi[3];
