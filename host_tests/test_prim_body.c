@@ -453,6 +453,9 @@ static void test_body_functions_do_not_allocate(void)
         ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_capsule_body_sweep(in, 0.4f, &d, &bodies[i], &pos, 1.0f, &h)));
         ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_ray_body(&o, &rd, &bodies[i], &pos, 10.0f, &h)));
     }
+    coll_set_body_sweep_mpr(true);
+    ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_capsule_body_sweep(seg, 0.4f, &d, &bodies[3], &pos, 1.0f, &h)));
+    coll_set_body_sweep_mpr(false);
 }
 
 /* ------------------------------------------------------------------ random vs reference */
@@ -552,7 +555,7 @@ static void random_body_case(coll_shape_t shape, body_stats_t *st, double t_tol,
                 char msg[300];
                 snprintf(msg, sizeof msg, "shape %d: t %.9g ref %.9g (err %.3g m) normal err %.3g vn %.3g",
                          (int)shape, h.t, ref.t_first, dt, a, vn);
-                if (!(dt * vn < t_tol + 3e-6 * (dl + 10) && a < n_tol) || (getenv("PRIM_DUMP_T") && dt > atof(getenv("PRIM_DUMP_T")))) {
+                if (!(dt * vn < t_tol + 3e-6 * (dl + 10) && a < n_tol) || (getenv("PRIM_DUMP_T") && dt > atof(getenv("PRIM_DUMP_T"))) || (getenv("PRIM_DUMP_N") && a > atof(getenv("PRIM_DUMP_N")))) {
                     printf("case: shape %d he {%.9g,%.9g,%.9g} q {%.9g,%.9g,%.9g,%.9g} pos {%.9g,%.9g,%.9g}\n"
                            "      seg {%.9g,%.9g,%.9g} {%.9g,%.9g,%.9g} r %.9g d {%.9g,%.9g,%.9g}\n"
                            "      got n {%g %g %g} ref n {%g %g %g}\n",
@@ -618,7 +621,13 @@ static void run_random(coll_shape_t shape, const char *name, double t_tol, doubl
 static void test_random_sphere(void) { run_random(COLL_SHAPE_SPHERE, "sphere", 1e-5, 1e-3); }
 static void test_random_capsule(void) { run_random(COLL_SHAPE_CAPSULE, "capsule", 1e-5, 1e-3); }
 static void test_random_box(void) { run_random(COLL_SHAPE_BOX, "box", 1e-5, 1e-3); }
-static void test_random_cylinder(void) { run_random(COLL_SHAPE_CYLINDER, "cylinder", 1e-4, 5e-3); }
+static void test_random_cylinder(void) { run_random(COLL_SHAPE_CYLINDER, "cylinder", 3e-5, 1e-3); }
+static void test_random_cylinder_libccd_mpr(void)
+{
+    coll_set_body_sweep_mpr(true);
+    run_random(COLL_SHAPE_CYLINDER, "cylinder, libccd MPR path", 1e-4, 2e-3);
+    coll_set_body_sweep_mpr(false);
+}
 
 int main(void)
 {
@@ -634,5 +643,6 @@ int main(void)
     RUN_TEST(test_random_capsule);
     RUN_TEST(test_random_box);
     RUN_TEST(test_random_cylinder);
+    RUN_TEST(test_random_cylinder_libccd_mpr);
     return UNITY_END();
 }

@@ -89,4 +89,10 @@ void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
 bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                     const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
 
+/**
+ * Forces the libccd MPR path (bisection on the swept capsule) for cylinder-body sweeps
+ * instead of the Newton-on-exact-distance path; for tests and benchmarks. Default false.
+ */
+void coll_set_body_sweep_mpr(bool force);
+
 #endif

@@ -11,12 +11,16 @@
  *    first contact with a solid box from outside is on its surface); a segment crossing
  *    the box gets its push-out from the separating-axis test (box axes and segment x box
  *    axes), which is the exact penetration of a segment into a box.
- *  - Cylinder: libccd MPR (no EPA, no allocation). The first time of impact is found by
- *    bisection on the intersection of the body with the capsule swept over [0, t] (a
- *    convex shape that only grows with t, so the test is monotone); the normal comes from
- *    ccdMPRPenetration at the contact with the capsule inflated by the bisection bracket.
- *    libccd's portal refinement has no iteration cap, so the support function caps the
- *    number of calls and then answers "no intersection".
+ *  - Cylinder: the exact segment-cylinder distance (bisection on the sign of its
+ *    derivative along the segment) drives Newton steps on the distance as a function of
+ *    time (convex, derivative n . d, so steps from the left never pass the root); the
+ *    normal comes from the closest points. When Newton does not settle, or when
+ *    coll_set_body_sweep_mpr(true) forces it, libccd MPR takes over: bisection on the
+ *    intersection of the body with the capsule swept over [0, t] (a convex shape that
+ *    only grows with t, so the test is monotone). A segment inside the cylinder gets its
+ *    push-out from ccdMPRPenetration (no EPA, no allocation). libccd's portal refinement
+ *    has no iteration cap, so the support function caps the number of calls and then
+ *    answers "no intersection".
  * Every path rejects non-finite input and zero-size bodies before doing any work.
  */
 #include "prim_util.h"
@@ -316,6 +320,7 @@ static bool box_sweep_local(const fm_vec3_t seg[2], float r, fm_vec3_t d, fm_vec
     }
     if (!any) return false;
     float rin = r - tol;
+    if (hit->t > 0.0f && prim_goes_deeper(r, hit->normal, d, rin, t_max - hit->t)) return true;
     for (int i = 0; i < nf; i++) {
         int k = front[i];
         fm_vec3_t tri[3] = { box_corner(he, box_tris[k][0]), box_corner(he, box_tris[k][1]),
@@ -336,38 +341,38 @@ static fm_vec3_t cyl_closest_pt(fm_vec3_t p, float R, float hh)
     return pv_make(p.x * k, pv_maxf(-hh, pv_minf(hh, p.y)), p.z * k);
 }
 
-static float cyl_dist2_at(fm_vec3_t a, fm_vec3_t s, float u, float R, float hh)
-{
-    fm_vec3_t p = pv_madd(a, s, u);
-    return pv_len2(pv_sub(p, cyl_closest_pt(p, R, hh)));
-}
-
 /**
  * Squared distance of local segment a..b to the solid cylinder, with closest points.
- * The distance along a segment to a convex set is convex, so a golden-section search
- * over the segment parameter finds the minimum (plus both ends, for flat minima).
+ * The squared distance along a segment to a convex set is convex with derivative
+ * 2 (p - c(p)) . s, so bisection on the sign of that derivative finds the minimum; the
+ * sign is computed accurately even where the distance itself is flat.
  */
 static float seg_cyl_closest(fm_vec3_t a, fm_vec3_t b, float R, float hh, fm_vec3_t *ps, fm_vec3_t *pc)
 {
     fm_vec3_t s = pv_sub(b, a);
-    float lo = 0.0f, hi = 1.0f;
-    float best_u = 0.0f, best = cyl_dist2_at(a, s, 0.0f, R, hh);
-    float fe = cyl_dist2_at(a, s, 1.0f, R, hh);
-    if (fe < best) { best = fe; best_u = 1.0f; }
+    float u = 0.0f;
     if (pv_len2(s) > 1e-14f) {
-        const float g = 0.618034f;
-        float x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        float f1 = cyl_dist2_at(a, s, x1, R, hh), f2 = cyl_dist2_at(a, s, x2, R, hh);
-        for (int it = 0; it < 36; it++) {
-            if (f1 <= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = cyl_dist2_at(a, s, x1, R, hh); }
-            else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = cyl_dist2_at(a, s, x2, R, hh); }
+        fm_vec3_t p0 = a, p1 = b;
+        float g0 = pv_dot(pv_sub(p0, cyl_closest_pt(p0, R, hh)), s);
+        float g1 = pv_dot(pv_sub(p1, cyl_closest_pt(p1, R, hh)), s);
+        if (g0 >= 0.0f) u = 0.0f;
+        else if (g1 <= 0.0f) u = 1.0f;
+        else {
+            float lo = 0.0f, hi = 1.0f;
+            for (int it = 0; it < 26; it++) {
+                float mid = 0.5f * (lo + hi);
+                fm_vec3_t p = pv_madd(a, s, mid);
+                float g = pv_dot(pv_sub(p, cyl_closest_pt(p, R, hh)), s);
+                if (g < 0.0f) lo = mid;
+                else if (g > 0.0f) hi = mid;
+                else { lo = hi = mid; break; }
+            }
+            u = 0.5f * (lo + hi);
         }
-        float um = 0.5f * (lo + hi), fm = cyl_dist2_at(a, s, um, R, hh);
-        if (fm < best) { best = fm; best_u = um; }
     }
-    *ps = pv_madd(a, s, best_u);
+    *ps = pv_madd(a, s, u);
     *pc = cyl_closest_pt(*ps, R, hh);
-    return best;
+    return pv_len2(pv_sub(*ps, *pc));
 }
 
 /** Closest points of a world segment and the cylinder body, results in world frame. */
@@ -515,12 +520,16 @@ static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, 
     return true;
 }
 
-static bool ccd_sweep(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm_vec3_t d, float t_max,
-                      float tol, coll_prim_hit_t *hit)
+static bool g_force_mpr;
+
+void coll_set_body_sweep_mpr(bool force) { g_force_mpr = force; }
+
+/** MPR time of impact (the fallback): bisection on the body against the capsule swept
+ *  over [0, t], a convex shape that grows with t, so the test is monotone. */
+static bool ccd_sweep_mpr(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm_vec3_t d, float t_max,
+                          float tol, float *t_hit)
 {
-    if (ccd_overlap(f, seg, r, tol, hit)) return true;
     float dl = sqrtf(pv_len2(d)) * t_max;
-    if (!(dl > 1e-9f)) return false;
     ccd_t ccd;
     ccd_setup(&ccd);
     ccd_body_t b = { f, 0, false };
@@ -531,21 +540,85 @@ static bool ccd_sweep(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm
     float lo = 0.0f, hi = t_max;
     c.sweep = pv_make(0.0f, 0.0f, 0.0f);
     if (ccd_intersect(&ccd, &b, &c)) {
-        hi = 0.0f; /* touching within the tolerance and moving in */
-    } else {
-        for (int it = 0; it < 40 && (hi - lo) * dl > 2e-6f * t_max; it++) {
-            float mid = 0.5f * (lo + hi);
-            c.sweep = pv_scale(d, mid);
-            if (ccd_intersect(&ccd, &b, &c)) hi = mid; else lo = mid;
-        }
+        *t_hit = 0.0f;
+        return true;
     }
-    /* normal: from the exact closest points of the capsule's segment at the contact */
-    float tc = hi == 0.0f ? 0.0f : lo;
-    fm_vec3_t ps, p;
-    float d2 = seg_cyl_closest_world(f, pv_madd(seg[0], d, tc), pv_madd(seg[1], d, tc), &ps, &p);
-    fm_vec3_t n = d2 > 1e-12f ? pv_unit_or(pv_sub(ps, p), centre_dir(f, seg)) : centre_dir(f, seg);
-    if (hi == 0.0f && pv_dot(n, d) >= 0.0f) return false; /* touching and moving away */
-    hit->t = tc;
+    /* to 2e-5 m along the motion (the normal comes from exact closest points) */
+    for (int it = 0; it < 40 && (hi - lo) * dl > 2e-5f * t_max; it++) {
+        float mid = 0.5f * (lo + hi);
+        c.sweep = pv_scale(d, mid);
+        if (ccd_intersect(&ccd, &b, &c)) hi = mid; else lo = mid;
+    }
+    *t_hit = lo;
+    return true;
+}
+
+/** Distance of the moving capsule's segment at time t to the cylinder, normal, point. */
+static float cyl_dist_at(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t d, float t,
+                         fm_vec3_t *n, fm_vec3_t *p)
+{
+    fm_vec3_t ps;
+    float d2 = seg_cyl_closest_world(f, pv_madd(seg[0], d, t), pv_madd(seg[1], d, t), &ps, p);
+    float dist = sqrtf(d2);
+    *n = d2 > 1e-12f ? pv_scale(pv_sub(ps, *p), 1.0f / dist) : centre_dir(f, seg);
+    return dist;
+}
+
+/**
+ * First t in [t0, t_max] where the distance reaches `target`, by Newton steps on the
+ * exact distance f(t) (convex in t, derivative n . d): from the left of the root the
+ * tangent of a convex function stays below it, so every step lands at or before the root.
+ * Returns 1 (hit, t/n/p set), 0 (no hit), -1 (not converged: use the MPR fallback).
+ */
+static int cyl_newton(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t d, float target, float t0,
+                      float t_max, float *t_out, fm_vec3_t *n, fm_vec3_t *p)
+{
+    float t = t0, dl = sqrtf(pv_len2(d));
+    const float eps = 2e-7f * (1.0f + target);
+    for (int it = 0; it < 24; it++) {
+        float dist = cyl_dist_at(f, seg, d, t, n, p);
+        float gap = dist - target;
+        if (gap <= eps && gap >= -eps) { *t_out = t; return 1; }
+        float slope = -pv_dot(*n, d);
+        if (!(slope > 0.0f)) return gap > 0.0f ? 0 : -1; /* at its minimum: it only grows from here */
+        /* A rounded slope can overshoot a long step: shorten long steps a little, and a
+         * step that did land inside (gap < 0) steps back onto the left of the root. */
+        float step = gap / slope;
+        if (gap > 1e3f * eps) step *= 0.9998f;
+        if (t + step > t_max) return 0;      /* f >= its tangent > target up to t_max */
+        t += step;
+        if (t < t0) return -1;
+        if (step * dl < 1e-7f && step * dl > -1e-7f) { *t_out = t; cyl_dist_at(f, seg, d, t, n, p); return 1; }
+    }
+    return -1;
+}
+
+static bool ccd_sweep(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm_vec3_t d, float t_max,
+                      float tol, coll_prim_hit_t *hit)
+{
+    if (ccd_overlap(f, seg, r, tol, hit)) return true;
+    if (!(pv_len2(d) * t_max * t_max > 1e-18f)) return false;
+    float rin = r - tol, t = 0.0f;
+    fm_vec3_t n, p;
+    float dist = cyl_dist_at(f, seg, d, 0.0f, &n, &p);
+    if (dist > r) {
+        int res = g_force_mpr ? -1 : cyl_newton(f, seg, d, r, 0.0f, t_max, &t, &n, &p);
+        if (res == 0) return false;
+        if (res < 0) {
+            if (!ccd_sweep_mpr(f, seg, r, d, t_max, tol, &t)) return false;
+            cyl_dist_at(f, seg, d, t, &n, &p);
+        }
+        dist = r;
+    }
+    /* the motion must take the capsule deeper than the tolerance */
+    if (!prim_goes_deeper(dist, n, d, rin, t_max - t)) {
+        float t2;
+        fm_vec3_t n2, p2;
+        int res = g_force_mpr ? -1 : cyl_newton(f, seg, d, rin, t, t_max, &t2, &n2, &p2);
+        if (res == 0) return false;
+        if (res < 0 && !ccd_sweep_mpr(f, seg, r, d, t_max, tol, &t2)) return false;
+    }
+    hit->t = t;
     hit->depth = 0.0f;
     hit->normal = n;
     hit->point = p;

@@ -419,27 +419,31 @@ bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, c
         return false;
     }
 
-    /* Count the contact only when the motion goes deeper than the touch tolerance. */
-    fm_vec3_t off = pv_scale(c.d, t_max);
-    if (confirm) {
-        float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
-        if (!(d2e < rin * rin)) {
-            feat_hit_t conf;
-            if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
-        }
-    }
     hit->t = best.t;
     hit->depth = 0.0f;
     hit->normal = best.n;
     hit->point = best.p;
+    float hd = sqrtf(d2);
     if (best.t > 0.0f) {
         /* The pieces meet tangentially, so which one won is decided by rounding near a
          * junction; the closest points at the contact time give the normal smoothly. */
-        off = pv_scale(c.d, best.t);
-        d2 = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
-        if (d2 > 0.25f * r * r) {
+        fm_vec3_t off = pv_scale(c.d, best.t);
+        float d2h = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        hd = r;
+        if (d2h > 0.25f * r * r) {
             hit->normal = pv_unit_or(pv_sub(ps, pt), best.n);
             hit->point = pt;
+            hd = sqrtf(d2h);
+        }
+    }
+    /* Count the contact only when the motion goes deeper than the touch tolerance: first
+     * the cheap sufficient test from the contact, then the exact one. */
+    if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
+        fm_vec3_t off = pv_scale(c.d, t_max);
+        float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        if (!(d2e < rin * rin)) {
+            feat_hit_t conf;
+            if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
     }
     return true;

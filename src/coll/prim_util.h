@@ -43,6 +43,23 @@ static inline fm_vec3_t pv_unit_or(fm_vec3_t a, fm_vec3_t fallback)
     return pv_scale(a, 1.0f / sqrtf(l2));
 }
 
+/**
+ * Sufficient (cheap) test that a contact goes deeper than the tolerance: the query's
+ * closest point q sits at distance `dist` from the collider's point p along unit n
+ * (q - p = dist * n); moving on by s*d, s in [0, s_left], brings q closer than rin to p
+ * (so closer than rin to the collider). False means "not proven", not "no".
+ */
+static inline bool prim_goes_deeper(float dist, fm_vec3_t n, fm_vec3_t d, float rin, float s_left)
+{
+    float A = pv_dot(d, d), B = -dist * pv_dot(n, d), C = dist * dist - rin * rin;
+    if (!(A > 0.0f) || !(B > 0.0f) || !(s_left > 0.0f)) return false;
+    if (C <= 0.0f) return true;
+    float disc = B * B - A * C;
+    if (!(disc > 0.01f * B * B)) return false;   /* near-tangent: leave it to the exact test */
+    float s = C / (B + sqrtf(disc));
+    return s * 1.01f < s_left;
+}
+
 /** Result of one elementary ray test: parameter, unit outward normal of the primitive. */
 typedef struct {
     float s;
