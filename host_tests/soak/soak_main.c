@@ -118,6 +118,8 @@ static void add_stats(soak_stats_t *a, const soak_stats_t *b)
     a->soft_pen_frames += b->soft_pen_frames;
     a->stuck_events += b->stuck_events;
     a->excused_escapes += b->excused_escapes;
+    a->body_pen_frames += b->body_pen_frames;
+    if (b->max_body_pen > a->max_body_pen) a->max_body_pen = b->max_body_pen;
     a->on_floor_frames += b->on_floor_frames;
     a->steep_frames += b->steep_frames;
     if (b->max_soft_pen > a->max_soft_pen) a->max_soft_pen = b->max_soft_pen;
@@ -141,6 +143,8 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
            st->frames ? 100.0 * (double)st->steep_frames / (double)st->frames : 0.0);
     if (secs > 0) printf(", %.0f frames/s", (double)st->frames / secs);
     printf("\n");
+    printf("%s: reported only: frames with the sweep capsule > 1 cm inside a static collider body: %llu (max %.1f mm)\n",
+           what, (unsigned long long)st->body_pen_frames, st->max_body_pen * 1000.0);
 }
 
 static int replay_one(const char *path, bool bless, bool verbose)

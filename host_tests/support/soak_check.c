@@ -256,6 +256,20 @@ static double body_dist(const soak_lbody_t *lb, const soak_capsule_t *cap)
     return 1e300;
 }
 
+double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
+{
+    double best = 0;
+    if (!(s->coll_types & COLL_TYPE_BODY)) return 0;
+    for (uint32_t i = 0; i < lvl->nbodies; i++) {
+        const soak_lbody_t *lb = &lvl->bodies[i];
+        if (lb->moving || lb->body.shape == COLL_SHAPE_CYLINDER || !(lb->body.write_mask & s->read_mask)) continue;
+        double d = body_dist(lb, cap);
+        if (d < 0) d = 0;
+        if (cap->r - d > best) best = cap->r - d;
+    }
+    return best;
+}
+
 double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
 {
     double best = 1e300; /* segment distance */

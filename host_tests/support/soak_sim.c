@@ -293,6 +293,14 @@ int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
         sim->excused_frames = 0;
     }
 
+    if (!sim->excused) {
+        double bp = soak_check_body_pen(sim->lvl, s, &sweep);
+        if (bp > 0.01) {
+            sim->st.body_pen_frames++;
+            if (bp > sim->st.max_body_pen) sim->st.max_body_pen = bp;
+        }
+    }
+
     /* A skipped step (dt <= 0 or not finite) leaves the floor state of the last step. */
     if (!stepped) return SOAK_FAIL_NONE;
     bool on = char_body_is_on_floor(b), steep = char_body_is_on_steep_surface(b);

@@ -158,6 +158,9 @@ void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule
  *  tri_out: index in lvl->wtris; raw_out: the raw depth of that triangle. */
 double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
                              const soak_capsule_t *cap, int32_t *tri_out, double *raw_out);
+/** Deepest penetration of cap into a seen static collider body (sphere, capsule, box; exact
+ *  in double; cylinders are skipped); 0 when none. Reported, not a failure. */
+double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap);
 /** Smallest distance from the capsule surface to any seen geometry (static, moving, bodies). */
 double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s,
                           const soak_capsule_t *cap);
@@ -184,6 +187,8 @@ typedef struct {
     uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
     uint64_t excused_escapes;     ///< left the room while recovering from an excused overlap
     uint64_t on_floor_frames, steep_frames;
+    uint64_t body_pen_frames;     ///< sweep capsule > 1 cm into a static collider body (reported)
+    double max_body_pen;
     double max_soft_pen, max_hard_pen;
 } soak_stats_t;
 
