@@ -21,6 +21,7 @@
 #include "bench_methods.h"
 #include "bench_scn.h"
 #include "coll/mesh.h"
+#include "coll/mesh_format.h"   /* the effective grid cell (builders may coarsen a request) */
 
 /* Callgrind runs with --instr-atstart=no: instrumentation starts just before the measured
  * part, so building a 1M-triangle level is not simulated at callgrind's full cost. */
@@ -87,6 +88,8 @@ static void geo_of_mesh(bench_geo_t *g, const coll_mesh_t *m)
     }
 }
 
+static bool g_need_geo = true;   /* the reference needs the triangles; cost runs do not */
+
 static void add_part(world_t *w, const coll_mesh_t *m, fm_vec3_t pos, uint16_t id)
 {
     int k = w->nparts++;
@@ -97,7 +100,7 @@ static void add_part(world_t *w, const coll_mesh_t *m, fm_vec3_t pos, uint16_t i
     w->inst[k].write_mask = 0x01;
     w->inst[k].id = id;
     if (coll_scene_add_mesh(&w->scene, &w->inst[k]) != COLL_OK) { fprintf(stderr, "scene add failed\n"); exit(2); }
-    geo_of_mesh(&w->geo[k], m);
+    if (g_need_geo) geo_of_mesh(&w->geo[k], m);
     w->part[k].geo = &w->geo[k];
     w->part[k].xf = &w->inst[k].xf;
 }
@@ -142,6 +145,7 @@ static const coll_mesh_t *procedural_turntable(void)
 }
 
 static float g_cell = 0.0f;   /* > 0: rebuild the level with this grid cell (cost runs) */
+static float g_cell_eff = 0.0f; /* the level's grid cell as built */
 
 static const coll_mesh_t *rebuild(const coll_mesh_t *m, float cell)
 {
@@ -168,6 +172,7 @@ static void world_init(world_t *w, const char *assets, bool platform)
     if (!w->real) m = procedural_course();
     if (g_cell > 0.0f) m = rebuild(m, g_cell);
     add_part(w, m, V(0, 0, 0), 1);
+    g_cell_eff = m->cell_size;
     if (platform) {
         const coll_mesh_t *p = NULL;
         snprintf(path, sizeof(path), "%s/platform_rotate.coll", assets ? assets : "build/assets");
@@ -230,7 +235,7 @@ static run_out_t run_scenario(const char *scn, const char *assets, bool measure_
             double a = i * 2.39996;   /* golden angle: a spread of directions */
             bodies[i].input_velocity = V(4 * cos(a), 0, 4 * sin(a));
         }
-        for (int f = 0; f < 3; f++)   /* settle onto the floor first (not measured) */
+        for (int f = 0; f < 1; f++)   /* settle onto the floor first (not measured) */
             for (int i = 0; i < nb; i++) char_body_move_and_slide_in(&bodies[i], &w.scene, DT);
     } else if (strcmp(scn, "empty") == 0) {
         BENCH_CG_START();
@@ -403,10 +408,10 @@ static int cmd_scaling(uint32_t ntris, float cell)
         rayhits += bench_ray(&sc, o, d, 20.0f, &h);
         rays++;
     }
-    printf("ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows\n");
-    printf("%u,%g,%d,%d,%d,%zu,%zu,%.2f,%.2f,%u\n", coll_mesh_triangle_count(mf), cell, moves, rays, rayhits,
+    printf("ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,cell_eff\n");
+    printf("%u,%g,%d,%d,%d,%zu,%zu,%.2f,%.2f,%u,%.4g\n", coll_mesh_triangle_count(mf), cell, moves, rays, rayhits,
            coll_mesh_size(mf), coll_mesh_size(mq), (double)coll_mesh_size(mf) / coll_mesh_triangle_count(mf),
-           (double)coll_mesh_size(mq) / coll_mesh_triangle_count(mq), sc.overflow_count);
+           (double)coll_mesh_size(mq) / coll_mesh_triangle_count(mq), sc.overflow_count, mf->cell_size);
     return 0;
 }
 
@@ -416,8 +421,9 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "cost") == 0 && argc >= 4) {
         if (!bench_method_install(argv[2])) { fprintf(stderr, "unknown method %s\n", argv[2]); return 2; }
         if (argc > 5) g_cell = strtof(argv[5], NULL);
+        g_need_geo = false;
         run_out_t o = run_scenario(argv[3], argc > 4 ? argv[4] : NULL, false);
-        printf("calls=%d final=%.6f,%.6f,%.6f\n", o.calls, o.final.x, o.final.y, o.final.z);
+        printf("calls=%d final=%.6f,%.6f,%.6f cell=%.4g\n", o.calls, o.final.x, o.final.y, o.final.z, g_cell_eff);
         return 0;
     }
     if (strcmp(argv[1], "accuracy") == 0 && argc >= 3) return cmd_accuracy(argv[2], argc > 3 ? argv[3] : NULL);

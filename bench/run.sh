@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Runs every benchmark and writes CSVs, charts and markdown tables to OUT.
-#   bench/run.sh OUT ASSET_DIR QEMU NM
+#   bench/run.sh OUT ASSET_DIR QEMU NM [COLLBAKE]
 # OUT/bin holds bench_run (host), bench_run_mips (VR4300 library code, static) and mipscount.
 # Instruction counts only (callgrind on the host, qemu's exec trace for MIPS), no timing.
 # Two jobs at a time (the machine has 2 cores).
 set -euo pipefail
-out=$1; assets=$2; qemu=${3:-qemu-mips-static}; nm=${4:-mips-linux-gnu-nm}
+out=$1; assets=$2; qemu=${3:-qemu-mips-static}; nm=${4:-mips-linux-gnu-nm}; collbake=${5:-}
 top=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mkdir -p "$out" && cd "$out" && pwd)
 assets=$(cd "$assets" 2>/dev/null && pwd || echo "$assets")
@@ -33,6 +33,32 @@ callgrind() {
 }
 
 safe() { echo "$1" | tr ':/' '__'; }
+
+# The sample level baked again with a 1 m grid cell (the bake tool's automatic cell is far
+# coarser): C1 is "DIR CELL" for the cost runs, the rebuilt-in-process fallback otherwise.
+a1=$out/assets_c1
+mkdir -p "$a1"
+C1="$assets 1"
+if [ -n "$collbake" ] && [ -x "$collbake" ] && [ -f "$top/assets/levels/test_course.gltf" ]; then
+    "$collbake" --only '*_coll' --cell-size 1 "$top/assets/levels/test_course.gltf" -o "$a1/test_course.coll" \
+        --report "$a1/test_course.report" > /dev/null
+    "$collbake" --only '*_coll' --cell-size 1 --quantize "$top/assets/levels/test_course.gltf" \
+        -o "$a1/test_course.q.coll" --report "$a1/test_course.q.report" > /dev/null
+    cp "$assets/platform_rotate.coll" "$a1/" 2>/dev/null || true
+    C1="$a1 0"
+fi
+
+# ---------------------------------------------------------------- console (qemu)
+begin=$($nm "$bin/bench_run_mips" | awk '$3=="bench_mark_begin"{print $1}')
+end=$($nm "$bin/bench_run_mips" | awk '$3=="bench_mark_end"{print $1}')
+mips_one() {   # scenario cell-label asset-dir cell
+    local s=$1 c=$2 name="mips_${1}_$2"
+    $qemu -singlestep -d nochain,exec -D /dev/stdout "$bin/bench_run_mips" cost exact "$s" "$3" "$4" 2>"$out/logs/$name.err" |
+        "$bin/mipscount" "$begin" "$end" > "$out/logs/$name.counts" 2>>"$out/logs/$name.err"
+}
+echo "bench: console instruction counts under qemu (slow: every instruction is logged; started first)"
+job mips_one empty 0 "$assets" 0
+for s in crowd32 platform vcorner stairs walk; do job mips_one $s 0 "$assets" 0; job mips_one $s 1 $C1; done
 
 # ---------------------------------------------------------------- accuracy
 METHODS="exact disc:1 disc:2 disc:4 disc:8 disc:16 disc:32 \
@@ -79,32 +105,23 @@ cell_one() {
     callgrind "$name" cost exact walk "$assets" "$c"
     local ir calls; ir=$(cg_incl "$out/cg/$name.out" bench_step)
     calls=$(sed -n 's/^calls=\([0-9]*\).*/\1/p' "$out/logs/$name.txt")
-    echo "$c,$((ir / calls))" > "$out/rows/cellwalk_$c.csv"
+    local eff; eff=$(sed -n 's/.* cell=\([0-9.e+-]*\).*/\1/p' "$out/logs/$name.txt")
+    echo "$c,$((ir / calls)),$eff" > "$out/rows/cellwalk_$c.csv"
 }
 for c in 0 0.5 1 2 4 8; do job cell_one $c; done
 
 # host cost per scenario on the sample level (baked as is, and with a 1 m grid)
-host_one() {
+host_one() {   # scenario cell-label asset-dir cell
     local s=$1 c=$2 name="host_${1}_$2"
-    callgrind "$name" cost exact "$s" "$assets" "$c"
+    callgrind "$name" cost exact "$s" "$3" "$4"
     local fn=bench_step; [ "$s" = crowd32 ] && fn=bench_frame
     local ir calls; ir=$(cg_incl "$out/cg/$name.out" $fn)
     calls=$(sed -n 's/^calls=\([0-9]*\).*/\1/p' "$out/logs/$name.txt")
-    echo "$s,$c,$((ir / calls))" > "$out/rows/host_${s}_$c.csv"
+    local eff; eff=$(sed -n 's/.* cell=\([0-9.e+-]*\).*/\1/p' "$out/logs/$name.txt")
+    echo "$s,$c,$((ir / calls)),$eff" > "$out/rows/host_${s}_$c.csv"
 }
-for s in walk stairs vcorner platform crowd32; do for c in 0 1; do job host_one $s $c; done; done
+for s in walk stairs vcorner platform crowd32; do job host_one $s 0 "$assets" 0; job host_one $s 1 $C1; done
 
-# ---------------------------------------------------------------- console (qemu)
-begin=$($nm "$bin/bench_run_mips" | awk '$3=="bench_mark_begin"{print $1}')
-end=$($nm "$bin/bench_run_mips" | awk '$3=="bench_mark_end"{print $1}')
-mips_one() {   # scenario cell
-    local s=$1 c=$2 name="mips_${1}_$2"
-    $qemu -singlestep -d nochain,exec -D /dev/stdout "$bin/bench_run_mips" cost exact "$s" "$assets" "$c" 2>"$out/logs/$name.err" |
-        "$bin/mipscount" "$begin" "$end" > "$out/logs/$name.counts" 2>>"$out/logs/$name.err"
-}
-echo "bench: console instruction counts under qemu (slow: every instruction is logged)"
-job mips_one empty 0
-for s in walk stairs vcorner platform crowd32; do for c in 0 1; do job mips_one $s $c; done; done
 wait
 
 # ---------------------------------------------------------------- assemble
@@ -112,30 +129,36 @@ echo "method,family,param,instr_per_move,max_pen_m,toi_err_max_m,toi_err_mean_m,
     > "$out/accuracy.csv"
 for m in $METHODS; do cat "$out/rows/acc_$(safe "$m").csv"; done >> "$out/accuracy.csv"
 
-echo "ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,instr_per_move,instr_per_ray" \
+echo "ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,cell_eff,instr_per_move,instr_per_ray" \
     > "$out/scaling.csv"
 for n in 1000 10000 100000 1000000; do cat "$out/rows/scale_${n}_0.csv"; done >> "$out/scaling.csv"
-echo "ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,instr_per_move,instr_per_ray" \
+echo "ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,cell_eff,instr_per_move,instr_per_ray" \
     > "$out/scaling_cell.csv"
 for c in 0.5 1 2 4 8 16; do cat "$out/rows/scale_100000_$c.csv"; done >> "$out/scaling_cell.csv"
-echo "cell,instr_per_move" > "$out/cellwalk.csv"
+echo "cell,instr_per_move,cell_eff" > "$out/cellwalk.csv"
 for c in 0.5 1 2 4 8; do cat "$out/rows/cellwalk_$c.csv"; done >> "$out/cellwalk.csv"
 cat "$out/rows/cellwalk_0.csv" > "$out/cellwalk_auto.csv"
 
 overhead=$(sort -n "$out/logs/mips_empty_0.counts" | head -n 1)
-echo "scenario,cell,host_instr_per_move,mips_windows,mips_mean,mips_max" > "$out/console.csv"
+echo "scenario,cell,host_instr_per_move,mips_windows,mips_mean,mips_max,cell_eff" > "$out/console.csv"
 for s in walk stairs vcorner platform crowd32; do
     for c in 0 1; do
         h=$(cut -d, -f3 "$out/rows/host_${s}_$c.csv")
-        awk -v o="$overhead" -v s="$s" -v c="$c" -v h="$h" \
-            '{ v = $1 - o; n++; sum += v; if (v > mx) mx = v } END { printf "%s,%s,%s,%d,%.0f,%d\n", s, c, h, n, sum / n, mx }' \
+        e=$(cut -d, -f4 "$out/rows/host_${s}_$c.csv")
+        awk -v o="$overhead" -v s="$s" -v c="$c" -v h="$h" -v e="$e" \
+            '{ v = $1 - o; n++; sum += v; if (v > mx) mx = v } END { printf "%s,%s,%s,%d,%.0f,%d,%s\n", s, c, h, n, sum / n, mx, e }' \
             "$out/logs/mips_${s}_$c.counts" >> "$out/console.csv"
     done
 done
 "$bin/bench_run" sizes > "$out/sizes.csv"
+$qemu "$bin/bench_run_mips" sizes > "$out/sizes_mips.csv"
 cp "$assets/test_course.report" "$out/test_course.report" 2>/dev/null || true
+cp "$assets/test_course.q.report" "$out/test_course.q.report" 2>/dev/null || true
+cp "$a1/test_course.report" "$out/test_course_c1.report" 2>/dev/null || true
+cp "$a1/test_course.q.report" "$out/test_course_c1.q.report" 2>/dev/null || true
 
 # ---------------------------------------------------------------- charts and tables
 (cd "$out" && gnuplot "$top/bench/charts.gp")
 python3 "$top/bench/tables.py" "$out" > "$out/tables.md"
+[ "${BENCH_UPDATE_DOCS:-1}" = 1 ] && python3 "$top/bench/update_docs.py" "$out" "$top"
 echo "bench: results in $out (accuracy.csv, stability.csv, scaling*.csv, console.csv, *.png, tables.md)"

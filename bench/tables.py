@@ -56,20 +56,41 @@ P("")
 
 # ---- scaling and memory
 P("### Scaling (procedural terrain + boxes; x86 instructions per call, callgrind)\n")
-P("| triangles | cell (m) | instr / move_and_slide | instr / raycast | blob bytes/tri (float) | blob bytes/tri (16-bit quantized) | grid overflows |")
-P("|---:|---:|---:|---:|---:|---:|---:|")
+P("| triangles | cell asked (m) | cell as built (m) | instr / move_and_slide | instr / raycast | blob bytes/tri (float) | blob bytes/tri (16-bit quantized) | grid overflows |")
+P("|---:|---:|---:|---:|---:|---:|---:|---:|")
 for r in rows("scaling.csv") + rows("scaling_cell.csv"):
     c = "auto" if float(r["cell"]) == 0 else r["cell"]
-    P(f"| {int(r['ntris']):,} | {c} | {int(r['instr_per_move']):,} | {int(r['instr_per_ray']):,} | "
+    P(f"| {int(r['ntris']):,} | {c} | {float(r['cell_eff']):.3g} | {int(r['instr_per_move']):,} | {int(r['instr_per_ray']):,} | "
       f"{r['bytes_per_tri_float']} | {r['bytes_per_tri_quant']} | {r['overflows']} |")
 P("")
 cw = rows("cellwalk.csv")
 auto = open(os.path.join(d, "cellwalk_auto.csv")).read().strip().split(",")
 P("Walking on the sample level (test_course, 2102 triangles) against its grid cell: "
-  + ", ".join(f"{r['cell']} m: {int(r['instr_per_move']):,}" for r in cw)
-  + f"; as baked (automatic cell): {int(auto[1]):,} instructions per move_and_slide.\n")
+  + ", ".join(f"{r['cell']} m asked ({float(r['cell_eff']):.3g} m built): {int(r['instr_per_move']):,}" for r in cw)
+  + f"; as baked (automatic, {float(auto[2]):.3g} m): {int(auto[1]):,} instructions per move_and_slide.\n")
+def report(name):
+    f = os.path.join(d, name)
+    if not os.path.exists(f): return None
+    kv = {}
+    for line in open(f):
+        parts = line.split(None, 1)
+        if len(parts) == 2: kv[parts[0]] = parts[1].strip()
+    return kv
+mem = []
+for name, label in (("test_course.report", "as baked, float"), ("test_course.q.report", "as baked, 16-bit quantized"),
+                    ("test_course_c1.report", "cell 1 m asked, float"), ("test_course_c1.q.report", "cell 1 m asked, quantized")):
+    kv = report(name)
+    if kv and "bytes" in kv and "triangles" in kv:
+        b, t = int(kv["bytes"]), int(kv["triangles"])
+        mem.append(f"{label}: {b:,} B = {b / t:.1f} B/triangle (cell {float(kv.get('cell_size', 0)):.3g} m"
+                   + (f", quantization error {float(kv['quant_error']):.2g} m" if kv.get("quantized") == "1" else "") + ")")
+if mem:
+    P("Sample level blob (test_course, 2102 triangles): " + "; ".join(mem) + ".\n")
 sz = rows("sizes.csv")
 P("Struct sizes (host, 64-bit pointers): " + ", ".join(f"`{r['struct']}` {r['bytes']} B" for r in sz) + ".\n")
+if os.path.exists(os.path.join(d, "sizes_mips.csv")):
+    P("Struct sizes (console side, MIPS o32, 4-byte pointers): "
+      + ", ".join(f"`{r['struct']}` {r['bytes']} B" for r in rows("sizes_mips.csv")) + ".\n")
 
 # ---- console
 P("### Console cost (big-endian MIPS, VR4300 code generation, counted under qemu)\n")
@@ -77,7 +98,7 @@ P("Share of a 30 fps frame at 93.75 MHz (3.125 M cycles) assuming 1.5 and 2.0 cy
 P("| scenario | grid cell | x86 instr / call | MIPS instr / call (mean) | MIPS max | frame share @ CPI 1.5 | @ CPI 2 |")
 P("|---|---|---:|---:|---:|---:|---:|")
 for r in rows("console.csv"):
-    c = "as baked" if float(r["cell"]) == 0 else f"{r['cell']} m"
+    c = ("as baked, " if float(r["cell"]) == 0 else "rebaked, ") + f"{float(r['cell_eff']):.3g} m"
     mean, mx = float(r["mips_mean"]), float(r["mips_max"])
     label = r["scenario"]
     if r["scenario"] == "crowd32":

@@ -51,5 +51,5 @@ BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/platform_rot
 
 .PHONY: bench bench-bin
 bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
-bench: bench-bin $(BENCH_ASSETS)
-	bash bench/run.sh $(BENCH_OUT) $(ASSET_DIR) $(qemu_RUN) $(n64_NM)
+bench: bench-bin $(BENCH_ASSETS) $(COLLBAKE)
+	bash bench/run.sh $(BENCH_OUT) $(ASSET_DIR) $(qemu_RUN) $(n64_NM) $(COLLBAKE)
