@@ -101,11 +101,10 @@ static fm_vec3_t to_local_dir(const xf3_t *x, const fm_vec3_t *d)
  * query origin (*w0) plus a shape whose first vertex is the origin. The edges are
  * transformed from exact local differences, so the triangle's shape (and normal) stays
  * exact even when it is far from the query; only its placement carries rounding. */
-static void tri_rel(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_local, uint32_t i,
-                    fm_vec3_t *w0, fm_vec3_t out[3])
+static void tri_rel_of(const fm_vec3_t v[3], const xf3_t *x, const fm_vec3_t *o_local, fm_vec3_t *w0,
+                       fm_vec3_t out[3])
 {
-    fm_vec3_t v[3], d;
-    coll_mesh_tri_local(m, i, v);
+    fm_vec3_t d;
     fm_vec3_sub(&d, &v[0], o_local);
     *w0 = x->simple ? d : mul3(x->m, &d);
     out[0].x = out[0].y = out[0].z = 0.0f;
@@ -113,6 +112,14 @@ static void tri_rel(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_loc
         fm_vec3_sub(&d, &v[k], &v[0]);
         out[k] = x->simple ? d : mul3(x->m, &d);
     }
+}
+
+static void tri_rel(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_local, uint32_t i,
+                    fm_vec3_t *w0, fm_vec3_t out[3])
+{
+    fm_vec3_t v[3];
+    coll_mesh_tri_local(m, i, v);
+    tri_rel_of(v, x, o_local, w0, out);
 }
 
 /* Query-relative copy of a triangle given as w0 + shape. */
@@ -431,9 +438,9 @@ static bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, const fm
     return false;
 }
 
-/* Cell range of a world-relative box in an instance's grid; false when it misses. */
-static bool instance_cells(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const fm_vec3_t *lo,
-                           const fm_vec3_t *hi, uint32_t clo[3], uint32_t chi[3])
+/* Conservative mesh-local box of a world-relative box (plus the grid margin). */
+static void local_box(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const fm_vec3_t *lo,
+                      const fm_vec3_t *hi, fm_vec3_t *llo, fm_vec3_t *lhi)
 {
     fm_vec3_t c, h;
     for (int a = 0; a < 3; a++) {
@@ -442,15 +449,38 @@ static bool instance_cells(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t
     }
     fm_vec3_t cl = x->simple ? c : mul3(x->inv, &c);
     fm_vec3_t hl = x->simple ? h : mul3_abs(x->inv, &h);
-    float mg = mesh_margin(m), inv_cs = 1.0f / m->cell_size;
+    float mg = mesh_margin(m);
     for (int a = 0; a < 3; a++) {
-        float l = o_l->v[a] + cl.v[a] - hl.v[a] - mg;
-        float u = o_l->v[a] + cl.v[a] + hl.v[a] + mg;
-        if (u < m->bmin[a] || l > m->bmax[a]) return false;
-        clo[a] = cell_of(l, m->grid_origin[a], inv_cs, m->dims[a]);
-        chi[a] = cell_of(u, m->grid_origin[a], inv_cs, m->dims[a]);
+        llo->v[a] = o_l->v[a] + cl.v[a] - hl.v[a] - mg;
+        lhi->v[a] = o_l->v[a] + cl.v[a] + hl.v[a] + mg;
+    }
+}
+
+/* Cell range of a mesh-local box in an instance's grid; false when it misses the mesh. */
+static bool instance_cells(const coll_mesh_t *m, const fm_vec3_t *llo, const fm_vec3_t *lhi, uint32_t clo[3],
+                           uint32_t chi[3])
+{
+    float inv_cs = 1.0f / m->cell_size;
+    for (int a = 0; a < 3; a++) {
+        if (lhi->v[a] < m->bmin[a] || llo->v[a] > m->bmax[a]) return false;
+        clo[a] = cell_of(llo->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
+        chi[a] = cell_of(lhi->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
     }
     return true;
+}
+
+/* Cell (cx,cy,cz) (clamped edge cells extend to infinity) misses the local box. */
+static bool cell_misses(const coll_mesh_t *m, uint32_t cx, uint32_t cy, uint32_t cz, const fm_vec3_t *llo,
+                        const fm_vec3_t *lhi)
+{
+    const uint32_t c[3] = { cx, cy, cz };
+    for (int a = 0; a < 3; a++) {
+        float lo = m->grid_origin[a] + (float)c[a] * m->cell_size;
+        float hi = lo + m->cell_size;
+        if (c[a] > 0u && lhi->v[a] < lo) return true;
+        if (c[a] + 1u < m->dims[a] && llo->v[a] > hi) return true;
+    }
+    return false;
 }
 
 typedef struct {
@@ -476,20 +506,25 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
     fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, center);
-    fm_vec3_t lo, hi;
+    fm_vec3_t lo, hi, llo, lhi;
     swept_box(q, sb->best_t, &lo, &hi);
+    local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
-    if (!instance_cells(m, &x, &o_l, &lo, &hi, clo, chi)) return;
+    if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
     const uint32_t *cells = coll_mesh_cells(m);
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
+                /* the sweep may have shrunk since the range was computed */
+                if (sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
                 uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_ref(m, k);
                     if (!seen_first(seen, t)) continue;
-                    fm_vec3_t shape[3], w0, tri[3], seg[2];
-                    tri_rel(m, &x, &o_l, t, &w0, shape);
+                    fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
+                    coll_mesh_tri_local(m, t, v);
+                    if (tri_box_reject(v, &llo, &lhi)) continue; /* cheap local reject first */
+                    tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
                     fm_vec3_sub(&seg[0], &q->seg[0], &w0);
@@ -505,6 +540,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
                         sb->body = NULL;
                         sb->tri = (int32_t)t;
                         swept_box(q, sb->best_t, &lo, &hi); /* shrink the sweep */
+                        local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
                     }
                 }
             }
@@ -631,10 +667,11 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
     fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &c->center);
-    fm_vec3_t lo, hi;
+    fm_vec3_t lo, hi, llo, lhi;
     swept_box(q, 0.0f, &lo, &hi);
+    local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
-    if (!instance_cells(m, &x, &o_l, &lo, &hi, clo, chi)) return;
+    if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
     const uint32_t *cells = coll_mesh_cells(m);
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
@@ -645,8 +682,10 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
                     int sc = seen_check(seen, t);
                     if (sc == SEEN_BEFORE) continue;
                     if (sc == SEEN_UNKNOWN && listed_earlier(m, clo, chi, cx, cy, cz, t)) continue;
-                    fm_vec3_t shape[3], w0, tri[3], seg[2];
-                    tri_rel(m, &x, &o_l, t, &w0, shape);
+                    fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
+                    coll_mesh_tri_local(m, t, v);
+                    if (tri_box_reject(v, &llo, &lhi)) continue;
+                    tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
                     fm_vec3_sub(&seg[0], &q->seg[0], &w0);
