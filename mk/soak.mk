@@ -3,6 +3,7 @@
 #   make soak [FRAMES=N] [SEED=S]     random levels + play, every frame checked (native)
 #   make soak-replay REPLAY=path      reproduce one replay file (native)
 #   make soak-replay-qemu REPLAY=path the same on big-endian MIPS under qemu
+#   make soak-asan [FRAMES=N] [SEED=S] the soak under ASan + UBSan
 #   make soak-ci                      CI share: 100k frames native + 10k frames under qemu
 #
 # Failure replays go to $(BUILD)/soak-failures/; move them to host_tests/replays/open/
@@ -31,10 +32,14 @@ $(BUILD)/$(1)/soak/soak: $(BUILD)/$(1)/obj/host_tests/soak/soak_main.o $(patsubs
 	@mkdir -p $$(@D)
 	$$($(1)_CC) $$($(1)_CFLAGS) $$(filter %.o,$$^) -L$(BUILD)/$(1) -lcoll -lccd $$($(1)_LDFLAGS) -o $$@
 endef
-$(foreach v,host qemu,$(eval $(call soak_prog_rules,$(v))))
+$(foreach v,host qemu asan,$(eval $(call soak_prog_rules,$(v))))
 
-.PHONY: soak soak-replay soak-replay-qemu soak-ci
+.PHONY: soak soak-asan soak-replay soak-replay-qemu soak-ci
 soak: $(BUILD)/host/soak/soak
+	$< --frames $(or $(FRAMES),100000) --seed $(or $(SEED),1) --out $(SOAK_OUT) --known host_tests/replays/open
+
+# The same under ASan + UBSan (about 5x slower): memory errors and UB abort the run.
+soak-asan: $(BUILD)/asan/soak/soak
 	$< --frames $(or $(FRAMES),100000) --seed $(or $(SEED),1) --out $(SOAK_OUT) --known host_tests/replays/open
 
 soak-replay: $(BUILD)/host/soak/soak
