@@ -927,6 +927,31 @@ static void test_dedup_overflow_falls_back_exactly(void)
     for (uint32_t i = 0; i < n; i++)
         for (uint32_t j = i + 1; j < n; j++) TEST_ASSERT_FALSE(out[i].triangle == out[j].triangle);
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.25f, out[0].depth);
+
+    /* A ray skimming a dense floor (50 triangles per cell) visits far more triangles than
+     * the table holds; it still returns the nearest hit. */
+    nt = core_grid_level(g_verts, &nv, g_idx, 60, 60, 0.02f, -0.6f, 0, -0.6f);
+    for (uint32_t i = 0; i < nv; i++) g_verts[3 * i + 1] = 0;
+    g_verts[1] = 0.3f; /* a raised far corner gives the bounds height, so the ray is inside them */
+    m = build_mesh(1, nv, nt, &o);
+    a.mesh = m;
+    before = s.overflow_count;
+    fm_vec3_t ro = {{ -0.59f, 0.002f, 0.013f }}, rd = {{ 1, -0.0017f, 0 }};
+    fm_vec3_norm(&rd, &rd);
+    coll_ray_hit_t rh;
+    TEST_ASSERT_TRUE(coll_raycast(&s, ro, rd, 10, 0xFF, COLL_TYPE_ALL, &rh));
+    TEST_ASSERT_TRUE(s.overflow_count > before);
+    double best = 1e300;
+    for (uint32_t t = 0; t < nt; t++) {
+        fm_vec3_t v[3];
+        core_d3 w[3], nn;
+        double sr, mb;
+        coll_mesh_triangle(m, t, v);
+        for (int k = 0; k < 3; k++) w[k] = core_d3_of(v[k]);
+        if (core_ray_tri(core_d3_of(ro), core_d3_of(rd), w, 10, 0.0, &sr, &mb, &nn)) best = fmin(best, sr);
+    }
+    TEST_ASSERT_TRUE(best < 10);
+    TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)best, rh.distance);
 }
 
 /* A level 5 km from the origin: hits accurate to well under 1 mm. */
