@@ -360,6 +360,15 @@ static void test_cylinder_body(void)
     TEST_ASSERT_TRUE(coll_capsule_body_sweep(in, 0.5f, &d, &b, &pos, 1.0f, &h));
     TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
     TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.2f, h.depth);
+    /* segment inside the cylinder: libccd MPR push-out along the centre line, which here
+     * is the exact minimum translation (sideways, R - 0.3 + r) */
+    fm_vec3_t deep[2] = { V(0.3f, -0.2f, 0), V(0.3f, 0.2f, 0) };
+    ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_capsule_body_overlap(deep, 0.1f, &b, &pos, &h)));
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.8f, h.depth);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 1.0f, h.normal.x);
+    ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_capsule_body_sweep(deep, 0.1f, &d, &b, &pos, 1.0f, &h)));
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-3f, 0.8f, h.depth);
     /* rays: side, cap, inside */
     fm_vec3_t o = V(5, 0.5f, 0), rd = V(-1, 0, 0);
     TEST_ASSERT_TRUE(coll_ray_body(&o, &rd, &b, &pos, 10.0f, &h));
@@ -456,6 +465,59 @@ static void test_body_functions_do_not_allocate(void)
     coll_set_body_sweep_mpr(true);
     ASSERT_NO_ALLOC(TEST_ASSERT_TRUE(coll_capsule_body_sweep(seg, 0.4f, &d, &bodies[3], &pos, 1.0f, &h)));
     coll_set_body_sweep_mpr(false);
+}
+
+static bool hit_sane(const coll_prim_hit_t *h, float t_max)
+{
+    float nl = sqrtf(h->normal.x * h->normal.x + h->normal.y * h->normal.y + h->normal.z * h->normal.z);
+    return isfinite(h->t) && h->t >= 0.0f && h->t <= t_max && isfinite(h->depth) && h->depth >= 0.0f &&
+           fabsf(nl - 1.0f) < 1e-3f && isfinite(h->point.x) && isfinite(h->point.y) && isfinite(h->point.z);
+}
+
+/* Extreme but valid sizes (1e-5 .. 1e5 m) and distances: every call returns, and every
+ * reported hit is finite with a unit normal; the libccd path included. */
+static void test_extreme_bodies_terminate(void)
+{
+    int calls = 0, hits = 0;
+    for (int i = 0; i < 400; i++) {
+        coll_shape_t shape = (coll_shape_t)(i % 4);
+        fm_vec3_t he = V((float)pow(10, rnd_range(-5, 5)), (float)pow(10, rnd_range(-5, 5)), (float)pow(10, rnd_range(-5, 5)));
+        fm_quat_t q;
+        fm_vec3_t ax = F(rnd_unit());
+        fm_quat_from_axis_angle(&q, &ax, (float)rnd_range(-3, 3));
+        coll_body_t b = make_body(shape, he, q);
+        fm_vec3_t pos = F(prim_ref_scale(rnd_unit(), pow(10, rnd_range(-5, 4))));
+        double r = pow(10, rnd_range(-5, 3)), hh = rnd() < 0.3 ? 0 : pow(10, rnd_range(-5, 3));
+        prim_ref_v3 c = prim_ref_scale(rnd_unit(), pow(10, rnd_range(-5, 4))), a = rnd_unit();
+        fm_vec3_t seg[2] = { F(prim_ref_sub(c, prim_ref_scale(a, hh))), F(prim_ref_add(c, prim_ref_scale(a, hh))) };
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(R(pos), c), rnd_range(0, 2)));
+        fm_vec3_t o = F(c), rd = d;
+        coll_prim_hit_t h;
+        for (int m = 0; m < 2; m++) {
+            coll_set_body_sweep_mpr(m == 1);
+            calls += 3;
+            if (coll_capsule_body_sweep(seg, (float)r, &d, &b, &pos, 1.0f, &h)) {
+                hits++;
+                if (!hit_sane(&h, 1.0f)) {
+                    printf("insane sweep: shape %d mpr %d he %g %g %g r %g hh %g t %g depth %g n %g %g %g\n", (int)shape, m,
+                           he.x, he.y, he.z, r, hh, h.t, h.depth, h.normal.x, h.normal.y, h.normal.z);
+                    TEST_FAIL();
+                }
+            }
+            if (coll_capsule_body_overlap(seg, (float)r, &b, &pos, &h)) {
+                hits++;
+                if (!hit_sane(&h, 0.0f)) {
+                    printf("insane overlap: shape %d he %g %g %g r %g hh %g depth %g n %g %g %g\n", (int)shape,
+                           he.x, he.y, he.z, r, hh, h.depth, h.normal.x, h.normal.y, h.normal.z);
+                    TEST_FAIL();
+                }
+            }
+            if (coll_ray_body(&o, &rd, &b, &pos, 1.0f, &h)) { hits++; TEST_ASSERT_TRUE(hit_sane(&h, 1.0f)); }
+        }
+        coll_set_body_sweep_mpr(false);
+    }
+    printf("extreme bodies: %d calls, %d hits, all finite\n", calls, hits);
+    TEST_ASSERT_TRUE(hits > 0);
 }
 
 /* ------------------------------------------------------------------ random vs reference */
@@ -639,6 +701,7 @@ int main(void)
     RUN_TEST(test_cylinder_body);
     RUN_TEST(test_degenerate_bodies_rejected);
     RUN_TEST(test_body_functions_do_not_allocate);
+    RUN_TEST(test_extreme_bodies_terminate);
     RUN_TEST(test_random_sphere);
     RUN_TEST(test_random_capsule);
     RUN_TEST(test_random_box);

@@ -50,6 +50,8 @@ static prim_ref_v3 rnd_unit(void)
 }
 static fm_vec3_t F(prim_ref_v3 v) { return V((float)v.x, (float)v.y, (float)v.z); }
 
+static void random_triangle(prim_ref_v3 tri[3], double L);
+
 static const fm_vec3_t floor_tri[3] = { {{-10, 0, -10}}, {{10, 0, -10}}, {{0, 0, 10}} };
 
 /* ------------------------------------------------------------------ specific cases */
@@ -288,6 +290,35 @@ static void test_degenerate_input_never_nan(void)
     TEST_ASSERT_FALSE(coll_capsule_triangle_sweep(seg, 0.5f, &d, floor_tri, 1e30f, &h));
     TEST_ASSERT_FALSE(coll_capsule_triangle_overlap(far_seg, 0.5f, floor_tri, &h));
     TEST_ASSERT_FALSE(coll_ray_triangle(&o, &d, huge, 1e30f, &h));
+}
+
+/* Extreme but valid scales (1e-5 .. 1e5 m): every reported hit is finite with a unit normal. */
+static void test_extreme_scales_finite(void)
+{
+    int hits = 0;
+    for (int i = 0; i < 3000; i++) {
+        double L = pow(10, rnd_range(-5, 5));
+        prim_ref_v3 rt[3];
+        random_triangle(rt, L);
+        fm_vec3_t tri[3] = { F(rt[0]), F(rt[1]), F(rt[2]) };
+        double r = pow(10, rnd_range(-5, 4)), hh = rnd() < 0.3 ? 0 : pow(10, rnd_range(-5, 4));
+        prim_ref_v3 c = prim_ref_scale(rnd_unit(), pow(10, rnd_range(-5, 5))), a = rnd_unit();
+        fm_vec3_t seg[2] = { F(prim_ref_sub(c, prim_ref_scale(a, hh))), F(prim_ref_add(c, prim_ref_scale(a, hh))) };
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(rt[0], c), rnd_range(0, 2)));
+        for (int k = 0; k < 3; k++) {
+            coll_prim_hit_t h;
+            bool got = k == 0 ? coll_capsule_triangle_sweep(seg, (float)r, &d, tri, 1.0f, &h)
+                     : k == 1 ? coll_capsule_triangle_overlap(seg, (float)r, tri, &h)
+                              : coll_ray_triangle(&seg[0], &d, tri, 1.0f, &h);
+            if (!got) continue;
+            hits++;
+            float nl = sqrtf(h.normal.x * h.normal.x + h.normal.y * h.normal.y + h.normal.z * h.normal.z);
+            TEST_ASSERT_TRUE(isfinite(h.t) && h.t >= 0.0f && h.t <= 1.0f && isfinite(h.depth) && h.depth >= 0.0f);
+            TEST_ASSERT_FLOAT_WITHIN(1e-3f, 1.0f, nl);
+            TEST_ASSERT_TRUE(isfinite(h.point.x) && isfinite(h.point.y) && isfinite(h.point.z));
+        }
+    }
+    TEST_ASSERT_TRUE(hits > 100);
 }
 
 static bool g_custom_called;
@@ -721,6 +752,7 @@ int main(void)
     RUN_TEST(test_initial_overlap);
     RUN_TEST(test_sphere_and_zero_displacement);
     RUN_TEST(test_degenerate_input_never_nan);
+    RUN_TEST(test_extreme_scales_finite);
     RUN_TEST(test_sweep_method_dispatch);
     RUN_TEST(test_no_allocation);
     RUN_TEST(test_ray_triangle_basics);

@@ -376,11 +376,12 @@ static float seg_cyl_closest(fm_vec3_t a, fm_vec3_t b, float R, float hh, fm_vec
 }
 
 /** Closest points of a world segment and the cylinder body, results in world frame. */
-static float seg_cyl_closest_world(const body_frame_t *f, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pc)
+static float seg_cyl_closest_world(const body_frame_t *f, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *pc, fm_vec3_t *n)
 {
-    fm_vec3_t la = q_rot_inv(&f->q, pv_sub(a, f->pos)), lb = q_rot_inv(&f->q, pv_sub(b, f->pos));
-    float d2 = seg_cyl_closest(la, lb, f->he.x, f->he.y, ps, pc);
-    *ps = pv_add(f->pos, q_rot(&f->q, *ps));
+    fm_vec3_t la = q_rot_inv(&f->q, pv_sub(a, f->pos)), lb = q_rot_inv(&f->q, pv_sub(b, f->pos)), ps;
+    float d2 = seg_cyl_closest(la, lb, f->he.x, f->he.y, &ps, pc);
+    /* the direction in the body frame: differences of world points lose it for tiny gaps */
+    *n = q_rot(&f->q, pv_unit_or(pv_sub(ps, *pc), pv_make(0.0f, 0.0f, 0.0f)));
     *pc = pv_add(f->pos, q_rot(&f->q, *pc));
     return d2;
 }
@@ -491,15 +492,15 @@ static fm_vec3_t centre_dir(const body_frame_t *f, const fm_vec3_t seg[2])
 static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, float tol, coll_prim_hit_t *hit)
 {
     /* Segment outside the solid: exact distance and direction from the closest points. */
-    fm_vec3_t ps, pc;
-    float d2 = seg_cyl_closest_world(f, seg[0], seg[1], &ps, &pc);
+    fm_vec3_t pc, nn;
+    float d2 = seg_cyl_closest_world(f, seg[0], seg[1], &pc, &nn);
     if (d2 > 1e-10f) {
         float rin = r - tol;
         if (!(d2 < rin * rin)) return false;
         float dist = sqrtf(d2);
         hit->t = 0.0f;
         hit->depth = r - dist;
-        hit->normal = pv_unit_or(pv_sub(ps, pc), centre_dir(f, seg));
+        hit->normal = pv_len2(nn) > 0.5f ? nn : centre_dir(f, seg);
         hit->point = pc;
         return true;
     }
@@ -557,11 +558,9 @@ static bool ccd_sweep_mpr(const body_frame_t *f, const fm_vec3_t seg[2], float r
 static float cyl_dist_at(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t d, float t,
                          fm_vec3_t *n, fm_vec3_t *p)
 {
-    fm_vec3_t ps;
-    float d2 = seg_cyl_closest_world(f, pv_madd(seg[0], d, t), pv_madd(seg[1], d, t), &ps, p);
-    float dist = sqrtf(d2);
-    *n = d2 > 1e-12f ? pv_scale(pv_sub(ps, *p), 1.0f / dist) : centre_dir(f, seg);
-    return dist;
+    float d2 = seg_cyl_closest_world(f, pv_madd(seg[0], d, t), pv_madd(seg[1], d, t), p, n);
+    if (!(pv_len2(*n) > 0.5f)) *n = centre_dir(f, seg);
+    return sqrtf(d2);
 }
 
 /**
