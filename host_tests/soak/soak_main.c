@@ -5,6 +5,7 @@
  *   soak [--frames N] [--seed S] [--out DIR] [--max-replays N] [--level-frames N] [-v]
  *        [--save-passing N]   also write the first N levels that pass as baseline replays
  *        [--known DIR]        failures on levels of DIR's replays (open bugs) do not fail
+ *        [--known-kinds FILE] nor failures of the kinds listed in FILE (open bug classes)
  *   soak --replay FILE [--bless]     replay one file (bless: store this arch's final state)
  *   soak --replay-dir DIR            replay every *.replay in DIR
  *
@@ -96,6 +97,30 @@ static int load_known(const char *dir)
     return 0;
 }
 
+/* Failure kinds with open bugs (--known-kinds FILE: one kind name per line, # comments). */
+static bool known_kind[SOAK_FAIL_COUNT];
+
+static int load_known_kinds(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) return 0; /* no file: no kind is known */
+    char line[128];
+    while (fgets(line, sizeof line, f)) {
+        char *p = line;
+        while (*p == ' ' || *p == '\t') p++;
+        size_t n = strcspn(p, " \t\r\n#");
+        if (n == 0) continue;
+        p[n] = 0;
+        int k = -1;
+        for (int i = 1; i < SOAK_FAIL_COUNT; i++)
+            if (strcmp(p, soak_fail_name(i)) == 0) k = i;
+        if (k < 0) { fprintf(stderr, "ERROR: %s: unknown failure kind '%s'\n", path, p); fclose(f); return -1; }
+        known_kind[k] = true;
+    }
+    fclose(f);
+    return 0;
+}
+
 static bool is_known(uint64_t lseed)
 {
     for (unsigned i = 0; i < nknown; i++)
@@ -106,7 +131,7 @@ static bool is_known(uint64_t lseed)
 static void usage(void)
 {
     fprintf(stderr, "usage: soak [--frames N] [--seed S] [--out DIR] [--max-replays N] [--level-frames N]\n"
-                    "            [--save-passing N] [--known DIR] [-v]\n"
+                    "            [--save-passing N] [--known DIR] [--known-kinds FILE] [-v]\n"
                     "       soak --replay FILE [--bless]\n"
                     "       soak --replay-dir DIR\n");
 }
@@ -244,6 +269,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--replay") && v) { replay = v; i++; }
         else if (!strcmp(a, "--replay-dir") && v) { rdir = v; i++; }
         else if (!strcmp(a, "--known") && v) { if (load_known(v) != 0) return 2; i++; }
+        else if (!strcmp(a, "--known-kinds") && v) { if (load_known_kinds(v) != 0) return 2; i++; }
         else if (!strcmp(a, "--save-passing") && v) { save_passing = (unsigned)strtoul(v, NULL, 0); i++; }
         else if (!strcmp(a, "--bless")) bless = true;
         else if (!strcmp(a, "-v")) verbose = true;
@@ -289,11 +315,11 @@ int main(int argc, char **argv)
             g_state[i].excused = g_sim.excused;
             int k = soak_sim_step(&g_sim, &g_frames[i], true);
             if (k == SOAK_FAIL_NONE) continue;
-            if (is_known(lseed)) {
+            if (is_known(lseed) || known_kind[k]) {
                 known++;
-                printf("KNOWN (open replay) seed %llu level %llu (level seed 0x%016llx) frame %u: %s: %s\n",
-                       (unsigned long long)seed, (unsigned long long)li, (unsigned long long)lseed, (unsigned)i,
-                       soak_fail_name(k), g_sim.msg);
+                printf("KNOWN (%s) seed %llu level %llu (level seed 0x%016llx) frame %u: %s: %s\n",
+                       is_known(lseed) ? "open replay" : "open kind", (unsigned long long)seed,
+                       (unsigned long long)li, (unsigned long long)lseed, (unsigned)i, soak_fail_name(k), g_sim.msg);
                 break;
             }
             failures++;
