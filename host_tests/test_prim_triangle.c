@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #ifdef __mips__
 #define N_RANDOM_SWEEPS 1500
@@ -100,6 +101,14 @@ static void test_edge_hit(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.6f, h.normal.y);
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, h.point.x);
     TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.0f, h.point.y);
+    /* axis nearly parallel to the edge (tilted 1e-7 .. 1e-1 rad): the lower end leads */
+    for (float tilt = 1e-7f; tilt < 0.2f; tilt *= 10.0f) {
+        fm_vec3_t tseg[2] = { V(3, 0.3f, -0.2f), V(3 + 0.4f * tilt, 0.3f, 0.2f) };
+        TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(tseg, 0.5f, &d, tri, 1.0f, &h));
+        TEST_ASSERT_FLOAT_WITHIN(2e-6f, 0.4f, h.t);
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.8f, h.normal.x);
+        TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.6f, h.normal.y);
+    }
     /* crossed edges: capsule axis along y crosses the edge line (edge-edge interior) */
     fm_vec3_t seg2[2] = { V(3, -0.5f, 0.1f), V(3, 0.5f, 0.1f) };
     TEST_ASSERT_TRUE(coll_capsule_triangle_sweep(seg2, 0.5f, &d, tri, 1.0f, &h));
@@ -401,7 +410,7 @@ static void dump_case(const fm_vec3_t seg[2], float r, fm_vec3_t d, const fm_vec
 
 typedef struct {
     int n, hits, overlaps, grazing, ambiguous, checked_t;
-    double max_dt_rel, max_dt_rel_graze_perp, max_dn_face, max_dn_feat, max_depth_err, max_fdev;
+    double max_dt_rel, max_dt_m, max_dt_rel_graze_perp, max_dn_face, max_dn_feat, max_depth_err, max_fdev;
 } sweep_stats_t;
 
 static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touching)
@@ -412,6 +421,13 @@ static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touch
     double r = exp(rnd_range(log(0.02), log(10.0)));
     double hh = rnd() < 0.15 ? 0 : rnd_range(0, 2) * (rnd() < 0.5 ? r : 1);
     prim_ref_v3 ax = rnd_unit();
+    if (rnd() < 0.15) { /* capsule axis nearly parallel to an edge (1e-7 .. 1e-2 rad) */
+        int k = (int)(rnd() * 3);
+        prim_ref_v3 e = prim_ref_sub(rt[(k + 1) % 3], rt[k]);
+        double el = prim_ref_len(e);
+        if (el > 0) ax = prim_ref_add(prim_ref_scale(e, 1 / el), prim_ref_scale(rnd_unit(), pow(10, rnd_range(-7, -2))));
+        ax = prim_ref_scale(ax, 1 / prim_ref_len(ax));
+    }
     /* a point on the triangle as target */
     double b1 = rnd(), b2 = rnd();
     if (b1 + b2 > 1) { b1 = 1 - b1; b2 = 1 - b2; }
@@ -532,20 +548,22 @@ static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touch
     double dt = fabs(h.t - ref.t_first);
     if (vn > 0.05) {
         st->checked_t++;
-        /* error in meters along d, relative to |d| */
-        double rel = dt;
-        if (rel > st->max_dt_rel) st->max_dt_rel = rel;
+        /* error in meters along d, and relative to |d| for non-tiny motions */
+        if (dt * dlen > st->max_dt_m) st->max_dt_m = dt * dlen;
+        if (dlen >= 0.1 && dt > st->max_dt_rel) st->max_dt_rel = dt;
         char msg[300];
         snprintf(msg, sizeof msg, "t %.9g vs ref %.9g (vn %.3g |d| %.3g r %.3g)", h.t, ref.t_first, vn, dlen, rr);
+        if (getenv("PRIM_DUMP_T") && dt > atof(getenv("PRIM_DUMP_T"))) { printf("%s\n", msg); dump_case(seg, fr, fd, tri); }
         TEST_ASSERT_TRUE_MESSAGE(dt * dlen <= 1e-4 * fmax(1.0, dlen) * 0.1 + 4 * margin / vn, msg);
         double a = ang(h.normal, ref.n);
         if (a > st->max_dn_feat) st->max_dn_feat = a;
-        if (!(a < 1e-3)) {
+        if (!(a < 1e-3) || (getenv("PRIM_DUMP_N") && a > atof(getenv("PRIM_DUMP_N")))) {
             char msg2[400];
             snprintf(msg2, sizeof msg2, "contact normal err %.3g: t %.9g ref %.9g vn %.3g r %.9g n (%g %g %g) ref (%g %g %g)",
                      a, h.t, ref.t_first, vn, rr, h.normal.x, h.normal.y, h.normal.z, ref.n.x, ref.n.y, ref.n.z);
             dump_case(seg, fr, fd, tri);
-            TEST_FAIL_MESSAGE(msg2);
+            if (!(a < 1e-3)) TEST_FAIL_MESSAGE(msg2);
+            printf("%s\n", msg2);
         }
     } else {
         st->grazing++;
@@ -556,9 +574,10 @@ static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touch
 
 static void report_sweep(const char *name, const sweep_stats_t *st)
 {
-    printf("%s: %d sweeps, %d hits (%d overlaps, %d grazing), %d ambiguous; t checked on %d: max |dt| %.3g, "
-           "max normal err %.3g rad, max depth err %.3g m, max |dist(t)-r| %.3g m, grazing max dt*vn*|d| %.3g m\n",
-           name, st->n, st->hits, st->overlaps, st->grazing, st->ambiguous, st->checked_t, st->max_dt_rel,
+    printf("%s: %d sweeps, %d hits (%d overlaps, %d grazing), %d ambiguous; t checked on %d: max |dt|*|d| %.3g m, "
+           "max |dt| (|d| >= 0.1 m) %.3g, max normal err %.3g rad, max depth err %.3g m, max |dist(t)-r| %.3g m, "
+           "grazing max dt*vn*|d| %.3g m\n",
+           name, st->n, st->hits, st->overlaps, st->grazing, st->ambiguous, st->checked_t, st->max_dt_m, st->max_dt_rel,
            st->max_dn_feat, st->max_depth_err, st->max_fdev, st->max_dt_rel_graze_perp);
 }
 

@@ -328,6 +328,12 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     float u = pv_dot(pv_cross(w, e), m) / mm;
     float v = pv_dot(pv_cross(w, c->s), m) / mm;
     if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) return;
+    /* Nearly parallel lines leave mu (and so tt) poorly conditioned: never accept a time
+     * at which the two segments are still clearly apart (the cylinders cover the rest). */
+    fm_vec3_t at = pv_madd(c->a, c->d, tt);
+    float sd2 = prim_closest_seg_seg(at, pv_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
+    float rr = r + 1e-5f * (1.0f + r);
+    if (sd2 > rr * rr) return;
     take(best, tt, pv_scale(mu, sig), pv_madd(e0, e, v));
 }
 
