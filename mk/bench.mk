@@ -47,7 +47,8 @@ $(BENCH_COUNT): bench/mipscount.c
 	@mkdir -p $(@D)
 	$(host_CC) -std=c11 -O2 -Wall -Wextra -Werror $< -o $@
 
-BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/platform_rotate.coll,$(BAKED_LEVELS))
+BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/test_course.q.coll \
+                           $(ASSET_DIR)/platform_rotate.coll,$(BAKED_LEVELS))
 
 .PHONY: bench bench-bin
 bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
