@@ -66,8 +66,10 @@ void cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
         bool walkable = nu >= b->cos_floor_max_angle;
         if (walkable) {
             if (gap <= CB_CONTACT_EPS || (was_grounded && gap <= c->snap)) {
-                /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop. */
-                *pos = cb_madd(*pos, up, -gap);
+                /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
+                 * Swept: the capsule is wider than the foot point, so walking off a ledge
+                 * its edge, or a slope or ceiling above a tread, may stop it short. */
+                cb_move_swept(c, pos, cb_scale(up, -gap));
                 grounded = true;
             }
         } else if (nu > 0.0f) {

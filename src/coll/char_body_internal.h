@@ -93,6 +93,10 @@ bool cb_xf_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local
 /** Moves by disp with up to max_slides sweep-and-slide iterations, clipping *vel (may be NULL)
  *  by the same planes. grounded: walls only (hits above the step zone act as vertical). */
 void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded);
+/** Swept positional change: moves the sweep capsule by d, stopping skin short of the first
+ *  contact (a contact within skin of the end of d counts as the end: the target itself).
+ *  Returns the fraction of d travelled (1 when unblocked). */
+float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
 /** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts). */
 void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot. */

@@ -67,6 +67,34 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
     return cb_len(nh) > 0.5f ? nh : hit->normal;
 }
 
+float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+{
+    const char_body_t *b = c->body;
+    float len = cb_len(d);
+    if (!(len > 1e-6f) || !isfinite(len)) {
+        if (isfinite(len)) *pos = cb_add(*pos, d); /* sub-micrometre: below every tolerance */
+        return 1.0f;
+    }
+    coll_sweep_hit_t hit;
+    if (!coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, d,
+                            b->settings.read_mask, b->settings.coll_types, &hit) ||
+        !isfinite(hit.t)) {
+        *pos = cb_add(*pos, d);
+        return 1.0f;
+    }
+    float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
+    float reach = len * t;
+    if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f)) {
+        /* Touches only at the very end, within the skin: that is the target itself. */
+        *pos = cb_add(*pos, d);
+        return 1.0f;
+    }
+    float travel = reach - c->skin;
+    if (!(travel > 0.0f)) return 0.0f;
+    *pos = cb_madd(*pos, d, travel / len);
+    return travel / len;
+}
+
 /**
  * Airborne, the capsule's rounded bottom resting on an edge that the foot point is already
  * past: the foot is a point, so there is nothing to stand on. Push the capsule sideways off
@@ -121,8 +149,8 @@ static bool step_up_now(const cb_ctx_t *c, fm_vec3_t *pos)
         return false;
     float lift = above - rh.distance;
     if (!(lift > 1e-4f) || cb_dot(rh.normal, c->up) < b->cos_floor_max_angle) return false;
-    *pos = cb_madd(*pos, c->up, lift);
-    return true;
+    /* Swept: a ceiling or an overhanging slope above may leave no room for the lift. */
+    return cb_move_swept(c, pos, cb_scale(c->up, lift)) >= 1.0f;
 }
 
 /**
@@ -270,6 +298,8 @@ void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec
     /* Slide the foot along the wall it would have entered. */
     fm_vec3_t after = cb_sub(foot, hit.point);
     fm_vec3_t target = cb_add(cb_madd(hit.point, n, c->skin), clip_plane(after, n));
-    *pos = cb_add(*pos, cb_sub(target, foot));
+    /* Swept, like every positional change: the push must not put the capsule into
+     * something else (a slope or wall on the other side). */
+    cb_move_swept(c, pos, cb_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
 }
