@@ -23,7 +23,9 @@ do for [col in "5 6 11"] {
          "" skip 1 using (fam(0, "disc", $4)):(lfloor(column(c))):(sprintf("N=%d", $3)) with labels offset 0,1 font ",8" notitle, \
          "" skip 1 using (fam(0, "ccd-gjk", $4)):(lfloor(column(c))) with linespoints pt 9 lc rgb "#1f77b4" title "libccd GJK bisection", \
          "" skip 1 using (fam(0, "ccd-gjk", $4)):(lfloor(column(c))):(sprintf("%d it", $3)) with labels offset 0,-1 font ",8" notitle, \
-         "" skip 1 using (fam(0, "ccd-mpr", $4)):(lfloor(column(c))) with linespoints pt 11 lc rgb "#2ca02c" title "libccd MPR bisection"
+         "" skip 1 using (fam(0, "ccd-mpr", $4)):(lfloor(column(c))) with linespoints pt 11 lc rgb "#2ca02c" title "libccd MPR bisection", \
+         "" skip 1 using (fam(0, "ccd-gjk-tol", $4)):(lfloor(column(c))) with linespoints pt 13 lc rgb "#9467bd" title "libccd GJK, bracket tolerance", \
+         "" skip 1 using (fam(0, "ccd-gjk-tol", $4)):(lfloor(column(c))):(strcol(3)." m") with labels offset 0,1 font ",8" notitle
 }
 unset multiplot
 
