@@ -97,7 +97,11 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
  *  contact (a contact within skin of the end of d counts as the end: the target itself).
  *  Returns the fraction of d travelled (1 when unblocked). */
 float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
-/** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts). */
+/** Unswept push by delta, kept only when the sweep capsule then overlaps nothing new or
+ *  deeper than before (coll_capsule_overlaps before and after); false: not moved. */
+bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
+/** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts),
+ *  keeping the result only when it overlaps nothing new or deeper than the start did. */
 void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot. */
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);

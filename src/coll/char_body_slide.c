@@ -205,9 +205,11 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
         if (t <= 0.0f && hit.depth > 0.0f) {
-            /* Started inside: step out along the push-out direction first. */
+            /* Started inside: step out along the push-out direction first, verified
+             * (not swept: a sweep from inside stops at once); a push that would end
+             * inside something else ends the slide here instead. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
-            *pos = cb_madd(*pos, hit.normal, d + c->skin * 0.5f);
+            if (!cb_push_verified(c, pos, cb_scale(hit.normal, d + c->skin * 0.5f))) break;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -249,14 +251,56 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
     }
 }
 
-void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
+/** Contacts of the sweep capsule at pos (at most CB_MAX_CONTACTS). */
+static uint32_t overlaps_at(const cb_ctx_t *c, fm_vec3_t pos, coll_contact_t *ct)
 {
     const char_body_t *b = c->body;
-    for (int pass = 0; pass < 2; pass++) {
-        coll_contact_t ct[CB_MAX_CONTACTS];
-        uint32_t n = coll_capsule_overlaps(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh,
-                                           b->settings.read_mask, b->settings.coll_types, ct, CB_MAX_CONTACTS);
-        if (n > CB_MAX_CONTACTS) n = CB_MAX_CONTACTS;
+    uint32_t n = coll_capsule_overlaps(c->scene, cb_sweep_center(c, pos), c->up, c->radius, c->sweep_ihh,
+                                       b->settings.read_mask, b->settings.coll_types, ct, CB_MAX_CONTACTS);
+    return n > CB_MAX_CONTACTS ? CB_MAX_CONTACTS : n;
+}
+
+/**
+ * True when the contacts after a push (ct, n) are no worse than before (ct0, n0): every
+ * contact deeper than CB_MIN_DEPTH is a feature (same triangle of the same instance, or the
+ * same body) that already overlapped at least as deep. A push out of one thing must not
+ * put the capsule into another (a slope's overhang, the wall behind, a mesh behind a
+ * collider body).
+ */
+static bool no_worse(const coll_contact_t *ct, uint32_t n, const coll_contact_t *ct0, uint32_t n0)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        if (!(ct[i].depth > CB_MIN_DEPTH)) continue;
+        bool ok = false;
+        for (uint32_t j = 0; j < n0 && !ok; j++)
+            ok = ct0[j].instance == ct[i].instance && ct0[j].body == ct[i].body &&
+                 ct0[j].triangle == ct[i].triangle && ct[i].depth <= ct0[j].depth + CB_MIN_DEPTH;
+        if (!ok) return false;
+    }
+    return true;
+}
+
+bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
+{
+    coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
+    uint32_t n0 = overlaps_at(c, *pos, ct0);
+    fm_vec3_t np = cb_add(*pos, delta);
+    uint32_t n = overlaps_at(c, np, ct);
+    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0)) return false;
+    *pos = np;
+    return true;
+}
+
+void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
+{
+    coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
+    uint32_t n0 = overlaps_at(c, *pos, ct0);
+    uint32_t n = n0;
+    for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
+    fm_vec3_t p = *pos;
+    fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    bool moved = false;
+    for (int pass = 0; pass < 3; pass++) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
         bool any = false;
         /* Gauss-Seidel on positions: each contact wants depth + half a skin of separation. */
@@ -270,16 +314,22 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
                 }
             }
         }
-        if (!any) return;
+        if (!any) break;
         float dl = cb_len(delta);
         float lim = 2.0f * c->radius + 2.0f * c->half_height;
         if (dl > lim) delta = cb_scale(delta, lim / dl);
-        *pos = cb_add(*pos, delta);
-        if (vel) {
-            for (uint32_t i = 0; i < n; i++)
-                if (ct[i].depth > CB_MIN_DEPTH && cb_finite(ct[i].normal)) *vel = clip_plane(*vel, ct[i].normal);
-        }
+        for (uint32_t i = 0; i < n; i++)
+            if (ct[i].depth > CB_MIN_DEPTH && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
+        p = cb_add(p, delta);
+        moved = true;
+        n = overlaps_at(c, p, ct);
     }
+    /* Verified result: intermediate passes may touch other things on the way out, the
+     * final position may not overlap anything new or deeper than the start did (the push
+     * is not swept). Otherwise stay: still overlapping what we were in, nothing worse. */
+    if (!moved || !cb_finite(p) || !no_worse(ct, n, ct0, n0)) return;
+    *pos = p;
+    if (vel) *vel = v;
 }
 
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
