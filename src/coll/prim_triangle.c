@@ -191,9 +191,11 @@ static bool tri_contains(const tri_t *t, fm_vec3_t q)
 }
 
 /** Squared distance of segment a..b to the triangle with closest points. */
-static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt,
+                                int *edge, float *eu, float *ev)
 {
     float best = 3.0e38f;
+    *edge = -1;
     if (t->has_face) {
         float ha = pv_dot(t->n, pv_sub(a, t->v[0]));
         float hb = pv_dot(t->n, pv_sub(b, t->v[0]));
@@ -210,10 +212,39 @@ static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t
     }
     for (int i = 0; i < 3; i++) {
         fm_vec3_t cp, cq;
-        float d2 = prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], NULL, NULL, &cp, &cq);
-        if (d2 < best) { best = d2; *ps = cp; *pt = cq; }
+        float u, v;
+        float d2 = prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
+        if (d2 < best) { best = d2; *ps = cp; *pt = cq; *edge = i; *eu = u; *ev = v; }
     }
     return best;
+}
+
+static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+{
+    int edge;
+    float u, v;
+    return seg_tri_closest_ex(t, a, b, ps, pt, &edge, &u, &v);
+}
+
+/**
+ * Contact normal (triangle -> segment) from the closest pair of segment a..b and the
+ * triangle. For a pair interior to both the segment and an edge, the direction is that of
+ * the two lines' cross product: rounding moves such a pair along the lines (the position
+ * there is ill-conditioned), which tilts ps - pt but not the cross product.
+ */
+static fm_vec3_t pair_normal(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t ps, fm_vec3_t pt,
+                             int edge, float u, float v, fm_vec3_t fallback)
+{
+    fm_vec3_t diff = pv_sub(ps, pt);
+    fm_vec3_t n = pv_unit_or(diff, fallback);
+    if (edge < 0 || !(u > 1e-4f && u < 1.0f - 1e-4f) || !(v > 1e-4f && v < 1.0f - 1e-4f)) return n;
+    fm_vec3_t s = pv_sub(b, a), e = t->e[edge];
+    fm_vec3_t m = pv_cross(s, e);
+    float mm = pv_len2(m);
+    if (!(mm > 1e-4f * pv_len2(s) * pv_len2(e))) return n;  /* near-parallel: the difference is better */
+    m = pv_scale(m, 1.0f / sqrtf(mm));
+    if (pv_dot(m, diff) < 0.0f) m = pv_neg(m);
+    return pv_dot(m, n) > 0.9999f ? m : n;
 }
 
 float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
@@ -434,10 +465,25 @@ bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, c
         /* The pieces meet tangentially, so which one won is decided by rounding near a
          * junction; the closest points at the contact time give the normal smoothly. */
         fm_vec3_t off = pv_scale(c.d, best.t);
-        float d2h = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        fm_vec3_t ha = pv_add(c.a, off), hb = pv_add(c.b, off);
+        int edge;
+        float eu, ev;
+        float d2h = seg_tri_closest_ex(&c.tri, ha, hb, &ps, &pt, &edge, &eu, &ev);
+        /* Near a flat minimum rounding can pick a candidate pair slightly off the true one
+         * (e.g. a vertex instead of a point just past it on the next edge); alternating
+         * projections (segment point nearest the triangle point, and back) settle it. */
+        bool interior = edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f;
+        for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
+            fm_vec3_t qs, qt, dummy;
+            prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
+            float q2 = seg_tri_closest(&c.tri, qs, qs, &dummy, &qt);
+            if (!(q2 <= d2h)) break;
+            d2h = q2; ps = qs; pt = qt;
+            edge = -1;
+        }
         hd = r;
         if (d2h > 0.25f * r * r) {
-            hit->normal = pv_unit_or(pv_sub(ps, pt), best.n);
+            hit->normal = pair_normal(&c.tri, ha, hb, ps, pt, edge, eu, ev, best.n);
             hit->point = pt;
             hd = sqrtf(d2h);
         }
