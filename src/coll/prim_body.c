@@ -265,6 +265,8 @@ static bool box_overlap_local(const fm_vec3_t seg[2], float r, fm_vec3_t he, flo
 {
     float depth;
     fm_vec3_t n;
+    /* quick reject: separated even from the box grown by r */
+    if (!seg_box_sat(seg[0], seg[1], pv_make(he.x + r, he.y + r, he.z + r), &depth, &n)) return false;
     if (seg_box_sat(seg[0], seg[1], he, &depth, &n)) {
         hit->t = 0.0f;
         hit->depth = depth + r;
@@ -297,6 +299,13 @@ static bool box_overlap_local(const fm_vec3_t seg[2], float r, fm_vec3_t he, flo
 static bool box_sweep_local(const fm_vec3_t seg[2], float r, fm_vec3_t d, fm_vec3_t he, float t_max,
                             float tol, coll_prim_hit_t *hit)
 {
+    /* quick reject: the swept segment's bounds miss the box grown by r */
+    for (int i = 0; i < 3; i++) {
+        float a0 = seg[0].v[i], a1 = seg[1].v[i], m = d.v[i] * t_max;
+        float lo = pv_minf(pv_minf(a0, a1), pv_minf(a0 + m, a1 + m));
+        float hi = pv_maxf(pv_maxf(a0, a1), pv_maxf(a0 + m, a1 + m));
+        if (lo > he.v[i] + r || hi < -he.v[i] - r) return false;
+    }
     if (box_overlap_local(seg, r, he, tol, hit)) return true;
     /* First contact over the faces that face the motion (a back face's points can only be
      * met after a front face's), then the touch tolerance on the whole box: the motion
