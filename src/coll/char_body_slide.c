@@ -52,6 +52,35 @@ static fm_vec3_t clip_planes(fm_vec3_t v, const fm_vec3_t *planes, int np)
 }
 
 /**
+ * Airborne, a clip against a steep (non-walkable, upward-facing) plane may not turn the
+ * motion upwards: pushing into a steep slope would otherwise convert the push into climbing
+ * speed every step (faster than gravity takes it back at a few m/s) and carry the body over
+ * the top. When the clipped v rises faster than v0 did (or rises at all while v0 fell),
+ * keep v0's rate along up and slide along the steep plane at that rate instead: away from
+ * it and down while falling. v0: before clipping, v: clip_planes' result.
+ */
+static fm_vec3_t no_climb(const cb_ctx_t *c, fm_vec3_t v0, fm_vec3_t v, const fm_vec3_t *planes, int np)
+{
+    float u0 = cb_dot(v0, c->up);
+    float cap = u0 > 0.0f ? u0 : 0.0f;
+    if (!(cb_dot(v, c->up) > cap + 1e-6f * cb_len(v0))) return v;
+    for (int k = np - 1; k >= 0; k--) {
+        fm_vec3_t n = planes[k];
+        float nu = cb_dot(n, c->up);
+        if (nu <= 0.0f || nu >= c->body->cos_floor_max_angle) continue;
+        fm_vec3_t nh = cb_norm(cb_reject(n, c->up));
+        float nn = cb_dot(n, nh);
+        if (!(nn > 1e-3f)) continue;
+        fm_vec3_t side = cb_norm(cb_cross(n, c->up));
+        /* on the plane (w.n = 0) with w.up = u0: a nh + u0 up, plus v's part along the plane's level line */
+        fm_vec3_t w = cb_madd(cb_madd(cb_scale(side, cb_dot(v, side)), nh, -u0 * nu / nn), c->up, u0);
+        if (outside_all(w, planes, np, 1e-5f * cb_len(v0))) return w;
+        return cb_v(0.0f, 0.0f, 0.0f);
+    }
+    return v;
+}
+
+/**
  * The plane a grounded body slides along. The sweep capsule only ever meets walls while
  * walking (its bottom floats step_height above the floor), so a hit above the step zone
  * acts as a vertical wall: no climbing steep slopes or tall risers' rounded edges, no
@@ -246,8 +275,13 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
             *pos = cb_madd(*pos, n, c->skin * 0.1f);
         }
-        rem = clip_planes(cb_scale(disp, time_left), planes, np);
+        fm_vec3_t want = cb_scale(disp, time_left);
+        rem = clip_planes(want, planes, np);
         if (vel) *vel = clip_planes(vel0, planes, np);
+        if (!grounded) {
+            rem = no_climb(c, want, rem, planes, np);
+            if (vel) *vel = no_climb(c, vel0, *vel, planes, np);
+        }
     }
 }
 
