@@ -116,4 +116,59 @@ static inline const uint32_t *coll_mesh_cells(const coll_mesh_t *m)
 /** Local-space vertices of triangle i (i < ntris, unchecked). */
 void coll_mesh_tri_local(const coll_mesh_t *m, uint32_t i, fm_vec3_t out[3]);
 
+/**
+ * Read-only view of a mesh's sections for the query loops: the section pointers and the
+ * layout flags are resolved once per query instead of once per vertex, and the fetch is
+ * inline (coll_mesh_tri_local() costs a call plus three calls and a flag test per vertex).
+ * Gives exactly the same vertices as coll_mesh_tri_local().
+ */
+typedef struct {
+    const uint8_t *verts, *tris, *refs;
+    const uint32_t *cells;
+    uint32_t flags;
+    float qo[3], qs[3];
+} coll_mesh_view_t;
+
+static inline void coll_mesh_view_init(coll_mesh_view_t *v, const coll_mesh_t *m)
+{
+    const uint8_t *b = (const uint8_t *)m;
+    v->verts = b + m->off_verts;
+    v->tris = b + m->off_tris;
+    v->refs = b + m->off_refs;
+    v->cells = (const uint32_t *)(const void *)(b + m->off_cells);
+    v->flags = m->flags;
+    for (int a = 0; a < 3; a++) { v->qo[a] = m->qorigin[a]; v->qs[a] = m->qscale[a]; }
+}
+
+static inline uint32_t coll_mesh_view_ref(const coll_mesh_view_t *v, uint32_t k)
+{
+    if (v->flags & COLL_MESHF_REF16) return ((const uint16_t *)(const void *)v->refs)[k];
+    return ((const uint32_t *)(const void *)v->refs)[k];
+}
+
+static inline void coll_mesh_view_tri(const coll_mesh_view_t *v, uint32_t i, fm_vec3_t out[3])
+{
+    uint32_t ix[3];
+    if (v->flags & COLL_MESHF_IDX16) {
+        const uint16_t *t = (const uint16_t *)(const void *)v->tris + 3u * i;
+        ix[0] = t[0]; ix[1] = t[1]; ix[2] = t[2];
+    } else {
+        const uint32_t *t = (const uint32_t *)(const void *)v->tris + 3u * i;
+        ix[0] = t[0]; ix[1] = t[1]; ix[2] = t[2];
+    }
+    if (v->flags & COLL_MESHF_QUANT) {
+        for (int k = 0; k < 3; k++) {
+            const uint16_t *q = (const uint16_t *)(const void *)v->verts + 3u * ix[k];
+            out[k].x = v->qo[0] + (float)q[0] * v->qs[0];
+            out[k].y = v->qo[1] + (float)q[1] * v->qs[1];
+            out[k].z = v->qo[2] + (float)q[2] * v->qs[2];
+        }
+    } else {
+        for (int k = 0; k < 3; k++) {
+            const float *f = (const float *)(const void *)v->verts + 3u * ix[k];
+            out[k].x = f[0]; out[k].y = f[1]; out[k].z = f[2];
+        }
+    }
+}
+
 #endif

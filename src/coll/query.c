@@ -43,6 +43,7 @@ static bool xf_prepare(const coll_transform_t *xf, xf3_t *o)
     if (!(n2 > 1e-12f)) return false;
     o->simple = q->x == 0.0f && q->y == 0.0f && q->z == 0.0f && s->x == 1.0f && s->y == 1.0f &&
                 s->z == 1.0f;
+    if (o->simple) return true; /* m and inv are never read for a simple transform */
     float k = 1.0f / sqrtf(n2);
     float x = q->x * k, y = q->y * k, z = q->z * k, w = q->w * k;
     float r[3][3] = {
@@ -112,14 +113,6 @@ static void tri_rel_of(const fm_vec3_t v[3], const xf3_t *x, const fm_vec3_t *o_
         fm_vec3_sub(&d, &v[k], &v[0]);
         out[k] = x->simple ? d : mul3(x->m, &d);
     }
-}
-
-static void tri_rel(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_local, uint32_t i,
-                    fm_vec3_t *w0, fm_vec3_t out[3])
-{
-    fm_vec3_t v[3];
-    coll_mesh_tri_local(m, i, v);
-    tri_rel_of(v, x, o_local, w0, out);
 }
 
 /* Query-relative copy of a triangle given as w0 + shape. */
@@ -266,12 +259,30 @@ static bool clip_box(const fm_vec3_t *o, const fm_vec3_t *d, const float lo[3], 
     return true;
 }
 
-static void ray_test_tri(const coll_mesh_instance_t *inst, const xf3_t *x, const fm_vec3_t *o_l,
-                         const fm_vec3_t *dir, uint32_t t, ray_best_t *rb)
+static bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, const fm_vec3_t *hi);
+
+/* Mesh-local box of the ray piece o_l + d_l s, s in [s0, s1], grown by the grid margin
+ * plus the rounding of the local ray itself: a triangle outside it cannot be hit. */
+static void ray_local_box(const fm_vec3_t *o_l, const fm_vec3_t *d_l, float s0, float s1, float mg,
+                          fm_vec3_t *lo, fm_vec3_t *hi)
 {
-    fm_vec3_t tri[3], w0, o;
+    for (int a = 0; a < 3; a++) {
+        float p0 = o_l->v[a] + d_l->v[a] * s0, p1 = o_l->v[a] + d_l->v[a] * s1;
+        float slack = mg + 1e-6f * (fabsf(p0) + fabsf(p1) + fabsf(o_l->v[a]));
+        lo->v[a] = min_f(p0, p1) - slack;
+        hi->v[a] = max_f(p0, p1) + slack;
+    }
+}
+
+static void ray_test_tri(const coll_mesh_instance_t *inst, const coll_mesh_view_t *mv, const xf3_t *x,
+                         const fm_vec3_t *o_l, const fm_vec3_t *dir, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+                         uint32_t t, ray_best_t *rb)
+{
+    fm_vec3_t v[3], tri[3], w0, o;
     coll_prim_hit_t ph;
-    tri_rel(inst->mesh, x, o_l, t, &w0, tri);
+    coll_mesh_view_tri(mv, t, v);
+    if (tri_box_reject(v, llo, lhi)) return; /* cheap local reject first */
+    tri_rel_of(v, x, o_l, &w0, tri);
     fm_vec3_negate(&o, &w0);
     if (coll_ray_triangle(&o, dir, tri, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
         fm_vec3_add(&ph.point, &ph.point, &w0);
@@ -299,7 +310,12 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     if (!clip_box(&o_l, &d_l, lo, hi, &s0, &s1)) return;
 
     /* 3D DDA from the entry point. */
-    const uint32_t *cells = coll_mesh_cells(m);
+    coll_mesh_view_t mv;
+    coll_mesh_view_init(&mv, m);
+    const uint32_t *cells = mv.cells;
+    fm_vec3_t rlo, rhi;
+    float box_end = rb->best;
+    ray_local_box(&o_l, &d_l, s0, box_end, mg, &rlo, &rhi);
     float cs = m->cell_size, inv_cs = 1.0f / cs;
     uint32_t c[3];
     int step[3];
@@ -313,8 +329,13 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     for (;;) {
         uint32_t ci = c[0] + m->dims[0] * (c[1] + m->dims[1] * c[2]);
         for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
-            uint32_t t = coll_mesh_ref(m, k);
-            if (seen_first(seen, t)) ray_test_tri(inst, &x, &o_l, dir, t, rb);
+            uint32_t t = coll_mesh_view_ref(&mv, k);
+            if (!seen_first(seen, t)) continue;
+            if (rb->best < box_end) { /* the nearest hit shrank the ray: shrink its box */
+                box_end = rb->best;
+                ray_local_box(&o_l, &d_l, s0, box_end, mg, &rlo, &rhi);
+            }
+            ray_test_tri(inst, &mv, &x, &o_l, dir, &rlo, &rhi, t, rb);
         }
         /* Parameter where the ray leaves this cell: recomputed from the cell index (no
          * accumulated error). A hit no farther than that is the nearest: every point of
@@ -511,7 +532,9 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
     if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
-    const uint32_t *cells = coll_mesh_cells(m);
+    coll_mesh_view_t mv;
+    coll_mesh_view_init(&mv, m);
+    const uint32_t *cells = mv.cells;
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
@@ -519,10 +542,10 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
                 if (sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
                 uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
-                    uint32_t t = coll_mesh_ref(m, k);
+                    uint32_t t = coll_mesh_view_ref(&mv, k);
                     if (!seen_first(seen, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
-                    coll_mesh_tri_local(m, t, v);
+                    coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue; /* cheap local reject first */
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
@@ -660,6 +683,22 @@ static void contact_add(contacts_t *c, const coll_prim_hit_t *ph, const coll_mes
     o->id = inst ? inst->id : body->id;
 }
 
+/* The capsule segment (relative to the triangle's first vertex, shape[0] = 0) lies
+ * entirely on one side of the triangle's plane, farther than r (with a relative and a
+ * rounding allowance): no overlap is possible, without any closest-point work. */
+static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[3])
+{
+    fm_vec3_t n;
+    fm_vec3_cross(&n, &shape[1], &shape[2]);
+    float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]);
+    if (!(d0 * d1 > 0.0f)) return false;
+    float mn = min_f(d0 * d0, d1 * d1);
+    float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
+               fabsf(seg[1].z);
+    float rr = r * 1.001f + 1e-6f * l1 + 1e-7f;
+    return mn > rr * rr * fm_vec3_len2(&n);
+}
+
 static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const capsule_q_t *q,
                              seen_t *seen, contacts_t *c)
 {
@@ -672,24 +711,27 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
     if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
-    const uint32_t *cells = coll_mesh_cells(m);
+    coll_mesh_view_t mv;
+    coll_mesh_view_init(&mv, m);
+    const uint32_t *cells = mv.cells;
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
-                    uint32_t t = coll_mesh_ref(m, k);
+                    uint32_t t = coll_mesh_view_ref(&mv, k);
                     int sc = seen_check(seen, t);
                     if (sc == SEEN_BEFORE) continue;
                     if (sc == SEEN_UNKNOWN && listed_earlier(m, clo, chi, cx, cy, cz, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
-                    coll_mesh_tri_local(m, t, v);
+                    coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue;
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
                     fm_vec3_sub(&seg[0], &q->seg[0], &w0);
                     fm_vec3_sub(&seg[1], &q->seg[1], &w0);
+                    if (plane_rejects(q->r, seg, shape)) continue;
                     coll_prim_hit_t ph;
                     if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
                         fm_vec3_add(&ph.point, &ph.point, &w0);
