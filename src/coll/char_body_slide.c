@@ -333,7 +333,9 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
     fm_vec3_t p = *pos;
     fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
-    bool moved = false;
+    bool deep = false;
+    for (uint32_t i = 0; i < n0; i++)
+        if (!ct0[i].body && ct0[i].depth > 0.3f * c->radius) deep = true;
     for (int pass = 0; pass < 3; pass++) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
         bool any = false;
@@ -355,15 +357,20 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         for (uint32_t i = 0; i < n; i++)
             if (ct[i].depth > CB_MIN_DEPTH && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
         p = cb_add(p, delta);
-        moved = true;
+        if (!cb_finite(p)) return;
         n = overlaps_at(c, p, ct);
+        /* Verified result (the push is not swept): a pass's position is kept only when it
+         * overlaps nothing new or deeper than the start did. Otherwise the last verified
+         * one stays: still in what we were in, nothing worse; the next pass may get there.
+         * Exception: more than 0.3 r inside a mesh, the body was put there (teleport, up
+         * change, a mover; its own moves keep out), so it gets out by the shortest way
+         * even through shallower overlaps elsewhere, resolved by the next passes/steps
+         * (strict verification there left such bodies stuck for good). */
+        if (deep || no_worse(ct, n, ct0, n0)) {
+            *pos = p;
+            if (vel) *vel = v;
+        }
     }
-    /* Verified result: intermediate passes may touch other things on the way out, the
-     * final position may not overlap anything new or deeper than the start did (the push
-     * is not swept). Otherwise stay: still overlapping what we were in, nothing worse. */
-    if (!moved || !cb_finite(p) || !no_worse(ct, n, ct0, n0)) return;
-    *pos = p;
-    if (vel) *vel = v;
 }
 
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
