@@ -344,7 +344,10 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         g->origin[a] = m->bmin[a];
     }
     bool automatic = !(want_cell > 0.0f);
-    float cell = automatic ? 4.0f * mean_extent : want_cell;
+    /* Automatic: start at the mean triangle size but no finer than character scale (1 m:
+     * a query box is about that wide, finer cells only add cell visits), then grow until
+     * the grid fits the memory budget. */
+    float cell = automatic ? max_f(mean_extent, 1.0f) : want_cell;
     if (!(cell >= maxext * (1.0f / 4096.0f))) cell = maxext * (1.0f / 4096.0f);
     if (!(cell > 1e-6f)) cell = 1e-6f;
     uint64_t max_cells = automatic ? GRID_AUTO_CELLS(m->ntris) : GRID_MAX_CELLS(m->ntris);
@@ -362,9 +365,19 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         g->cell = cell;
         g->margin = cell * 1e-3f + maxabs * 2e-6f;
         bool single = g->dims[0] == 1u && g->dims[1] == 1u && g->dims[2] == 1u;
+        /* Automatic: the grid (cell array + refs) also stays within a byte budget per
+         * triangle, so the finer start costs no more memory than the old coarse default. */
+        uint64_t refs_cap = max_refs;
+        if (automatic) {
+            uint64_t budget = (uint64_t)m->ntris * ((m->flags & COLL_MESHF_QUANT) ? 9u : 19u) / 2u + 1024u;
+            uint64_t rsize = (m->flags & COLL_MESHF_REF16) ? 2u : 4u;
+            uint64_t left = budget > 4u * (ncells + 1u) ? budget - 4u * (ncells + 1u) : 0u;
+            if (left / rsize < refs_cap) refs_cap = left / rsize;
+            if (refs_cap < m->ntris && !single) fits = false;
+        }
         if (fits && ncells <= max_cells) {
             if (single) return;
-            count_ctx_t cc = { 0, max_refs };
+            count_ctx_t cc = { 0, refs_cap };
             bool ok = true;
             for (uint32_t t = 0; t < m->ntris && ok; t++) {
                 fm_vec3_t tri[3];
