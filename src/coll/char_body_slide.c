@@ -236,9 +236,12 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         if (t <= 0.0f && hit.depth > 0.0f) {
             /* Started inside: step out along the push-out direction first, verified
              * (not swept: a sweep from inside stops at once); a push that would end
-             * inside something else ends the slide here instead. */
+             * inside something else ends the slide here instead. More than 0.3 r
+             * inside a mesh the game put the body there (as in cb_recover): get out. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
-            if (!cb_push_verified(c, pos, cb_scale(hit.normal, d + c->skin * 0.5f))) break;
+            fm_vec3_t push = cb_scale(hit.normal, d + c->skin * 0.5f);
+            if (!hit.body && hit.depth > 0.3f * c->radius) *pos = cb_add(*pos, push);
+            else if (!cb_push_verified(c, pos, push)) break;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
