@@ -43,8 +43,10 @@ static int fix_checksum(uint8_t *b, size_t size)
     uint64_t ncells = 1;
     for (int a = 0; a < 3; a++) {
         ncells *= be32(b + offsetof(struct coll_mesh_s, dims) + 4u * (unsigned)a);
-        if (ncells > size) return 0;
+        if (ncells > size) ncells = size + 1u; /* no overflow; hashed grids ignore it */
     }
+    if (flags & COLL_MESHF_HASH) ncells = be32(b + offsetof(struct coll_mesh_s, nbuckets));
+    if (ncells > size) return 0;
     if (nverts > size || ntris > size || nrefs > size) return 0;
     coll_mesh_layout_t l = coll_mesh_layout_of(flags, nverts, ntris, ncells, nrefs);
     if (l.total > size) return 0;

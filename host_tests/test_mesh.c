@@ -62,7 +62,7 @@ static void check_grid_complete(const coll_mesh_t *m, int samples)
                     double p = a * v[0].v[k] + b * v[1].v[k] + c * v[2].v[k];
                     cc[k] = cell_coord_d(p, m->grid_origin[k], m->cell_size, m->dims[k]);
                 }
-                uint32_t cell = cc[0] + m->dims[0] * (cc[1] + m->dims[1] * cc[2]);
+                uint32_t cell = coll_mesh_cell_index(m, cc[0], cc[1], cc[2]);
                 if (!cell_has(m, cell, t)) {
                     char msg[128];
                     snprintf(msg, sizeof msg, "triangle %u missing from cell %u", t, cell);
@@ -159,7 +159,7 @@ static void test_size_bound_and_grid_complete_random(void)
         coll_mesh_build_opts_t o = { 0.0f, (round & 1) ? COLL_MESH_QUANTIZE : 0u };
         if (round % 5 == 2) o.cell_size = (float)core_rng_range(&r, 0.01, 5.0); /* tiny cells: grid must grow */
         const coll_mesh_t *m = build(nv, nt, &o);
-        TEST_ASSERT_TRUE(m->dims[0] * m->dims[1] * m->dims[2] <= 2 * nt + 64);
+        TEST_ASSERT_TRUE(coll_mesh_cell_count(m) <= 2 * nt + 64);
         TEST_ASSERT_TRUE(m->nrefs <= 8 * nt + 64);
         check_grid_complete(m, 6);
     }
@@ -187,7 +187,7 @@ static void test_huge_triangle_spans_many_cells(void)
     g_idx[3 * nt] = nv; g_idx[3 * nt + 1] = nv + 1; g_idx[3 * nt + 2] = nv + 2;
     coll_mesh_build_opts_t o = { 1.0f, 0 };
     const coll_mesh_t *m = build(nv + 3, nt + 1, &o);
-    uint32_t count = 0, ncells = m->dims[0] * m->dims[1] * m->dims[2];
+    uint32_t count = 0, ncells = (uint32_t)coll_mesh_cell_count(m);
     for (uint32_t c = 0; c < ncells; c++) count += cell_has(m, c, nt);
     TEST_ASSERT_TRUE_MESSAGE(count > 50, "huge triangle should be listed in many cells");
     /* ...but not in every cell of its box: the plane/box test trims it */
@@ -216,7 +216,7 @@ static void test_triangles_on_cell_boundaries(void)
     TEST_ASSERT_EQUAL_FLOAT(1.0f, m->cell_size);
     check_grid_complete(m, 16);
     /* The x = 2 triangle is registered on both sides of its plane. */
-    uint32_t c_lo = 1 + m->dims[0] * (1 + m->dims[1] * 1), c_hi = 2 + m->dims[0] * (1 + m->dims[1] * 1);
+    uint32_t c_lo = coll_mesh_cell_index(m, 1, 1, 1), c_hi = coll_mesh_cell_index(m, 2, 1, 1);
     TEST_ASSERT_TRUE(cell_has(m, c_lo, 1));
     TEST_ASSERT_TRUE(cell_has(m, c_hi, 1));
 }
@@ -261,6 +261,30 @@ static void test_bytes_per_triangle(void)
     TEST_ASSERT_TRUE_MESSAGE(bq <= 14.0, msg);
 }
 
+/* Cells finer than a dense grid of the budget allows are hashed: the requested cell is
+ * kept, the cell entries stay within the budget, every triangle is found from every cell
+ * it touches, and the result is no bigger than coll_mesh_build_size(). */
+static void test_fine_cells_are_hashed(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 60, 40, 1.0f, -30, 0, -20);
+    for (uint32_t v = 0; v < nv; v++) g_verts[3 * v + 1] += g_verts[3 * v]; /* a 60 m high 45 deg ramp */
+    coll_mesh_build_opts_t o = { 2.0f, 0 };
+    const coll_mesh_t *m = build(nv, nt, &o); /* 30 x 31 x 20 cells > 2 nt + 64 */
+    TEST_ASSERT_TRUE(m->flags & COLL_MESHF_HASH);
+    TEST_ASSERT_EQUAL_FLOAT(2.0f, m->cell_size);
+    TEST_ASSERT_TRUE(m->nbuckets <= 2 * nt + 64);
+    TEST_ASSERT_EQUAL_UINT32(0, m->nbuckets & (m->nbuckets - 1));
+    TEST_ASSERT_TRUE((uint64_t)m->dims[0] * m->dims[1] * m->dims[2] > m->nbuckets);
+    check_grid_complete(m, 8);
+    /* a coarse request stays a dense grid */
+    o.cell_size = 8.0f;
+    m = build(nv, nt, &o);
+    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_HASH);
+    TEST_ASSERT_EQUAL_UINT32(0, m->nbuckets);
+    check_grid_complete(m, 8);
+}
+
 static void test_32bit_indices_when_many_vertices(void)
 {
     uint32_t nv;
@@ -287,6 +311,7 @@ int main(void)
     RUN_TEST(test_triangles_on_cell_boundaries);
     RUN_TEST(test_quantized_vertices_close);
     RUN_TEST(test_bytes_per_triangle);
+    RUN_TEST(test_fine_cells_are_hashed);
     RUN_TEST(test_32bit_indices_when_many_vertices);
     return UNITY_END();
 }

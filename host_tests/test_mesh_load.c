@@ -136,7 +136,7 @@ static void walk_mesh(const coll_mesh_t *l)
         coll_mesh_triangle(l, t, v);
     }
     const uint32_t *cells = coll_mesh_cells(l);
-    uint32_t n = l->dims[0] * l->dims[1] * l->dims[2];
+    uint32_t n = (uint32_t)coll_mesh_cell_count(l);
     for (uint32_t c = 0; c < n; c++)
         for (uint32_t k = cells[c]; k < cells[c + 1]; k++) TEST_ASSERT_TRUE(coll_mesh_ref(l, k) < l->ntris);
 }
@@ -185,7 +185,7 @@ static void put_be32(uint8_t *p, uint32_t v) { p[0] = (uint8_t)(v >> 24); p[1] =
 static void forge_checksum(uint8_t *b, size_t size)
 {
     uint32_t flags = be32(b + 8), nverts = be32(b + 20), ntris = be32(b + 24), nrefs = be32(b + 28);
-    uint64_t ncells = (uint64_t)be32(b + 72) * be32(b + 76) * be32(b + 80);
+    uint64_t ncells = (flags & 8) ? be32(b + 124) : (uint64_t)be32(b + 72) * be32(b + 76) * be32(b + 80);
     if (ncells > size) return;
     uint64_t off[4] = { be32(b + 108), be32(b + 112), be32(b + 116), be32(b + 120) };
     uint64_t cnt[4] = { (uint64_t)nverts * 3, (uint64_t)ntris * 3, ncells + 1, nrefs };

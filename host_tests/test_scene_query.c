@@ -31,12 +31,17 @@ static float g_verts[3 * MAXV];
 static uint32_t g_idx[3 * MAXT];
 static uint64_t g_meshbuf[3][(1u << 19) / 8];
 
+/* Grids built by build_mesh() of each kind (the randomized agreement must cover both). */
+static uint32_t g_hashed_built, g_dense_built;
+
 static const coll_mesh_t *build_mesh(int slot, uint32_t nv, uint32_t nt, const coll_mesh_build_opts_t *o)
 {
     const coll_mesh_t *m = NULL;
     size_t need = coll_mesh_build_size(nv, nt, o);
     TEST_ASSERT_TRUE(need <= sizeof g_meshbuf[0]);
     TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_build(g_meshbuf[slot], need, g_verts, nv, g_idx, nt, o, &m));
+    if (m->flags & COLL_MESHF_HASH) g_hashed_built++;
+    else g_dense_built++;
     return m;
 }
 
@@ -1192,6 +1197,15 @@ static void probe_bodies(void)
     if (!g_bodies_supported) printf("NOTE: collider-body primitives not implemented yet; random tests use meshes only\n");
 }
 
+/* Runs after the randomized agreement tests: both grid layouts (dense and hashed) were
+ * among the meshes they compared against the double reference. */
+static void test_grid_kinds_covered(void)
+{
+    printf("grids built: %u dense, %u hashed\n", g_dense_built, g_hashed_built);
+    TEST_ASSERT_TRUE(g_dense_built > 0);
+    TEST_ASSERT_TRUE(g_hashed_built > 0);
+}
+
 int main(void)
 {
     probe_bodies();
@@ -1209,5 +1223,6 @@ int main(void)
     RUN_TEST(test_sweeps_test_few_triangles_on_a_big_level);
     RUN_TEST(test_random_raycasts_match_reference);
     RUN_TEST(test_random_capsule_sweeps_match_reference);
+    RUN_TEST(test_grid_kinds_covered);
     return UNITY_END();
 }

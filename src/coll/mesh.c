@@ -18,6 +18,8 @@ static inline float max_f(float a, float b) { return a > b ? a : b; }
 #define GRID_MAX_REFS(n)  (8u * (uint64_t)(n) + 64u)
 /* Softer targets for an automatically chosen cell size (smaller blobs). */
 #define GRID_AUTO_CELLS(n) ((uint64_t)(n) / 2u + 64u)
+/* Hashed grids (cells finer than a dense grid of the budget allows): entries, a power of two. */
+#define GRID_AUTO_BUCKETS(n) ((uint64_t)(n) / 4u + 64u)
 #define GRID_AUTO_REFS(n)  (3u * (uint64_t)(n) + 64u)
 #define QMAX 65535.0f
 
@@ -103,9 +105,11 @@ static uint32_t checksum_of(const uint8_t *b, bool swap, const section_t s[4])
     return h;
 }
 
-static uint64_t ncells_of(const coll_mesh_t *m)
+static uint64_t ncells_of(const coll_mesh_t *m) { return coll_mesh_cell_count(m); }
+
+static uint32_t hash_cell(uint32_t x, uint32_t y, uint32_t z, uint32_t nbuckets)
 {
-    return (uint64_t)m->dims[0] * m->dims[1] * m->dims[2];
+    return ((x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u)) & (nbuckets - 1u);
 }
 
 static coll_mesh_layout_t layout_of_mesh(const coll_mesh_t *m)
@@ -245,6 +249,7 @@ typedef struct {
     float cell;
     float margin;
     uint32_t dims[3];
+    uint32_t nbuckets; /* 0: dense grid; else hashed (power of two) */
 } grid_t;
 
 static uint32_t cell_coord(float x, float origin, float inv, uint32_t dim)
@@ -271,6 +276,12 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
         hi[a] = cell_coord(mx, g->origin[a], inv, g->dims[a]);
     }
     bool single = lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2];
+    /* Hashed grid: a triangle is listed once per entry even when several of its cells
+     * share it (the first DEDUP entries it reaches are remembered; beyond that a repeat
+     * is only redundant, never wrong). Every pass visits in the same order. */
+#define DEDUP 32
+    uint32_t done[DEDUP];
+    uint32_t ndone = 0;
     float h[3] = { 0.5f * g->cell + g->margin, 0.5f * g->cell + g->margin, 0.5f * g->cell + g->margin };
     for (uint32_t z = lo[2]; z <= hi[2]; z++) {
         for (uint32_t y = lo[1]; y <= hi[1]; y++) {
@@ -281,7 +292,17 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
                                    g->origin[2] + ((float)z + 0.5f) * g->cell };
                     if (!tri_box_overlap(tri, c, h)) continue;
                 }
-                if (!visit(ctx, x + g->dims[0] * (y + g->dims[1] * z))) return false;
+                uint32_t e;
+                if (g->nbuckets) {
+                    e = hash_cell(x, y, z, g->nbuckets);
+                    bool rep = false;
+                    for (uint32_t i = 0; i < ndone && !rep; i++) rep = done[i] == e;
+                    if (rep) continue;
+                    if (ndone < DEDUP) done[ndone++] = e;
+                } else {
+                    e = x + g->dims[0] * (y + g->dims[1] * z);
+                }
+                if (!visit(ctx, e)) return false;
             }
         }
     }
@@ -362,6 +383,15 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
             g->dims[a] = (uint32_t)d;
             ncells *= g->dims[a];
         }
+        /* Finer than a dense grid of the budget: hash the cells into a power-of-two
+         * number of entries (memory where the triangles are, not per cell). */
+        g->nbuckets = 0;
+        if (ncells > max_cells) {
+            uint64_t want = automatic ? GRID_AUTO_BUCKETS(m->ntris) : max_cells, nb = 64;
+            while (nb * 2u <= want) nb *= 2u;
+            g->nbuckets = (uint32_t)nb;
+            ncells = nb;
+        }
         g->cell = cell;
         g->margin = cell * 1e-3f + maxabs * 2e-6f;
         bool single = g->dims[0] == 1u && g->dims[1] == 1u && g->dims[2] == 1u;
@@ -375,7 +405,25 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
             if (left / rsize < refs_cap) refs_cap = left / rsize;
             if (refs_cap < m->ntris && !single) fits = false;
         }
-        if (fits && ncells <= max_cells) {
+        /* Hashed: the cells are no longer bounded by the budget, so bound the build work
+         * (cells tested per triangle box) by a multiple of the refs allowed. */
+        if (fits && g->nbuckets) {
+            uint64_t work = 0, limit = 16u * refs_cap + 4096u;
+            float inv = 1.0f / cell;
+            for (uint32_t t = 0; t < m->ntris && work <= limit; t++) {
+                fm_vec3_t tri[3];
+                coll_mesh_tri_local(m, t, tri);
+                uint64_t n = 1;
+                for (int a = 0; a < 3; a++) {
+                    float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
+                    float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
+                    n *= 1u + cell_coord(mx, g->origin[a], inv, g->dims[a]) - cell_coord(mn, g->origin[a], inv, g->dims[a]);
+                }
+                work += n;
+            }
+            if (work > limit) fits = false;
+        }
+        if (fits) {
             if (single) return;
             count_ctx_t cc = { 0, refs_cap };
             bool ok = true;
@@ -500,6 +548,12 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
     grid_t g;
     choose_grid(m, opts ? opts->cell_size : 0.0f, nt ? extent_sum / (float)nt : 1.0f, &g);
     uint64_t ncells = (uint64_t)g.dims[0] * g.dims[1] * g.dims[2];
+    if (g.nbuckets) {
+        ncells = g.nbuckets;
+        m->flags |= COLL_MESHF_HASH;
+        m->nbuckets = g.nbuckets;
+        flags = m->flags;
+    }
     l = coll_mesh_layout_of(flags, nverts, nt, ncells, 0);
     if (l.off_refs > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
     uint64_t tris_end = l.off_tris + (uint64_t)nt * stride;
@@ -554,15 +608,20 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
     if (h.version != COLL_MESH_VERSION) return COLL_ERR_VERSION;
     if (h.total_size > size) return COLL_ERR_TRUNCATED;
     if (h.total_size < sizeof h || (h.total_size & 7u)) return COLL_ERR_CORRUPT;
-    if ((h.flags & ~(uint32_t)COLL_MESHF_ALL) || h.reserved != 0u) return COLL_ERR_CORRUPT;
+    if (h.flags & ~(uint32_t)COLL_MESHF_ALL) return COLL_ERR_CORRUPT;
+    bool hashed = (h.flags & COLL_MESHF_HASH) != 0u;
+    if (hashed ? (h.nbuckets == 0u || (h.nbuckets & (h.nbuckets - 1u)) != 0u) : h.nbuckets != 0u)
+        return COLL_ERR_CORRUPT;
     uint64_t limit = h.total_size;
     if (h.nverts > limit || h.ntris > limit || h.nrefs > limit) return COLL_ERR_CORRUPT;
     uint64_t ncells = 1;
     for (int a = 0; a < 3; a++) {
-        if (h.dims[a] == 0u || h.dims[a] > limit) return COLL_ERR_CORRUPT;
+        if (h.dims[a] == 0u || h.dims[a] > 1048576u) return COLL_ERR_CORRUPT;
         ncells *= h.dims[a];
-        if (ncells > limit) return COLL_ERR_CORRUPT;
+        if (!hashed && ncells > limit) return COLL_ERR_CORRUPT;
     }
+    if (hashed) ncells = h.nbuckets;
+    if (ncells > limit) return COLL_ERR_CORRUPT;
     for (int a = 0; a < 3; a++) {
         if (!hdr_float_ok(h.bmin[a]) || !hdr_float_ok(h.bmax[a]) || !hdr_float_ok(h.grid_origin[a]) ||
             !hdr_float_ok(h.qorigin[a]) || !hdr_float_ok(h.qscale[a]))

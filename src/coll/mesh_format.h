@@ -9,9 +9,14 @@
  *     vertices   nverts x {float x,y,z}            (12 B each), or, with COLL_MESHF_QUANT,
  *                nverts x {uint16 x,y,z}           (6 B each): local = qorigin + q * qscale
  *     triangles  ntris x 3 vertex indices, uint16 with COLL_MESHF_IDX16, else uint32
- *     cells      (ncells + 1) x uint32 prefix array: the triangles of cell c are
- *                refs[cells[c] .. cells[c+1]), ncells = dims[0] * dims[1] * dims[2],
- *                cell (x,y,z) has index x + dims[0] * (y + dims[1] * z)
+ *     cells      (ncells + 1) x uint32 prefix array: the triangles of cell entry c are
+ *                refs[cells[c] .. cells[c+1]). Dense grid: ncells = dims[0] * dims[1] *
+ *                dims[2], cell (x,y,z) has entry x + dims[0] * (y + dims[1] * z).
+ *                Hashed grid (COLL_MESHF_HASH, version 2): ncells = nbuckets (a power of
+ *                two), cell (x,y,z) has entry coll_mesh_cell_index(): cells that collide
+ *                share their entry (its list is the union, each triangle once per cell it
+ *                was registered from, ascending), so fine cells cost memory only where
+ *                there are triangles; queries test every candidate exactly anyway.
  *     refs       nrefs triangle indices, uint16 with COLL_MESHF_REF16, else uint32
  *
  * Every section starts at an 8-byte aligned offset that is a pure function of the counts
@@ -36,13 +41,14 @@
 
 #define COLL_MESH_MAGIC_BLOB   0x434D5348u /**< "CMSH": big-endian baked file, not yet loaded */
 #define COLL_MESH_MAGIC_NATIVE 0x434D534Eu /**< "CMSN": native byte order, ready to use */
-#define COLL_MESH_VERSION      1u
+#define COLL_MESH_VERSION      2u /**< 2: hashed grid (COLL_MESHF_HASH, nbuckets) */
 
 enum {
     COLL_MESHF_QUANT = 1u << 0, /**< vertices are uint16 fixed point */
     COLL_MESHF_IDX16 = 1u << 1, /**< triangle vertex indices are uint16 (nverts <= 65535) */
     COLL_MESHF_REF16 = 1u << 2, /**< grid refs are uint16 (ntris <= 65535) */
-    COLL_MESHF_ALL   = 7u,
+    COLL_MESHF_HASH  = 1u << 3, /**< cells are nbuckets hash buckets, not the dense grid */
+    COLL_MESHF_ALL   = 15u,
 };
 
 /** Header. All fields are 32-bit words (floats are IEEE-754 binary32). */
@@ -66,7 +72,7 @@ struct coll_mesh_s {
     uint32_t off_tris;
     uint32_t off_cells;
     uint32_t off_refs;
-    uint32_t reserved;    /**< 0 */
+    uint32_t nbuckets;    /**< COLL_MESHF_HASH: cell entries (power of two), else 0 */
 };
 _Static_assert(sizeof(struct coll_mesh_s) == 128, "on-disk mesh header must stay 128 bytes");
 
@@ -99,6 +105,21 @@ static inline coll_mesh_layout_t coll_mesh_layout_of(uint32_t flags, uint64_t nv
 coll_err_t coll_mesh_write_blob(const coll_mesh_t *m, void *out, size_t out_size, size_t *written);
 
 /* ---- internal accessors for the scene queries (src/coll only) ---- */
+
+/** Number of cell entries (the cells array holds one more). */
+static inline uint64_t coll_mesh_cell_count(const coll_mesh_t *m)
+{
+    if (m->flags & COLL_MESHF_HASH) return m->nbuckets;
+    return (uint64_t)m->dims[0] * m->dims[1] * m->dims[2];
+}
+
+/** Cell entry of grid cell (x,y,z) (each coordinate < dims, unchecked). */
+static inline uint32_t coll_mesh_cell_index(const coll_mesh_t *m, uint32_t x, uint32_t y, uint32_t z)
+{
+    if (m->flags & COLL_MESHF_HASH)
+        return ((x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u)) & (m->nbuckets - 1u);
+    return x + m->dims[0] * (y + m->dims[1] * z);
+}
 
 /** Grid cell triangles: refs[begin..end). */
 static inline uint32_t coll_mesh_ref(const coll_mesh_t *m, uint32_t k)

@@ -207,14 +207,19 @@ static bool in_cell(const coll_mesh_t *m, uint32_t ci, uint32_t tri)
     return false;
 }
 
-static bool listed_earlier(const coll_mesh_t *m, const uint32_t clo[3], const uint32_t chi[3], uint32_t cx,
-                           uint32_t cy, uint32_t cz, uint32_t tri)
+static bool listed_earlier(const coll_mesh_t *m, bool walk_all, const uint32_t clo[3], const uint32_t chi[3],
+                           uint32_t cx, uint32_t cy, uint32_t cz, uint32_t tri)
 {
+    if (walk_all) { /* entries 0..cx-1 were walked before entry cx */
+        for (uint32_t e = 0; e < cx; e++)
+            if (in_cell(m, e, tri)) return true;
+        return false;
+    }
     for (uint32_t z = clo[2]; z <= cz; z++)
         for (uint32_t y = clo[1]; y <= chi[1]; y++)
             for (uint32_t x = clo[0]; x <= chi[0]; x++) {
                 if (z == cz && (y > cy || (y == cy && x >= cx))) return false;
-                if (in_cell(m, x + m->dims[0] * (y + m->dims[1] * z), tri)) return true;
+                if (in_cell(m, coll_mesh_cell_index(m, x, y, z), tri)) return true;
             }
     return false;
 }
@@ -327,7 +332,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
         inv_d[a] = step[a] ? 1.0f / d_l.v[a] : 0.0f;
     }
     for (;;) {
-        uint32_t ci = c[0] + m->dims[0] * (c[1] + m->dims[1] * c[2]);
+        uint32_t ci = coll_mesh_cell_index(m, c[0], c[1], c[2]);
         for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
             uint32_t t = coll_mesh_view_ref(&mv, k);
             if (!seen_first(seen, t)) continue;
@@ -490,6 +495,20 @@ static bool instance_cells(const coll_mesh_t *m, const fm_vec3_t *llo, const fm_
     return true;
 }
 
+/* Hashed grid and a box of more cells than the grid has entries (a long sweep over fine
+ * cells): walk the entries once each instead (every triangle is still a candidate, so
+ * the result is the same); the loops then run cx over the entries with cy = cz = 0. */
+static bool walk_entries(const coll_mesh_t *m, uint32_t clo[3], uint32_t chi[3])
+{
+    if (!(m->flags & COLL_MESHF_HASH)) return false;
+    uint64_t n = (uint64_t)(chi[0] - clo[0] + 1u) * (chi[1] - clo[1] + 1u) * (chi[2] - clo[2] + 1u);
+    if (n <= m->nbuckets) return false;
+    clo[0] = clo[1] = clo[2] = 0u;
+    chi[0] = m->nbuckets - 1u;
+    chi[1] = chi[2] = 0u;
+    return true;
+}
+
 /* Cell (cx,cy,cz) (clamped edge cells extend to infinity) misses the local box. */
 static bool cell_misses(const coll_mesh_t *m, uint32_t cx, uint32_t cy, uint32_t cz, const fm_vec3_t *llo,
                         const fm_vec3_t *lhi)
@@ -532,6 +551,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
     if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
+    bool walk_all = walk_entries(m, clo, chi);
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
@@ -539,8 +559,8 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 /* the sweep may have shrunk since the range was computed */
-                if (sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
-                uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
+                if (!walk_all && sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
+                uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
                     if (!seen_first(seen, t)) continue;
@@ -711,18 +731,19 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
     uint32_t clo[3], chi[3];
     if (!instance_cells(m, &llo, &lhi, clo, chi)) return;
+    bool walk_all = walk_entries(m, clo, chi);
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
-                uint32_t ci = cx + m->dims[0] * (cy + m->dims[1] * cz);
+                uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
                     int sc = seen_check(seen, t);
                     if (sc == SEEN_BEFORE) continue;
-                    if (sc == SEEN_UNKNOWN && listed_earlier(m, clo, chi, cx, cy, cz, t)) continue;
+                    if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
                     coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue;

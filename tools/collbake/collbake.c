@@ -470,7 +470,7 @@ typedef struct {
 static void analyse_grid(const coll_mesh_t *m, grid_stats_t *g)
 {
     memset(g, 0, sizeof *g);
-    g->ncells = (uint64_t)m->dims[0] * m->dims[1] * m->dims[2];
+    g->ncells = coll_mesh_cell_count(m); /* hashed grids: the buckets */
     const uint32_t *cells = coll_mesh_cells(m);
     uint32_t *per_tri = xcalloc(m->ntris ? m->ntris : 1, sizeof(uint32_t));
     for (uint64_t c = 0; c < g->ncells; c++) {
@@ -653,10 +653,12 @@ int main(int argc, char **argv)
            (double)m->bmin[0], (double)m->bmin[1], (double)m->bmin[2], (double)m->bmax[0], (double)m->bmax[1],
            (double)m->bmax[2], (double)(m->bmax[0] - m->bmin[0]), (double)(m->bmax[1] - m->bmin[1]),
            (double)(m->bmax[2] - m->bmin[2]));
-    printf("  grid       cell %.3f m (%s), %u x %u x %u = %llu cells, %llu non-empty\n", (double)m->cell_size,
+    printf("  grid       cell %.3f m (%s), %u x %u x %u %s %llu %s, %llu non-empty\n", (double)m->cell_size,
            o.cell_size > 0.0f ? (m->cell_size == o.cell_size ? "--cell-size" : "grown from --cell-size to fit")
                               : "automatic",
-           m->dims[0], m->dims[1], m->dims[2], (unsigned long long)gs.ncells, (unsigned long long)gs.nonempty);
+           m->dims[0], m->dims[1], m->dims[2], (m->flags & COLL_MESHF_HASH) ? "hashed into" : "=",
+           (unsigned long long)gs.ncells, (m->flags & COLL_MESHF_HASH) ? "buckets" : "cells",
+           (unsigned long long)gs.nonempty);
     printf("  per cell   max %u triangles, mean %.2f over non-empty cells; %u refs (%.2f cells per triangle)\n",
            gs.max_per_cell, gs.mean_per_nonempty, m->nrefs, m->ntris ? (double)m->nrefs / m->ntris : 0.0);
     printf("  size       %u bytes, %.1f bytes/triangle (header 128, vertices %llu, triangles %llu, cells %llu, refs %llu)\n",
