@@ -147,22 +147,62 @@ static uint32_t cell_of(float x, float origin, float inv, uint32_t dim)
 #define SEEN_SLOTS (1u << SEEN_BITS)
 #define SEEN_MAX 384u
 
+/* The table starts with its first SEEN_BITS0 bits only (most queries meet a few dozen
+ * triangles; clearing all 2 KB per query was ~10% of a walking step) and grows to the
+ * full table when it is half full (linear probing stays short). */
+#define SEEN_BITS0 7
+
 typedef struct {
-    uint32_t slot[SEEN_SLOTS]; /* tri + 1, 0 = empty */
+    uint32_t slot[SEEN_SLOTS]; /* tri + 1, 0 = empty; only the first 1 << bits are in use */
     uint16_t used[SEEN_MAX];
     uint32_t n;
+    uint32_t bits;
     bool overflow;
+    bool ready; /* the table is cleared only when a query first needs it */
 } seen_t;
 
 static void seen_init(seen_t *s)
 {
-    memset(s->slot, 0, sizeof s->slot);
     s->n = 0;
     s->overflow = false;
+    s->ready = false;
+}
+
+static void seen_ready(seen_t *s)
+{
+    if (s->ready) return;
+    for (uint32_t i = 0; i < (1u << SEEN_BITS0); i++) s->slot[i] = 0u;
+    s->bits = SEEN_BITS0;
+    s->ready = true;
+}
+
+static uint32_t seen_probe(const seen_t *s, uint32_t key)
+{
+    uint32_t mask = (1u << s->bits) - 1u;
+    uint32_t h = (key * 2654435761u) >> (32 - s->bits);
+    while (s->slot[h] != 0u && s->slot[h] != key) h = (h + 1u) & mask;
+    return h;
+}
+
+/* Moves the table to its full size (the n keys are re-inserted). */
+static void seen_grow(seen_t *s)
+{
+    uint32_t keys[(1u << SEEN_BITS0) / 2u + 1u];
+    uint32_t old = 1u << s->bits;
+    for (uint32_t i = 0; i < s->n; i++) keys[i] = s->slot[s->used[i]];
+    memset(s->slot, 0, sizeof(uint32_t) * old);
+    memset(s->slot + old, 0, sizeof(uint32_t) * (SEEN_SLOTS - old));
+    s->bits = SEEN_BITS;
+    for (uint32_t i = 0; i < s->n; i++) {
+        uint32_t h = seen_probe(s, keys[i]);
+        s->slot[h] = keys[i];
+        s->used[i] = (uint16_t)h;
+    }
 }
 
 static void seen_clear(seen_t *s)
 {
+    if (!s->ready) return;
     for (uint32_t i = 0; i < s->n; i++) s->slot[s->used[i]] = 0;
     s->n = 0;
 }
@@ -174,16 +214,15 @@ enum { SEEN_BEFORE = 0, SEEN_NEW = 1, SEEN_UNKNOWN = 2 };
 static int seen_check(seen_t *s, uint32_t tri)
 {
     uint32_t key = tri + 1u;
-    uint32_t h = (key * 2654435761u) >> (32 - SEEN_BITS);
-    for (;;) {
-        uint32_t v = s->slot[h];
-        if (v == key) return SEEN_BEFORE;
-        if (v == 0u) break;
-        h = (h + 1u) & (SEEN_SLOTS - 1u);
-    }
+    uint32_t h = seen_probe(s, key);
+    if (s->slot[h] == key) return SEEN_BEFORE;
     if (s->n >= SEEN_MAX) {
         s->overflow = true;
         return SEEN_UNKNOWN;
+    }
+    if (s->bits < SEEN_BITS && s->n + 1u > (1u << s->bits) / 2u) {
+        seen_grow(s);
+        h = seen_probe(s, key);
     }
     s->slot[h] = key;
     s->used[s->n++] = (uint16_t)h;
@@ -191,6 +230,31 @@ static int seen_check(seen_t *s, uint32_t tri)
 }
 
 static bool seen_first(seen_t *s, uint32_t tri) { return seen_check(s, tri) != SEEN_BEFORE; }
+
+/* Within the first cell entry a query visits no triangle can repeat (a cell lists each
+ * triangle once), so the table is not used there: it is started (cleared, and given the
+ * first entry's triangles, all of which were candidates) only when a second entry comes.
+ * Single-cell queries never touch it. */
+typedef struct {
+    uint32_t ncell, first;
+} lazy_seen_t;
+
+/* Call once per cell entry ci before its triangles; true when they must be deduplicated. */
+static bool lazy_enter(lazy_seen_t *z, seen_t *s, const coll_mesh_view_t *mv, uint32_t ci)
+{
+    if (z->ncell == 0u) {
+        z->first = ci;
+        z->ncell = 1u;
+        return false;
+    }
+    if (z->ncell == 1u) {
+        seen_ready(s);
+        for (uint32_t k = mv->cells[z->first]; k < mv->cells[z->first + 1u]; k++)
+            (void)seen_check(s, coll_mesh_view_ref(mv, k));
+        z->ncell = 2u;
+    }
+    return true;
+}
 
 /* Exact fallback for the overlap list when the table is full: tri is new in cell
  * (cx,cy,cz) unless a cell visited earlier in the same box walk lists it (cells keep
@@ -331,11 +395,13 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
         step[a] = d_l.v[a] > 0.0f ? 1 : (d_l.v[a] < 0.0f ? -1 : 0);
         inv_d[a] = step[a] ? 1.0f / d_l.v[a] : 0.0f;
     }
+    lazy_seen_t lz = { 0u, 0u };
     for (;;) {
         uint32_t ci = coll_mesh_cell_index(m, c[0], c[1], c[2]);
+        bool dedup = lazy_enter(&lz, seen, &mv, ci);
         for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
             uint32_t t = coll_mesh_view_ref(&mv, k);
-            if (!seen_first(seen, t)) continue;
+            if (dedup && !seen_first(seen, t)) continue;
             if (rb->best < box_end) { /* the nearest hit shrank the ray: shrink its box */
                 box_end = rb->best;
                 ray_local_box(&o_l, &d_l, s0, box_end, mg, &rlo, &rhi);
@@ -555,15 +621,17 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
+    lazy_seen_t lz = { 0u, 0u };
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 /* the sweep may have shrunk since the range was computed */
                 if (!walk_all && sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
                 uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
+                bool dedup = lazy_enter(&lz, seen, &mv, ci);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
-                    if (!seen_first(seen, t)) continue;
+                    if (dedup && !seen_first(seen, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
                     coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue; /* cheap local reject first */
@@ -735,13 +803,20 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
+    /* a hashed entry may list a triangle twice (see the builder): dedup from the start */
+    lazy_seen_t lz = { 0u, 0u };
+    if (m->flags & COLL_MESHF_HASH) {
+        seen_ready(seen);
+        lz.ncell = 2u;
+    }
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
+                bool dedup = lazy_enter(&lz, seen, &mv, ci);
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
-                    int sc = seen_check(seen, t);
+                    int sc = dedup ? seen_check(seen, t) : SEEN_NEW;
                     if (sc == SEEN_BEFORE) continue;
                     if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
