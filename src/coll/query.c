@@ -176,7 +176,7 @@ static void seen_ready(seen_t *s)
     s->ready = true;
 }
 
-static uint32_t seen_probe(const seen_t *s, uint32_t key)
+static inline uint32_t seen_probe(const seen_t *s, uint32_t key)
 {
     uint32_t mask = (1u << s->bits) - 1u;
     uint32_t h = (key * 2654435761u) >> (32 - s->bits);
@@ -211,7 +211,7 @@ enum { SEEN_BEFORE = 0, SEEN_NEW = 1, SEEN_UNKNOWN = 2 };
 
 /* SEEN_NEW when tri has not been seen yet (so it must be tested), SEEN_UNKNOWN when the
  * table is full and tri is not in it (test it; it may be a repeat). */
-static int seen_check(seen_t *s, uint32_t tri)
+static inline int seen_check(seen_t *s, uint32_t tri)
 {
     uint32_t key = tri + 1u;
     uint32_t h = seen_probe(s, key);
