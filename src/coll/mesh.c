@@ -365,10 +365,10 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         g->origin[a] = m->bmin[a];
     }
     bool automatic = !(want_cell > 0.0f);
-    /* Automatic: start at the mean triangle size but no finer than character scale (1 m:
-     * a query box is about that wide, finer cells only add cell visits), then grow until
-     * the grid fits the memory budget. */
-    float cell = automatic ? max_f(mean_extent, 1.0f) : want_cell;
+    /* Automatic: start at half the mean triangle size but no finer than character scale
+     * (1 m: a query box is about that wide, finer cells only add cell visits), then grow
+     * in steps of 1.25 until the grid fits the memory budget. */
+    float cell = automatic ? max_f(0.5f * mean_extent, 1.0f) : want_cell;
     if (!(cell >= maxext * (1.0f / 4096.0f))) cell = maxext * (1.0f / 4096.0f);
     if (!(cell > 1e-6f)) cell = 1e-6f;
     uint64_t max_cells = automatic ? GRID_AUTO_CELLS(m->ntris) : GRID_MAX_CELLS(m->ntris);
@@ -435,7 +435,7 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
             if (ok) return;
         }
         if (single) return; /* cannot happen: one cell holds ntris <= max_refs refs */
-        cell *= 1.5f;
+        cell *= automatic ? 1.25f : 1.5f; /* automatic: finer steps land nearer the budget */
         if (cell >= maxext) cell = max_f(maxext, 1e-6f) * 1.0001f;
     }
 }
