@@ -400,9 +400,9 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         uint64_t refs_cap = max_refs;
         if (automatic) {
             uint64_t budget = (uint64_t)m->ntris * ((m->flags & COLL_MESHF_QUANT) ? 9u : 19u) / 2u + 1024u;
-            uint64_t rsize = (m->flags & COLL_MESHF_REF16) ? 2u : 4u;
+            unsigned rshift = (m->flags & COLL_MESHF_REF16) ? 1u : 2u; /* ref bytes 2 or 4 (no 64-bit divide) */
             uint64_t left = budget > 4u * (ncells + 1u) ? budget - 4u * (ncells + 1u) : 0u;
-            if (left / rsize < refs_cap) refs_cap = left / rsize;
+            if ((left >> rshift) < refs_cap) refs_cap = left >> rshift;
             if (refs_cap < m->ntris && !single) fits = false;
         }
         /* Hashed: the cells are no longer bounded by the budget, so bound the build work
