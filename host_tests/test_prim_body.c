@@ -31,22 +31,11 @@ static double ang(fm_vec3_t a, prim_ref_v3 b)
     return acos(c > 1 ? 1 : (c < -1 ? -1 : c));
 }
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
-static uint32_t rnd_u32(void)
-{
-    rng_state ^= rng_state << 13; rng_state ^= rng_state >> 7; rng_state ^= rng_state << 17;
-    return (uint32_t)(rng_state >> 32);
-}
+static prim_ref_rng_t rng = {0x2545F4914F6CDD1Dull};
+static uint32_t rnd_u32(void) { return prim_ref_rng_u32(&rng); }
 static double rnd(void) { return rnd_u32() / 4294967296.0; }
-static double rnd_range(double a, double b) { return a + (b - a) * rnd(); }
-static prim_ref_v3 rnd_unit(void)
-{
-    for (;;) {
-        prim_ref_v3 v = prim_ref_v(rnd_range(-1, 1), rnd_range(-1, 1), rnd_range(-1, 1));
-        double l = prim_ref_len(v);
-        if (l > 0.1 && l <= 1) return prim_ref_scale(v, 1 / l);
-    }
-}
+static double rnd_range(double a, double b) { return prim_ref_rng_range(&rng, a, b); }
+static prim_ref_v3 rnd_unit(void) { return prim_ref_rng_unit(&rng); }
 
 static coll_body_t make_body(coll_shape_t shape, fm_vec3_t he, fm_quat_t q)
 {

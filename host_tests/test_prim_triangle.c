@@ -33,22 +33,11 @@ static double ang(fm_vec3_t a, prim_ref_v3 b)
 }
 
 /* ---- small deterministic RNG ---- */
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static uint32_t rnd_u32(void)
-{
-    rng_state ^= rng_state << 13; rng_state ^= rng_state >> 7; rng_state ^= rng_state << 17;
-    return (uint32_t)(rng_state >> 32);
-}
+static prim_ref_rng_t rng = {0x9E3779B97F4A7C15ull};
+static uint32_t rnd_u32(void) { return prim_ref_rng_u32(&rng); }
 static double rnd(void) { return rnd_u32() / 4294967296.0; }
-static double rnd_range(double a, double b) { return a + (b - a) * rnd(); }
-static prim_ref_v3 rnd_unit(void)
-{
-    for (;;) {
-        prim_ref_v3 v = prim_ref_v(rnd_range(-1, 1), rnd_range(-1, 1), rnd_range(-1, 1));
-        double l = prim_ref_len(v);
-        if (l > 0.1 && l <= 1) return prim_ref_scale(v, 1 / l);
-    }
-}
+static double rnd_range(double a, double b) { return prim_ref_rng_range(&rng, a, b); }
+static prim_ref_v3 rnd_unit(void) { return prim_ref_rng_unit(&rng); }
 static fm_vec3_t F(prim_ref_v3 v) { return V((float)v.x, (float)v.y, (float)v.z); }
 
 static void random_triangle(prim_ref_v3 tri[3], double L);

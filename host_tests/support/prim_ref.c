@@ -145,3 +145,24 @@ void prim_ref_sweep(prim_ref_fn f, void *ctx, double r, double t_max, prim_ref_s
     out->t_first = hi;
     f(ctx, hi, &out->n);
 }
+
+uint32_t prim_ref_rng_u32(prim_ref_rng_t *g)
+{
+    g->s ^= g->s << 13; g->s ^= g->s >> 7; g->s ^= g->s << 17;
+    return (uint32_t)(g->s >> 32);
+}
+
+double prim_ref_rng_range(prim_ref_rng_t *g, double a, double b)
+{
+    return a + (b - a) * (prim_ref_rng_u32(g) / 4294967296.0);
+}
+
+prim_ref_v3 prim_ref_rng_unit(prim_ref_rng_t *g)
+{
+    for (;;) {
+        prim_ref_v3 v = prim_ref_v(prim_ref_rng_range(g, -1, 1), prim_ref_rng_range(g, -1, 1),
+                                   prim_ref_rng_range(g, -1, 1));
+        double l = prim_ref_len(v);
+        if (l > 0.1 && l <= 1) return prim_ref_scale(v, 1 / l);
+    }
+}

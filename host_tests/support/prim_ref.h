@@ -7,6 +7,7 @@
 #ifndef PRIM_REF_H
 #define PRIM_REF_H
 #include <stdbool.h>
+#include <stdint.h>
 
 typedef struct { double x, y, z; } prim_ref_v3;
 
@@ -47,5 +48,13 @@ typedef struct {
     prim_ref_v3 tri[3];
 } prim_ref_captri_t;
 double prim_ref_captri_fn(void *ctx, double t, prim_ref_v3 *normal);
+
+/** xorshift64 random source shared by the primitive test suites (each seeds its own). */
+typedef struct { uint64_t s; } prim_ref_rng_t;
+uint32_t prim_ref_rng_u32(prim_ref_rng_t *g);
+/** Uniform in [a, b). */
+double prim_ref_rng_range(prim_ref_rng_t *g, double a, double b);
+/** Uniform direction (rejection sampling in the unit ball). */
+prim_ref_v3 prim_ref_rng_unit(prim_ref_rng_t *g);
 
 #endif
