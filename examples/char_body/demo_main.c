@@ -93,10 +93,7 @@ static int add_mesh_tris(tri_t *out, int n, const coll_mesh_instance_t *inst, co
         fm_vec3_t t[3];
         coll_mesh_triangle(inst->mesh, i, t);
         for (int k = 0; k < 3; k++) {
-            fm_vec3_t s;
-            fm_vec3_mul(&s, &t[k], &inst->xf.scale);
-            fm_quat_rotate_vec3(&s, &inst->xf.rot, &s);
-            out[n].v[k] = game_v3_add(s, inst->xf.pos);
+            out[n].v[k] = game_instance_point(inst, t[k]);
         }
         fm_vec3_t nrm = game_v3_norm(game_v3_cross(game_v3_sub(out[n].v[1], out[n].v[0]),
                                                    game_v3_sub(out[n].v[2], out[n].v[0])));

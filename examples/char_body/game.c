@@ -10,6 +10,13 @@
 /* ---- vector helpers (by value: the example reads better this way) ---- */
 fm_vec3_t game_v3(float x, float y, float z) { return (fm_vec3_t){{x, y, z}}; }
 fm_vec3_t game_v3_add(fm_vec3_t a, fm_vec3_t b) { return game_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+fm_vec3_t game_instance_point(const coll_mesh_instance_t *inst, fm_vec3_t local)
+{
+    fm_vec3_t s;
+    fm_vec3_mul(&s, &local, &inst->xf.scale);
+    fm_quat_rotate_vec3(&s, &inst->xf.rot, &s);
+    return game_v3_add(s, inst->xf.pos);
+}
 fm_vec3_t game_v3_sub(fm_vec3_t a, fm_vec3_t b) { return game_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 fm_vec3_t game_v3_scale(fm_vec3_t a, float s) { return game_v3(a.x * s, a.y * s, a.z * s); }
 float game_v3_dot(fm_vec3_t a, fm_vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }

@@ -169,6 +169,8 @@ float game_v3_dot(fm_vec3_t a, fm_vec3_t b);
 fm_vec3_t game_v3_cross(fm_vec3_t a, fm_vec3_t b);
 float game_v3_len(fm_vec3_t a);
 fm_vec3_t game_v3_norm(fm_vec3_t a);
+/** A point of a mesh instance's local space in world space (scale, rotate, translate). */
+fm_vec3_t game_instance_point(const coll_mesh_instance_t *inst, fm_vec3_t local);
 /** a with its component along unit n removed. */
 fm_vec3_t game_v3_reject(fm_vec3_t a, fm_vec3_t n);
 /** Rotates v by the shortest arc that takes unit a onto unit b. */

@@ -99,10 +99,7 @@ static int add_instance(const cam_t *c, int n, const coll_mesh_instance_t *inst,
         coll_mesh_triangle(inst->mesh, i, t);
         cpt_t in[3];
         for (int k = 0; k < 3; k++) {
-            fm_vec3_t s;
-            fm_vec3_mul(&s, &t[k], &inst->xf.scale);
-            fm_quat_rotate_vec3(&s, &inst->xf.rot, &s);
-            t[k] = game_v3_add(s, inst->xf.pos);
+            t[k] = game_instance_point(inst, t[k]);
             in[k] = to_cam(c, t[k]);
         }
         if (in[0].z < NEAR_Z && in[1].z < NEAR_Z && in[2].z < NEAR_Z) continue;

@@ -79,10 +79,7 @@ static void draw_instance(const view_t *v, const coll_mesh_instance_t *inst, uin
         fm_vec3_t t[3];
         coll_mesh_triangle(inst->mesh, i, t);
         for (int k = 0; k < 3; k++) {
-            fm_vec3_t s;
-            fm_vec3_mul(&s, &t[k], &inst->xf.scale);
-            fm_quat_rotate_vec3(&s, &inst->xf.rot, &s);
-            t[k] = game_v3_add(s, inst->xf.pos);
+            t[k] = game_instance_point(inst, t[k]);
         }
         if (game_v3_len(game_v3_sub(t[0], game.pos)) > DRAW_RADIUS) continue;
         for (int k = 0; k < 3; k++) line3(v, t[k], t[(k + 1) % 3], color);
