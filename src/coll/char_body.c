@@ -257,6 +257,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     body->velocity = v;
 
     /* 4. slide */
+    const fm_vec3_t start = pos;
     fm_vec3_t old_foot = cb_foot(&c, pos);
     cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
     if (body->slide_speed > 0.0f) {
@@ -269,8 +270,25 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     /* 5. foot guard */
     if (!walking) cb_foot_guard(&c, &pos, old_foot, &body->velocity);
 
-    /* 6. probe */
-    cb_probe_floor(&c, &pos, was_grounded, jumping);
+    /* Honest velocity: where the step's motion fell short of the velocity (a wall, a
+     * wedge, a crack's edges stopped it) the velocity is the one the body moved with, so no
+     * fall speed accumulates at rest; except that a ceiling which stopped a rise keeps the
+     * clipped rate along up (no rising speed is reported into a ceiling). Unobstructed, the
+     * velocity stays exact. The floor probe then drops the part along up on a floor. */
+    fm_vec3_t moved = cb_scale(cb_sub(pos, start), 1.0f / dt);
+    if (cb_finite(moved) && cb_len(cb_sub(moved, body->velocity)) * dt > 1e-4f * c.radius) {
+        float mu = cb_dot(moved, up), vcu = cb_dot(body->velocity, up);
+        if (mu > 0.0f && vcu < mu) moved = cb_madd(moved, up, vcu - mu);
+        body->velocity = moved;
+    }
+
+    /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
+     *    a ledge or an overhang) it does not go: back to the start of the slide. */
+    if (!cb_probe_floor(&c, &pos, was_grounded, jumping)) {
+        pos = start;
+        body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+        cb_probe_floor(&c, &pos, was_grounded, jumping);
+    }
 
     body->velocity = clamp_speed(body->velocity);
     if (cb_finite(pos)) {

@@ -47,69 +47,191 @@ void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
     cb_slide(c, pos, delta, NULL, false);
 }
 
-void cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
+/** What holds the body up at the end of a step. */
+typedef struct {
+    bool found;
+    bool steep;
+    float gap;            ///< floor below the foot along up (> 0), or above it (< 0)
+    fm_vec3_t normal;     ///< floor normal (walkable floors), or the steep surface's
+    fm_vec3_t point;      ///< contact on the floor
+    uint16_t id;
+    const coll_mesh_instance_t *instance;
+} support_t;
+
+/**
+ * The crack rule. The foot point found no floor within reach (none under it, or deeper than
+ * floor_snap_distance: a floor the foot point can step down onto is a step, as in the
+ * seed), but the full capsule's bottom ball may rest on geometry on both sides
+ * of a gap narrower than the capsule: a crack between floor pieces, a slot at the bottom of
+ * a valley, a slot between a ledge and a wall. The ball is dropped from where the sweep
+ * capsule's bottom ball is (free space) by step + reach + r/2; from where it first touches,
+ * it rolls down the contact's tangent plane by up to a diameter. It is held when that roll
+ * meets geometry on the other side (the horizontal parts of the two contact normals
+ * oppose: a wedge) or a walkable floor, within half a radius of descent. The body then
+ * stands at the height of the lower of the two contacts when that is within reach: at the
+ * level of the surfaces that hold it (only the height changes: it is not pulled sideways). At a ledge the roll meets nothing, or nothing it can
+ * stand on, and the foot-as-a-point rule stands: the body falls.
+ */
+static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *out)
+{
+    const char_body_t *b = c->body;
+    const fm_vec3_t up = c->up;
+    const float r = c->radius, len = c->step + reach + 0.5f * r;
+    const fm_vec3_t foot = cb_foot(c, pos);
+    fm_vec3_t b0 = cb_madd(foot, up, r + c->step);
+    coll_sweep_hit_t h1;
+    if (!coll_capsule_sweep(c->scene, b0, up, r, 0.0f, cb_scale(up, -len), b->settings.read_mask,
+                            b->settings.coll_types, &h1) ||
+        !isfinite(h1.t) || !cb_finite(h1.normal) || !cb_finite(h1.point))
+        return false;
+    float n1u = cb_dot(h1.normal, up);
+    if (!(n1u > 0.02f)) return false; /* not under the ball */
+    float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
+    float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
+    fm_vec3_t normal = h1.normal;
+    fm_vec3_t tangent = cb_madd(cb_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
+    if (cb_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
+        fm_vec3_t downhill = cb_norm(tangent);
+        fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, c->skin);
+        coll_sweep_hit_t h2;
+        if (!coll_capsule_sweep(c->scene, b1, up, r, 0.0f, cb_scale(downhill, 2.0f * r), b->settings.read_mask,
+                                b->settings.coll_types, &h2) ||
+            !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
+            return false; /* rolls off (a ledge), or into a ceiling */
+        float descent = (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up);
+        if (descent > 0.5f * r) return false;
+        float c2 = cb_dot(cb_sub(h2.point, foot), up);
+        if (c2 < contact) contact = c2;
+        fm_vec3_t side1 = cb_norm(cb_reject(h1.normal, up)), side2 = cb_norm(cb_reject(h2.normal, up));
+        if (cb_dot(side1, side2) < -0.05f) {
+            normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
+            if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
+        } else if (cb_dot(h2.normal, up) >= b->cos_floor_max_angle) {
+            normal = h2.normal; /* rolled onto a floor */
+        } else {
+            return false;
+        }
+    }
+    /* The body stands at the level of the surfaces that hold it (the lower contact), not
+     * sunk in as far as the round ball would be: no dip walking across a crack. */
+    if (-contact > reach) return false;
+    out->found = true;
+    out->steep = false;
+    out->gap = -contact;
+    out->normal = normal;
+    out->point = h1.point;
+    out->id = h1.id;
+    out->instance = h1.instance;
+    return true;
+}
+
+/**
+ * Snaps the body down by dist along -up, swept. Where the capsule's rounded bottom catches
+ * on an edge on the way (the nosing of the stair behind, walking down short treads), it
+ * slides down off it along the contact plane, as a resting ball would, instead of hanging
+ * on it above the floor: the way it was going (b->velocity, this step's motion).
+ */
+static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t left = cb_scale(c->up, -dist);
+    for (int it = 0; it < 3; it++) {
+        float len = cb_len(left);
+        if (!(len > 1e-6f)) return;
+        coll_sweep_hit_t hit;
+        if (!coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, left,
+                                b->settings.read_mask, b->settings.coll_types, &hit) ||
+            !isfinite(hit.t) || !cb_finite(hit.normal)) {
+            *pos = cb_add(*pos, left);
+            return;
+        }
+        if (hit.t <= 0.0f && hit.depth > 0.0f) return;
+        float travel = len * hit.t - c->skin;
+        if (travel >= len - c->skin) {
+            *pos = cb_add(*pos, left); /* the contact is the target itself */
+            return;
+        }
+        if (travel > 0.0f) *pos = cb_madd(*pos, left, travel / len);
+        left = cb_scale(left, 1.0f - (travel > 0.0f ? travel / len : 0.0f));
+        /* Only an edge under the capsule is slid off, and only onwards (the way the body
+         * moved this step: never back, off the nosing ahead of a body climbing stairs). */
+        if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
+        left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
+        if (!(cb_dot(left, b->velocity) > 0.0f)) return;
+        if (!(cb_dot(left, c->up) < -1e-6f)) return;
+    }
+}
+
+bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
     fm_vec3_t up = c->up;
     float above = c->radius + c->step;            /* ray origin above the foot */
-    fm_vec3_t origin = cb_madd(cb_foot(c, *pos), up, above);
-    coll_ray_hit_t hit;
-    bool found = !jumping &&
-                 coll_raycast(c->scene, origin, cb_scale(up, -1.0f), above + c->snap, b->settings.read_mask,
-                              b->settings.coll_types, &hit) &&
-                 cb_finite(hit.normal) && cb_finite(hit.point);
-    bool grounded = false;
-    bool steep = false;
-    if (found) {
-        float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
-        float nu = cb_dot(hit.normal, up);
-        bool walkable = nu >= b->cos_floor_max_angle;
-        if (walkable) {
-            if (gap <= CB_CONTACT_EPS || (was_grounded && gap <= c->snap)) {
-                /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
-                 * Swept: the capsule is wider than the foot point, so walking off a ledge
-                 * its edge, or a slope or ceiling above a tread, may stop it short. */
-                cb_move_swept(c, pos, cb_scale(up, -gap));
-                grounded = true;
+    float reach = was_grounded ? c->snap : CB_CONTACT_EPS;
+    support_t s = {0};
+    bool fits = true;
+    if (!jumping) {
+        fm_vec3_t origin = cb_madd(cb_foot(c, *pos), up, above);
+        coll_ray_hit_t hit;
+        bool found = coll_raycast(c->scene, origin, cb_scale(up, -1.0f), above + c->snap, b->settings.read_mask,
+                                  b->settings.coll_types, &hit) &&
+                     cb_finite(hit.normal) && cb_finite(hit.point);
+        if (found) {
+            float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
+            float nu = cb_dot(hit.normal, up);
+            if (nu >= b->cos_floor_max_angle) {
+                if (gap <= reach) s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
+            } else if (nu > 0.0f) {
+                /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
+                 * which puts the plane r / cos - (r + step) below the foot along up. Only
+                 * that close (plus 1 cm) is standing on it; higher up the body is falling. */
+                float rest = c->radius / nu - (c->radius + c->step);
+                if (gap <= (rest > 0.0f ? rest : 0.0f) + 0.01f)
+                    s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
-        } else if (nu > 0.0f) {
-            /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
-             * which puts the plane r / cos - (r + step) below the foot along up. Only
-             * that close (plus 1 cm) is standing on it; higher up the body is falling. */
-            float rest = c->radius / nu - (c->radius + c->step);
-            if (gap <= (rest > 0.0f ? rest : 0.0f) + 0.01f) {
-                grounded = true;
-                steep = true;
+        }
+        if (!s.found) ball_held(c, *pos, reach, &s);
+        if (s.found && !s.steep) {
+            /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
+             * Swept: the capsule is wider than the foot point, so walking off a ledge its
+             * edge may stop it short. A lift the capsule has no room for (a ledge or an
+             * overhang above) means the body cannot stand here at all. */
+            if (s.gap > 0.0f) {
+                snap_down(c, pos, s.gap);
+            } else {
+                float done = cb_move_swept(c, pos, cb_scale(up, -s.gap));
+                if (s.gap < -1e-3f && done * -s.gap < -s.gap - 1e-3f) fits = false;
             }
         }
     }
 
     b->flags &= (uint8_t)~(CB_FLAG_GROUNDED | CB_FLAG_STEEP | CB_FLAG_CARRY);
     b->floor_instance = NULL;
-    if (!grounded) {
+    if (!s.found) {
         b->floor_id = -1;
         b->floor_normal = up;
-        return;
+        return fits;
     }
     b->flags |= CB_FLAG_GROUNDED;
-    if (steep) b->flags |= CB_FLAG_STEEP;
-    b->floor_normal = hit.normal;
-    b->floor_id = hit.id;
-    if (!steep) {
+    if (s.steep) b->flags |= CB_FLAG_STEEP;
+    b->floor_normal = s.normal;
+    b->floor_id = s.id;
+    if (!s.steep) {
         /* Floor contact ends any motion along up: no creep, no bounce. */
         b->velocity = cb_reject(b->velocity, up);
     } else {
-        float into = cb_dot(b->velocity, hit.normal);
-        if (into < 0.0f) b->velocity = cb_madd(b->velocity, hit.normal, -into);
+        float into = cb_dot(b->velocity, s.normal);
+        if (into < 0.0f) b->velocity = cb_madd(b->velocity, s.normal, -into);
     }
-    if (hit.instance && b->settings.follow_floor) {
-        fm_vec3_t anchor = steep ? hit.point : cb_foot(c, *pos);
+    if (s.instance && b->settings.follow_floor) {
+        fm_vec3_t anchor = s.steep ? s.point : cb_foot(c, *pos);
         fm_vec3_t local;
-        if (cb_xf_inverse(&hit.instance->xf, anchor, &local)) {
-            b->floor_instance = hit.instance;
+        if (cb_xf_inverse(&s.instance->xf, anchor, &local)) {
+            b->floor_instance = s.instance;
             b->floor_local_point = local;
             b->floor_world_point = anchor;
             b->flags |= CB_FLAG_CARRY;
         }
     }
+    return fits;
 }

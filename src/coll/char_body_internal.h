@@ -107,7 +107,9 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
 /** Moves the body with the mesh instance it stood on last step. */
 void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos);
-/** Floor probe after the slide: grounding, steep state, snapping, stair lift, carry anchor. */
-void cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
+/** Floor probe after the slide: grounding, steep state, snapping, stair lift, cracks, carry
+ *  anchor. Returns false when the body needs a lift onto the floor that the capsule has no
+ *  room for (it cannot stand where it is). */
+bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
 
 #endif

@@ -162,24 +162,82 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     return true;
 }
 
-/**
- * Walking, blocked by something above the step zone: if the foot point has already moved
- * over a higher tread (within step_height), stand on it now and report true, so the rest
- * of this step's motion continues from there instead of stopping at the next riser's edge.
- */
-static bool step_up_now(const cb_ctx_t *c, fm_vec3_t *pos)
+/** Height along up of the walkable floor under point p (searched from `above` over it down
+ *  to `below` under it), relative to ref; false when there is none. */
+static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float below, fm_vec3_t ref, float *h)
 {
     const char_body_t *b = c->body;
-    float above = c->radius + c->step;
-    fm_vec3_t origin = cb_madd(cb_foot(c, *pos), c->up, above);
     coll_ray_hit_t rh;
-    if (!coll_raycast(c->scene, origin, cb_scale(c->up, -1.0f), above, b->settings.read_mask,
-                      b->settings.coll_types, &rh))
+    if (!coll_raycast(c->scene, cb_madd(p, c->up, above), cb_scale(c->up, -1.0f), above + below,
+                      b->settings.read_mask, b->settings.coll_types, &rh) ||
+        cb_dot(rh.normal, c->up) < b->cos_floor_max_angle)
         return false;
-    float lift = above - rh.distance;
-    if (!(lift > 1e-4f) || cb_dot(rh.normal, c->up) < b->cos_floor_max_angle) return false;
-    /* Swept: a ceiling or an overhanging slope above may leave no room for the lift. */
-    return cb_move_swept(c, pos, cb_scale(c->up, lift)) >= 1.0f;
+    *h = cb_dot(cb_sub(rh.point, ref), c->up);
+    return true;
+}
+
+/**
+ * Walking, blocked by the rounded edge of something low (the contact is under the bottom
+ * ball's centre): step over it as Quake III's PM_StepSlideMove does. Lift the sweep capsule
+ * by step_height, move the rest of the motion across up, come back down by the lift. The
+ * seed's shortened capsule alone stops at the edge of the riser after the next one before
+ * the foot reaches the next tread on ordinary stairs (treads under about 0.45 m with the
+ * default capsule). The result is kept when, measured from the floor under the foot at the
+ * start (`base`; the body may be riding on a nosing above it):
+ *  - the foot came down onto walkable floor at most step_height above base: it is lifted
+ *    onto it at once, so the rest of the step goes on from the tread; or
+ *  - the capsule came down onto the nosing of a later riser, at most step_height above
+ *    base, and between the foot and that nosing lies a tread higher than base and at most
+ *    step_height above it: the body rides the nosing until the foot is over that tread
+ *    (its foot stays below the tread height meanwhile, as the geometry guarantees).
+ * A riser taller than step_height is never climbed, at any rate: there is no tread in reach.
+ * left: the motion still to do. *moved: the fraction of its part across up travelled.
+ */
+static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const coll_sweep_hit_t *hit, float *moved)
+{
+    const char_body_t *b = c->body;
+    if (!(cb_dot(hit->normal, c->up) > 0.0f) || !(c->step > 0.0f)) return false;
+    fm_vec3_t h = cb_reject(left, c->up);
+    float hl = cb_len(h);
+    if (!(hl > 1e-5f)) return false;
+    const float above = c->radius + c->step, eps = 1e-3f;
+    fm_vec3_t foot0 = cb_foot(c, *pos);
+    float base;
+    if (!floor_height(c, foot0, above, c->snap, foot0, &base)) return false;
+    fm_vec3_t p = *pos;
+    float lift = c->step * cb_move_swept(c, &p, cb_scale(c->up, c->step));
+    if (!(lift > 1e-4f)) return false;
+    float f = cb_move_swept(c, &p, h);
+    if (!(f * hl > 1e-4f)) return false;
+    /* down by the lift, keeping the contact that stops it */
+    fm_vec3_t down = cb_scale(c->up, -lift);
+    coll_sweep_hit_t dh;
+    bool hung = coll_capsule_sweep(c->scene, cb_sweep_center(c, p), c->up, c->radius, c->sweep_ihh, down,
+                                   b->settings.read_mask, b->settings.coll_types, &dh) && isfinite(dh.t);
+    float travel = hung ? lift * (dh.t > 0.0f ? dh.t : 0.0f) - c->skin : lift;
+    if (travel > 0.0f) p = cb_madd(p, c->up, -travel);
+    fm_vec3_t foot = cb_foot(c, p);
+    float rise = cb_dot(cb_sub(foot, foot0), c->up) - base;
+    float floor_h;
+    if (!floor_height(c, foot, above, c->snap, foot0, &floor_h)) return false;
+    floor_h -= base;
+    if (floor_h > c->step + eps || rise > c->step + eps) return false;
+    if (rise > floor_h + c->skin + eps) {
+        /* riding a nosing: a higher tread within a step must lie between foot and contact */
+        fm_vec3_t ahead = cb_reject(cb_sub(dh.point, foot), c->up);
+        fm_vec3_t probe = cb_madd(foot, ahead, 0.75f);
+        float tread;
+        if (!hung || cb_len(ahead) > c->radius + eps ||
+            !floor_height(c, probe, above + rise, c->snap, foot0, &tread))
+            return false;
+        tread -= base;
+        if (!(tread > eps) || tread > c->step + eps) return false;
+    } else if (floor_h > rise && cb_move_swept(c, &p, cb_scale(c->up, floor_h - rise)) < 1.0f) {
+        return false;
+    }
+    *pos = p;
+    *moved = f;
+    return true;
 }
 
 /**
@@ -262,9 +320,11 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
             continue;
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
-        if (grounded && step_ups < 2 && cb_dot(n, hit.normal) < 0.9999f && step_up_now(c, pos)) {
+        float stepped = 0.0f;
+        if (grounded && step_ups < 2 && cb_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
-            rem = left;
+            rem = cb_scale(cb_reject(left, c->up), 1.0f - stepped);
+            time_left *= 1.0f - stepped;
             continue;
         }
         bool known = false;
@@ -353,6 +413,11 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         if (dl > lim) delta = cb_scale(delta, lim / dl);
         for (uint32_t i = 0; i < n; i++)
             if (ct[i].depth > CB_MIN_DEPTH && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
+        /* A push-out never turns into speed along up: clipping a walk against a nosing the
+         * capsule touches would otherwise launch it (a "jump" that skips the floor probe). */
+        float v_up0 = vel ? cb_dot(*vel, c->up) : 0.0f, cap = v_up0 > 0.0f ? v_up0 : 0.0f;
+        float v_up = cb_dot(v, c->up);
+        if (v_up > cap) v = cb_madd(v, c->up, cap - v_up);
         p = cb_add(p, delta);
         if (!cb_finite(p)) return;
         n = overlaps_at(c, p, ct);

@@ -1,0 +1,430 @@
+/* Character body on the geometry real levels are made of: ordinary staircases with the
+ * default capsule, cracks between floor pieces, slots at the bottom of valleys, overhangs
+ * and low ledges. Each scenario checks behaviour (goes where asked, at the asked speed,
+ * stands at floor level, reports the velocity it moved with), not only safety.
+ * Every step runs under the allocation guard (CB_STEP). */
+#include "unity.h"
+#include "alloc_guard.h"
+#include "cb_levels.h"
+#include <math.h>
+#include <stdio.h>
+
+#define DEG (3.14159265f / 180.0f)
+
+static char_body_t body;
+static fm_vec3_t pos;
+
+void setUp(void) { cb_world_reset(); }
+void tearDown(void) {}
+
+static void report(const char *what, double value, const char *unit)
+{
+    printf("MEASURED %s = %.6g %s\n", what, value, unit);
+}
+
+static void body_with_radius(fm_vec3_t start, float radius, float height)
+{
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = radius;
+    s.height = height;
+    s.center_offset = cb_vec(0.0f, 0.5f * height, 0.0f);
+    char_body_configure(&body, &s);
+}
+
+/* ---- 1. staircases: tread x riser x radius x rate ---- */
+
+/* Ten steps rising along +x from x = 0, a landing beyond; the owner position is the foot. */
+static void build_stairs(float tread, float riser, int steps)
+{
+    float xs[2 * 16 + 4], ys[2 * 16 + 4];
+    int n = 0;
+    xs[n] = -30.0f; ys[n++] = 0.0f;
+    for (int k = 0; k < steps; k++) {
+        xs[n] = (float)k * tread; ys[n++] = (float)k * riser;
+        xs[n] = (float)k * tread; ys[n++] = (float)(k + 1) * riser;
+    }
+    xs[n] = 30.0f; ys[n++] = (float)steps * riser;
+    cb_geo_profile(xs, ys, n, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+typedef struct {
+    int up_frames, down_frames;     ///< frames taken
+    int up_ideal, down_ideal;       ///< frames at the input speed along the path
+    int max_air_run_down;           ///< longest run of airborne frames going down
+    bool reached_top, reached_bottom;
+    float top_err;                  ///< foot height error on the landing
+} stair_run_t;
+
+static stair_run_t run_stairs(float tread, float riser, float radius, float hz)
+{
+    const int steps = 10;
+    const float speed = 3.0f, dt = 1.0f / hz;
+    cb_world_reset();
+    build_stairs(tread, riser, steps);
+    const float top = (float)steps * riser, run = (float)steps * tread;
+    const float x0 = -1.0f, x1 = run + 1.0f;
+    body_with_radius(cb_vec(x0, 0.0f, 0.0f), radius, 2.0f);
+    for (int i = 0; i < 3; i++) CB_STEP(&body, dt);
+    stair_run_t r = {0};
+    /* Ideal: the path length (the rise counted too) at the input speed. */
+    float path = sqrtf((x1 - x0) * (x1 - x0) + top * top);
+    r.up_ideal = r.down_ideal = (int)ceilf(path / (speed * dt));
+    body.input_velocity = cb_vec(speed, 0.0f, 0.0f);
+    int limit = 3 * r.up_ideal;
+    for (r.up_frames = 0; r.up_frames < limit && pos.x < x1; r.up_frames++) CB_STEP(&body, dt);
+    r.reached_top = pos.x >= x1 && char_body_is_on_floor(&body);
+    r.top_err = fabsf(pos.y - top);
+    body.input_velocity = cb_vec(-speed, 0.0f, 0.0f);
+    int air_run = 0;
+    for (r.down_frames = 0; r.down_frames < limit && pos.x > x0; r.down_frames++) {
+        CB_STEP(&body, dt);
+        air_run = char_body_is_on_floor(&body) ? 0 : air_run + 1;
+        if (air_run > r.max_air_run_down) r.max_air_run_down = air_run;
+    }
+    r.reached_bottom = pos.x <= x0 && char_body_is_on_floor(&body) && fabsf(pos.y) < 0.001f;
+    return r;
+}
+
+static void stairs_at(float hz)
+{
+    static const float treads[3] = {0.25f, 0.28f, 0.32f};
+    static const float risers[3] = {0.15f, 0.18f, 0.22f};
+    static const float radii[2] = {0.4f, 0.5f};
+    int failures = 0;
+    float worst_up = 0.0f, worst_down = 0.0f;
+    for (int t = 0; t < 3; t++)
+        for (int k = 0; k < 3; k++)
+            for (int q = 0; q < 2; q++) {
+                stair_run_t r = run_stairs(treads[t], risers[k], radii[q], hz);
+                float up = (float)r.up_frames / (float)r.up_ideal;
+                float down = (float)r.down_frames / (float)r.down_ideal;
+                if (up > worst_up) worst_up = up;
+                if (down > worst_down) worst_down = down;
+                bool ok = r.reached_top && r.reached_bottom && up <= 1.3f && down <= 1.3f &&
+                          r.max_air_run_down <= 1 && r.top_err < 0.001f;
+                if (!ok) {
+                    failures++;
+                    printf("stairs %.0f Hz tread %.2f riser %.2f r %.1f: top %d (%.2fx, err %.4f) bottom %d (%.2fx) "
+                           "air run %d\n", (double)hz, (double)treads[t], (double)risers[k], (double)radii[q],
+                           r.reached_top, (double)up, (double)r.top_err, r.reached_bottom, (double)down,
+                           r.max_air_run_down);
+                }
+            }
+    char name[96];
+    snprintf(name, sizeof name, "18 staircases at %.0f Hz: worst climb time / ideal", (double)hz);
+    report(name, worst_up, "");
+    snprintf(name, sizeof name, "18 staircases at %.0f Hz: worst descent time / ideal", (double)hz);
+    report(name, worst_down, "");
+    TEST_ASSERT_EQUAL_INT(0, failures);
+}
+static void test_staircases_30hz(void) { stairs_at(30.0f); }
+static void test_staircases_60hz(void) { stairs_at(60.0f); }
+static void test_staircases_120hz(void) { stairs_at(120.0f); }
+
+/* A riser above step_height still blocks, whatever the rate (no frame-rate climbing). */
+static void test_tall_riser_blocks_at_every_rate(void)
+{
+    static const float rates[4] = {30.0f, 60.0f, 120.0f, 240.0f};
+    for (int i = 0; i < 4; i++) {
+        cb_world_reset();
+        const float xs[4] = {-20.0f, 0.0f, 0.0f, 20.0f};
+        const float ys[4] = {0.0f, 0.0f, 0.27f, 0.27f};
+        cb_geo_profile(xs, ys, 4, -5.0f, 5.0f);
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-2.0f, 0.0f, 0.0f));
+        body.input_velocity = cb_vec(6.0f, 0.0f, 0.0f);
+        float max_y = -1.0f;
+        for (int f = 0; f < (int)(2.0f * rates[i]); f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.y > max_y) max_y = pos.y;
+        }
+        TEST_ASSERT_TRUE(max_y < 0.001f);
+        TEST_ASSERT_TRUE(pos.x < 0.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+}
+
+/* ---- 2. cracks between floor pieces ---- */
+
+/* Two 1 m thick floor slabs, tops at y = 0, with a straight gap of width g along x at z = 0. */
+static void build_crack(float g)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, -10.0f - 0.5f * g), cb_vec(20.0f, 0.5f, 10.0f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, -0.5f, 10.0f + 0.5f * g), cb_vec(20.0f, 0.5f, 10.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+/* How far a round capsule resting on both edges of a gap g sinks below them. */
+static float crack_sag(float r, float g)
+{
+    float h = 0.5f * g;
+    return h < r ? r - sqrtf(r * r - h * h) : r;
+}
+
+typedef struct {
+    int air_frames, max_air_run;
+    float lowest;      ///< lowest foot height after the first frame
+    float speed_ratio; ///< distance covered / input distance
+    float worst_v_err; ///< |reported velocity across up - displacement / dt|
+} crack_run_t;
+
+static crack_run_t crack_walk(float g, fm_vec3_t start, fm_vec3_t input, float hz, int frames)
+{
+    const float dt = 1.0f / hz;
+    cb_world_reset();
+    build_crack(g);
+    cb_body_init(&body, &pos, start);
+    crack_run_t r = {0, 0, 1e9f, 0.0f, 0.0f};
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    fm_vec3_t p0 = pos;
+    int run = 0;
+    for (int i = 0; i < frames; i++) {
+        fm_vec3_t before = pos;
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (!char_body_is_on_floor(&body)) { r.air_frames++; run++; } else run = 0;
+        if (run > r.max_air_run) r.max_air_run = run;
+        if (pos.y < r.lowest) r.lowest = pos.y;
+        fm_vec3_t v = char_body_get_velocity(&body);
+        float ex = fabsf(v.x - (pos.x - before.x) / dt), ez = fabsf(v.z - (pos.z - before.z) / dt);
+        if (ex > r.worst_v_err) r.worst_v_err = ex;
+        if (ez > r.worst_v_err) r.worst_v_err = ez;
+    }
+    float want = sqrtf(input.x * input.x + input.z * input.z) * dt * (float)frames;
+    float dx = pos.x - p0.x, dz = pos.z - p0.z;
+    float along = want > 0.0f ? (dx * input.x + dz * input.z) / sqrtf(input.x * input.x + input.z * input.z) : 0.0f;
+    r.speed_ratio = want > 0.0f ? along / want : 1.0f;
+    return r;
+}
+
+static const float crack_widths[8] = {0.005f, 0.02f, 0.05f, 0.10f, 0.20f, 0.40f, 0.60f, 0.75f};
+
+static void check_crack(const char *what, float g, crack_run_t r, bool moving)
+{
+    float floor_min = -crack_sag(0.5f, g) - 0.001f;
+    bool ok = r.max_air_run <= 1 && r.lowest >= floor_min && (!moving || r.speed_ratio >= 0.95f) &&
+              r.worst_v_err < 0.05f;
+    if (!ok)
+        printf("crack %s g %.3f: air %d (run %d) lowest %.4f (min %.4f) speed %.3f v err %.4f\n", what, (double)g,
+               r.air_frames, r.max_air_run, (double)r.lowest, (double)floor_min, (double)r.speed_ratio,
+               (double)r.worst_v_err);
+    TEST_ASSERT_TRUE(ok);
+}
+
+static void test_crack_spawn_over(void)
+{
+    for (int i = 0; i < 8; i++) {
+        crack_run_t r = crack_walk(crack_widths[i], cb_vec(0.0f, 0.05f, 0.0f), cb_vec(0.0f, 0.0f, 0.0f), 60.0f, 60);
+        /* spawned 5 cm up: a couple of frames of fall before it stands */
+        r.max_air_run = r.max_air_run > 0 ? r.max_air_run - 3 : 0;
+        check_crack("spawn", crack_widths[i], r, false);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        fm_vec3_t v = char_body_get_velocity(&body);
+        TEST_ASSERT_TRUE(fabsf(v.y) < 0.01f);
+    }
+}
+
+static void test_crack_walk_along(void)
+{
+    for (int i = 0; i < 8; i++)
+        for (int hz = 30; hz <= 120; hz *= 2) {
+            crack_run_t r = crack_walk(crack_widths[i], cb_vec(-5.0f, 0.0f, 0.0f), cb_vec(3.0f, 0.0f, 0.0f),
+                                       (float)hz, hz * 2);
+            check_crack("along", crack_widths[i], r, true);
+        }
+}
+
+static void test_crack_walk_across(void)
+{
+    for (int i = 0; i < 8; i++)
+        for (int hz = 30; hz <= 120; hz *= 2) {
+            crack_run_t r = crack_walk(crack_widths[i], cb_vec(0.0f, 0.0f, -1.0f), cb_vec(0.0f, 0.0f, 3.0f),
+                                       (float)hz, hz * 2 / 3);
+            check_crack("across", crack_widths[i], r, true);
+            TEST_ASSERT_TRUE(pos.z > 0.9f);
+        }
+}
+
+/* A real ledge is still a ledge: past the edge with nothing beyond, the body falls. */
+static void test_ledge_beside_wide_gap_falls(void)
+{
+    cb_world_reset();
+    build_crack(3.0f); /* wider than the capsule: two ledges */
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, -1.4f)); /* foot 0.1 m past the edge at z = -1.5 */
+    for (int i = 0; i < 10; i++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_FALSE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y < -0.05f);
+}
+
+/* ---- 3. a slot at the bottom of a valley ---- */
+
+static void build_valley(float deg, float slot)
+{
+    const float t = tanf(deg * DEG), w = 6.0f;
+    const float h = 0.5f * slot;
+    /* left slope falls towards +z down to z = -h; right slope rises from z = +h */
+    cb_geo_quad(cb_vec(-30.0f, w * t, -h - w), cb_vec(30.0f, w * t, -h - w), cb_vec(30.0f, 0.0f, -h),
+                cb_vec(-30.0f, 0.0f, -h));
+    cb_geo_quad(cb_vec(-30.0f, 0.0f, h), cb_vec(30.0f, 0.0f, h), cb_vec(30.0f, w * t, h + w),
+                cb_vec(-30.0f, w * t, h + w));
+    cb_geo_box(cb_vec(0.0f, -3.0f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f); /* far below the slot */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void valley_walk(float deg, float slot, float hz)
+{
+    const float dt = 1.0f / hz;
+    cb_world_reset();
+    build_valley(deg, slot);
+    cb_body_init(&body, &pos, cb_vec(-10.0f, 0.3f, 0.0f));
+    for (int i = 0; i < (int)hz; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y > -0.01f);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    TEST_ASSERT_TRUE(fabsf(v.y) < 0.01f); /* at rest: no fall speed accumulating */
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    float x0 = pos.x;
+    int air = 0, frames = (int)(2.0f * hz);
+    for (int i = 0; i < frames; i++) {
+        CB_STEP(&body, dt);
+        if (!char_body_is_on_floor(&body)) air++;
+    }
+    float ratio = (pos.x - x0) / (3.0f * dt * (float)frames);
+    if (air > 0 || ratio < 0.95f)
+        printf("valley %.0f deg slot %.2f at %.0f Hz: air %d ratio %.3f y %.3f\n", (double)deg, (double)slot,
+               (double)hz, air, (double)ratio, (double)pos.y);
+    TEST_ASSERT_EQUAL_INT(0, air);
+    TEST_ASSERT_TRUE(ratio >= 0.95f);
+    TEST_ASSERT_TRUE(pos.y > -0.01f);
+}
+
+static void test_valley_slot(void)
+{
+    static const float degs[3] = {35.0f, 38.0f, 44.0f};
+    static const float slots[2] = {0.10f, 0.15f};
+    for (int d = 0; d < 3; d++)
+        for (int s = 0; s < 2; s++) {
+            valley_walk(degs[d], slots[s], 30.0f);
+            valley_walk(degs[d], slots[s], 120.0f);
+        }
+}
+
+/* ---- 4. overhangs: the body never sinks into the floor under them ---- */
+
+/* A single-sided overhang at 66 degrees from the horizontal: its low edge `low` above the
+ * floor at x = 0, its top edge 3 m higher at x = -1.34, leaning over the floor the body
+ * stands on (x < 0). The body walks from x = -3 into the acute wedge under it. */
+static void overhang_push(float low, float hz)
+{
+    const float dt = 1.0f / hz;
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    const float run = 3.0f / tanf(66.0f * DEG);
+    cb_geo_quad(cb_vec(0.0f, low, -5.0f), cb_vec(0.0f, low, 5.0f), cb_vec(-run, low + 3.0f, 5.0f),
+                cb_vec(-run, low + 3.0f, -5.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+    CB_STEP(&body, dt);
+    body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    char name[96];
+    snprintf(name, sizeof name, "overhang low edge %.2f m at %.0f Hz: lowest grounded foot", (double)low, (double)hz);
+    report(name, lowest, "m");
+    TEST_ASSERT_TRUE(lowest > -0.001f);
+}
+
+static void test_overhang_wedge(void)
+{
+    static const float lows[4] = {0.05f, 0.15f, 0.30f, 0.60f};
+    for (int i = 0; i < 4; i++) {
+        overhang_push(lows[i], 30.0f);
+        overhang_push(lows[i], 120.0f);
+    }
+}
+
+/* ---- 5. a low ledge: where the full capsule does not fit standing, the body does not go ---- */
+
+static void test_low_ledge_blocks(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(3.0f, 1.54f + 0.25f, 0.0f), cb_vec(2.0f, 0.25f, 5.0f), 0.0f); /* underside 1.54, x >= 1 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        body_with_radius(cb_vec(-2.0f, 0.0f, 0.0f), 0.4f, 1.8f);
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest = 0.0f, max_x = -10.0f;
+        for (int f = 0; f < (int)(2.0f * rates[i]); f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.y < lowest) lowest = pos.y;
+            if (pos.x > max_x) max_x = pos.x;
+        }
+        report("low ledge: lowest foot", lowest, "m");
+        report("low ledge: furthest x (ledge face at 1, capsule radius 0.4)", max_x, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+        TEST_ASSERT_TRUE(max_x < 1.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+}
+
+/* ---- 6. honest velocity ---- */
+
+/* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
+static void test_velocity_at_rest_over_slot(void)
+{
+    cb_world_reset();
+    build_crack(0.4f);
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+    for (int i = 0; i < 120; i++) CB_STEP(&body, 1.0f / 60.0f);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    TEST_ASSERT_TRUE(fabsf(v.x) + fabsf(v.y) + fabsf(v.z) < 0.01f);
+}
+
+/* Falling onto a floor, the reported velocity is the velocity moved with. */
+static void test_velocity_matches_motion_in_the_air(void)
+{
+    cb_world_reset();
+    cb_level_floor(20.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 3.0f, 0.0f));
+    body.input_velocity = cb_vec(2.0f, 0.0f, 1.0f);
+    const float dt = 1.0f / 60.0f;
+    for (int i = 0; i < 90; i++) {
+        fm_vec3_t before = pos;
+        CB_STEP(&body, dt);
+        fm_vec3_t v = char_body_get_velocity(&body);
+        TEST_ASSERT_FLOAT_WITHIN(1e-3f, (pos.x - before.x) / dt, v.x);
+        TEST_ASSERT_FLOAT_WITHIN(1e-3f, (pos.z - before.z) / dt, v.z);
+        if (!char_body_is_on_floor(&body)) TEST_ASSERT_FLOAT_WITHIN(1e-3f, (pos.y - before.y) / dt, v.y);
+        else TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.0f, v.y);
+    }
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_staircases_30hz);
+    RUN_TEST(test_staircases_60hz);
+    RUN_TEST(test_staircases_120hz);
+    RUN_TEST(test_tall_riser_blocks_at_every_rate);
+    RUN_TEST(test_crack_spawn_over);
+    RUN_TEST(test_crack_walk_along);
+    RUN_TEST(test_crack_walk_across);
+    RUN_TEST(test_ledge_beside_wide_gap_falls);
+    RUN_TEST(test_valley_slot);
+    RUN_TEST(test_overhang_wedge);
+    RUN_TEST(test_low_ledge_blocks);
+    RUN_TEST(test_velocity_at_rest_over_slot);
+    RUN_TEST(test_velocity_matches_motion_in_the_air);
+    return UNITY_END();
+}
