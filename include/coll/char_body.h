@@ -6,6 +6,23 @@
  * Each frame: set input_velocity, call char_body_move_and_slide(). The body adds gravity,
  * sweeps and slides, snaps to the floor and writes the resolved position back to the
  * owner's position. Allocation-free; the whole body is a plain struct (<= 256 bytes).
+ *
+ * What holds the body up, beyond the seed:
+ * - Stairs: a riser of at most step_height is climbed at any update rate; where the
+ *   shortened capsule's round bottom catches the nosing of a later riser first (treads
+ *   shorter than about 0.45 m), the body steps over it (lift, move, come back down) and
+ *   may ride that nosing until its foot is over the next tread. A taller riser blocks.
+ * - Ledges and cracks: the foot is a point. Where the floor under the foot point is out of
+ *   reach (none, or deeper than floor_snap_distance), the full capsule's bottom ball is
+ *   dropped onto what is below it and rolled down its contact: when the roll meets the
+ *   other side of a gap (a wedge) or a walkable floor within half a radius of descent, the
+ *   body is supported and stands at the height of the lower contact -- a crack (a gap
+ *   narrower than about 1.7 radii between floor pieces, a slot at the bottom of a valley or
+ *   between a ledge and a wall). Otherwise it is a ledge and the body falls.
+ * - Room to stand: a step that would leave the full capsule standing on a floor it has no
+ *   room above (under a low ledge or an overhang) is not taken.
+ * - char_body_get_velocity() is the velocity the body moved with (a stop by a wall, wedge
+ *   or crack shows), not a fall speed accumulating while it rests; carry is not included.
  */
 #ifndef COLL_CHAR_BODY_H
 #define COLL_CHAR_BODY_H
