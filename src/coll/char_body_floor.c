@@ -67,10 +67,12 @@ typedef struct {
  * capsule's bottom ball is (free space) by step + reach + r/2; from where it first touches,
  * it rolls down the contact's tangent plane by up to a diameter. It is held when that roll
  * meets geometry on the other side (the horizontal parts of the two contact normals
- * oppose: a wedge) or a walkable floor, within half a radius of descent. The body then
- * stands at the height of the lower of the two contacts when that is within reach: at the
- * level of the surfaces that hold it (only the height changes: it is not pulled sideways). At a ledge the roll meets nothing, or nothing it can
- * stand on, and the foot-as-a-point rule stands: the body falls.
+ * oppose: a wedge) or a walkable floor, within half a radius of descent, and when the lower
+ * contact is within reach of the foot. The body then stands where the ball rests: touching
+ * the higher edge of a crack (sunk below it by at most the sag of a round capsule resting on
+ * both edges, r - sqrt(r^2 - (gap/2)^2)), or on the floor it rolled onto. Only its height
+ * changes: it is not pulled sideways into the crack. At a ledge the roll meets nothing, or
+ * nothing it can stand on, and the foot-as-a-point rule stands: the body falls.
  */
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *out)
 {
@@ -88,6 +90,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
+    float gap = d1 - c->step;                            /* resting on the first contact */
     fm_vec3_t normal = h1.normal;
     fm_vec3_t tangent = cb_madd(cb_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
     if (cb_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
@@ -107,17 +110,16 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *
             normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
             if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
         } else if (cb_dot(h2.normal, up) >= b->cos_floor_max_angle) {
-            normal = h2.normal; /* rolled onto a floor */
+            normal = h2.normal; /* rolled onto a floor: stands on it */
+            gap = -c2;
         } else {
             return false;
         }
     }
-    /* The body stands at the level of the surfaces that hold it (the lower contact), not
-     * sunk in as far as the round ball would be: no dip walking across a crack. */
     if (-contact > reach) return false;
     out->found = true;
     out->steep = false;
-    out->gap = -contact;
+    out->gap = gap;
     out->normal = normal;
     out->point = h1.point;
     out->id = h1.id;
