@@ -70,11 +70,12 @@ typedef struct {
  * oppose: a wedge) or a walkable floor, within half a radius of descent, and when the lower
  * contact is within reach of the foot. The body then stands where the ball rests: touching
  * the higher edge of a crack (sunk below it by at most the sag of a round capsule resting on
- * both edges, r - sqrt(r^2 - (gap/2)^2)), or on the floor it rolled onto. Only its height
- * changes: it is not pulled sideways into the crack. At a ledge the roll meets nothing, or
+ * both edges, r - sqrt(r^2 - (gap/2)^2)). Only its height changes: it is not pulled
+ * sideways into the crack. A roll onto a floor counts within a tenth of a radius of descent
+ * (across a crack too narrow for the ball to dip into; not down a ledge onto a lower floor). At a ledge the roll meets nothing, or
  * nothing it can stand on, and the foot-as-a-point rule stands: the body falls.
  */
-static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *out)
+static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, support_t *out)
 {
     const char_body_t *b = c->body;
     const fm_vec3_t up = c->up;
@@ -88,14 +89,20 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *
         return false;
     float n1u = cb_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
+    /* Resting on the very plane the foot ray found out of reach below the foot: the body
+     * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
+    if (under && cb_dot(under->normal, h1.normal) > 0.999f &&
+        fabsf(cb_dot(cb_sub(under->point, h1.point), h1.normal)) < 1e-3f * (1.0f + r))
+        return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
-    float gap = d1 - c->step;                            /* resting on the first contact */
+    float gap = d1 - c->step; /* resting on the first contact (the body is not moved sideways) */
     fm_vec3_t normal = h1.normal;
     fm_vec3_t tangent = cb_madd(cb_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
     if (cb_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
         fm_vec3_t downhill = cb_norm(tangent);
-        fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, c->skin);
+        /* lifted off the first contact by more than the queries' touch tolerance */
+        fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
         if (!coll_capsule_sweep(c->scene, b1, up, r, 0.0f, cb_scale(downhill, 2.0f * r), b->settings.read_mask,
                                 b->settings.coll_types, &h2) ||
@@ -109,9 +116,8 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *
         if (cb_dot(side1, side2) < -0.05f) {
             normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
             if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
-        } else if (cb_dot(h2.normal, up) >= b->cos_floor_max_angle) {
-            normal = h2.normal; /* rolled onto a floor: stands on it */
-            gap = -c2;
+        } else if (cb_dot(h2.normal, up) >= b->cos_floor_max_angle && descent <= 0.1f * r) {
+            normal = h2.normal; /* rolled across a narrow crack onto the floor beyond it */
         } else {
             return false;
         }
@@ -192,7 +198,7 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
         }
-        if (!s.found) ball_held(c, *pos, reach, &s);
+        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
