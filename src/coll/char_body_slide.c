@@ -385,6 +385,82 @@ bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     return true;
 }
 
+/** True when the sweep capsule at pos overlaps nothing deeper than CB_MIN_DEPTH. */
+static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    coll_contact_t ct[CB_MAX_CONTACTS];
+    uint32_t n = overlaps_at(c, pos, ct);
+    for (uint32_t i = 0; i < n; i++)
+        if (ct[i].depth > CB_MIN_DEPTH) return false;
+    return true;
+}
+
+/**
+ * Last resort for a body the verified recovery could not free (the game teleported it deep
+ * into geometry, an up change swung it into a wall, a platform pressed it into one): move it
+ * to free space -- verified free, so never into something else. Candidates, shortest first
+ * within each kind: the push out along the contact normals, where those are trustworthy
+ * (the capsule's axis is still in front of the surface: depth <= r; deeper, a two-sided
+ * triangle's normal may point further in) and none points down hard; then rings of growing
+ * distance (a quarter of the height to twice it): lifts along up first (the way games
+ * unstick a player), unless a ceiling presses on it, then eight directions across up.
+ * Never down: a body is not pushed through the floor. At most 37 overlap queries, only on
+ * steps that start more than a skin deep in something after the verified recovery.
+ */
+static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
+{
+    coll_contact_t ct[CB_MAX_CONTACTS];
+    uint32_t n = overlaps_at(c, *pos, ct);
+    float deepest = 0.0f;
+    bool trust = true, ceiling = false;
+    for (uint32_t i = 0; i < n; i++) {
+        if (!(ct[i].depth > CB_MIN_DEPTH) || !cb_finite(ct[i].normal)) continue;
+        if (ct[i].depth > deepest) deepest = ct[i].depth;
+        if (ct[i].depth > c->radius) trust = false;
+        float nu = cb_dot(ct[i].normal, c->up);
+        if (nu < -0.1f) trust = false;
+        if (nu < -0.3f) ceiling = true;
+    }
+    if (!(deepest > c->skin)) return;
+    if (trust) {
+        fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
+        for (int iter = 0; iter < 4; iter++)
+            for (uint32_t i = 0; i < n; i++) {
+                if (!(ct[i].depth > CB_MIN_DEPTH)) continue;
+                float want = ct[i].depth + c->skin - cb_dot(delta, ct[i].normal);
+                if (want > 0.0f) delta = cb_madd(delta, ct[i].normal, want);
+            }
+        fm_vec3_t p = cb_add(*pos, delta);
+        if (cb_finite(p) && free_at(c, p)) {
+            *pos = p;
+            if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
+            return;
+        }
+    }
+    /* Search rings of growing distance: up first (unless a ceiling presses on it), then
+     * eight directions across up. Never down. */
+    fm_vec3_t side = cb_norm(cb_reject(cb_v(1.0f, 0.0f, 0.0f), c->up));
+    if (cb_len(side) < 0.5f) side = cb_norm(cb_reject(cb_v(0.0f, 0.0f, 1.0f), c->up));
+    fm_vec3_t side2 = cb_cross(c->up, side);
+    const float h = 2.0f * c->half_height;
+    const float dists[4] = {0.25f * h, 0.5f * h, h, 2.0f * h};
+    for (int k = 0; k < 4; k++) {
+        for (int dir = ceiling ? 1 : 0; dir < 9; dir++) {
+            fm_vec3_t d = c->up;
+            if (dir > 0) {
+                float a = (float)(dir - 1) * (0.25f * FM_PI);
+                d = cb_madd(cb_scale(side, cosf(a)), side2, sinf(a));
+            }
+            fm_vec3_t p = cb_madd(*pos, d, dists[k]);
+            if (cb_finite(p) && free_at(c, p)) {
+                *pos = p;
+                if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
+                return;
+            }
+        }
+    }
+}
+
 void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
@@ -433,6 +509,7 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
             if (vel) *vel = v;
         }
     }
+    unstick(c, pos, vel);
 }
 
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
