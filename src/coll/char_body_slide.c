@@ -385,6 +385,14 @@ bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     return true;
 }
 
+/** True when a contact of ct is deeper than depth. */
+static bool deeper_than(const coll_contact_t *ct, uint32_t n, float depth)
+{
+    for (uint32_t i = 0; i < n; i++)
+        if (ct[i].depth > depth) return true;
+    return false;
+}
+
 /** True when the sweep capsule at pos overlaps nothing deeper than CB_MIN_DEPTH. */
 static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
 {
@@ -469,6 +477,7 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
     fm_vec3_t p = *pos;
     fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    bool stuck = deeper_than(ct0, n0, c->skin); /* at the last kept position */
     for (int pass = 0; pass < 3; pass++) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
         bool any = false;
@@ -507,9 +516,10 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         if (no_worse(ct, n, ct0, n0)) {
             *pos = p;
             if (vel) *vel = v;
+            stuck = deeper_than(ct, n, c->skin);
         }
     }
-    unstick(c, pos, vel);
+    if (stuck) unstick(c, pos, vel);
 }
 
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
