@@ -49,7 +49,41 @@ typedef struct {
     uint8_t max_slides;        ///< sweep-and-slide iterations per step, 1..8 (4)
     uint8_t read_mask;         ///< collision layers seen (0x01)
     bool follow_floor;         ///< carried by the mesh instance stood on (true)
+    uint8_t leave_velocity;    ///< CHAR_BODY_LEAVE_*: the floor's velocity kept on leaving it (ADD)
 } char_body_settings_t;
+
+/** What the body keeps of the velocity of the floor it leaves (a jump, walking off an
+ *  edge), as Godot's CharacterBody3D platform_on_leave. */
+enum {
+    CHAR_BODY_LEAVE_ADD = 0,        ///< keep all of it (default): jump off a lift, land on it
+    CHAR_BODY_LEAVE_HORIZONTAL = 1, ///< keep only its part across up
+    CHAR_BODY_LEAVE_DROP = 2,       ///< keep none of it
+};
+
+/** Where the body stands (char_body_ground_state()). */
+typedef enum {
+    CHAR_BODY_AIRBORNE = 0, ///< not touching a floor
+    CHAR_BODY_ON_FLOOR,     ///< on a walkable floor
+    CHAR_BODY_ON_STEEP,     ///< on a surface steeper than floor_max_angle (slides down it)
+} char_body_ground_state_t;
+
+/** What happened in the last step (char_body_events()): bits of char_body_events_t.flags. */
+enum {
+    CHAR_BODY_EVENT_LANDED      = 1u << 0, ///< airborne before, on a floor now (landing_speed)
+    CHAR_BODY_EVENT_LEFT_FLOOR  = 1u << 1, ///< on a floor before, airborne now (a jump or a walk off)
+    CHAR_BODY_EVENT_JUMPED      = 1u << 2, ///< left the floor moving up along up (with LEFT_FLOOR)
+    CHAR_BODY_EVENT_STEPPED     = 1u << 3, ///< on a floor before and after, stepped up or down (step)
+    CHAR_BODY_EVENT_HIT_CEILING = 1u << 4, ///< stopped by something above while moving up
+    CHAR_BODY_EVENT_HIT_WALL    = 1u << 5, ///< slid along or stopped at a wall (wall_normal)
+};
+
+/** Events of the last step; all zero when nothing happened. */
+typedef struct {
+    uint8_t flags;         ///< CHAR_BODY_EVENT_* bits
+    float landing_speed;   ///< LANDED: speed along -up at impact, m/s (>= 0)
+    float step;            ///< STEPPED: height change along up, m (> 0 up a stair, < 0 down)
+    fm_vec3_t wall_normal; ///< HIT_WALL: normal of the (last) wall hit, unit
+} char_body_events_t;
 
 /** The seed's defaults. */
 #define CHAR_BODY_SETTINGS_DEFAULT ((char_body_settings_t){ \
@@ -75,7 +109,12 @@ typedef struct char_body_s {
     float inner_half_height;       ///< cached height / 2 - radius
     float slide_speed;             ///< speed sliding down a steep floor, m/s (private)
     int32_t floor_id;              ///< id of the collider stood on, -1 when none
-    uint8_t flags;                 ///< CHAR_BODY_FLAG_* (private)
+    uint8_t flags;                 ///< CB_FLAG_* (private)
+    fm_vec3_t ground_velocity;     ///< velocity of the floor point stood on, m/s
+    fm_vec3_t carry_velocity;      ///< last step's carry displacement / dt (private)
+    fm_vec3_t air_velocity;        ///< floor velocity across up kept since leaving it (private)
+    coll_body_t *collider;         ///< the body's own collider, kept in sync, or NULL
+    char_body_events_t events;     ///< what happened in the last step
 } char_body_t;
 
 /** Default settings, owner_pos attached (may be NULL: the body then keeps its own origin). */
@@ -104,6 +143,23 @@ void char_body_set_velocity(char_body_t *body, fm_vec3_t velocity);
 fm_vec3_t char_body_foot_pos(const char_body_t *body);
 /** Id of the collider stood on, -1 when none. */
 int32_t char_body_floor_id(const char_body_t *body);
+/** Airborne, on a walkable floor, or on a steep surface. */
+char_body_ground_state_t char_body_ground_state(const char_body_t *body);
+/** Velocity of the floor point stood on (a moving, turning or scaling platform's motion at
+ *  the foot), m/s; zero when airborne or on a static floor. */
+fm_vec3_t char_body_ground_velocity(const char_body_t *body);
+/** Events of the last step (landed, left the floor, stepped, hit a ceiling or a wall). */
+const char_body_events_t *char_body_events(const char_body_t *body);
+
+/**
+ * Gives the body a collider of its own, so that other bodies (with COLL_TYPE_BODY in their
+ * coll_types) collide with it: a capsule coll_body_t that the caller registers in the scene
+ * (coll_scene_add_body) and owns. The body sets its shape to the full capsule and keeps it
+ * at the body's position after every step and teleport; the body never collides with its
+ * own collider (its write_mask is cleared while the body steps, then restored). NULL
+ * detaches it. Bodies never push each other: each stops at or slides along the others.
+ */
+void char_body_set_collider(char_body_t *body, coll_body_t *collider);
 
 /** Moves the owner to owner_pos. reset_forces: zero velocity and clear the grounded state. */
 void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_forces);

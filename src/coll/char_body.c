@@ -14,6 +14,8 @@
 
 _Static_assert(sizeof(char_body_t) <= 256, "char_body_t must stay within 256 bytes");
 
+static void sync_collider(char_body_t *body);
+
 /* ---- settings ---- */
 
 /** v clamped to [lo, hi]; NaN gives fallback. */
@@ -64,9 +66,12 @@ void char_body_configure(char_body_t *body, const char_body_settings_t *settings
     if (s.max_slides < 1) s.max_slides = 1;
     if (s.max_slides > CB_MAX_PLANES) s.max_slides = CB_MAX_PLANES;
 
+    if (s.leave_velocity > CHAR_BODY_LEAVE_DROP) s.leave_velocity = CHAR_BODY_LEAVE_ADD;
+
     body->settings = s;
     body->cos_floor_max_angle = cosf(s.floor_max_angle);
     body->inner_half_height = inner;
+    sync_collider(body);
 }
 
 const char_body_settings_t *char_body_get_settings(const char_body_t *body)
@@ -80,12 +85,14 @@ void char_body_set_up(char_body_t *body, fm_vec3_t up)
     fm_vec3_t n = cb_norm(up);
     if (cb_len(n) < 0.5f) return;
     body->settings.up = n;
+    sync_collider(body);
 }
 
 void char_body_set_center_offset(char_body_t *body, fm_vec3_t offset)
 {
     if (!body || !cb_finite(offset)) return;
     body->settings.center_offset = offset;
+    sync_collider(body);
 }
 
 /* ---- state ---- */
@@ -134,6 +141,57 @@ int32_t char_body_floor_id(const char_body_t *body)
     return body ? body->floor_id : -1;
 }
 
+char_body_ground_state_t char_body_ground_state(const char_body_t *body)
+{
+    if (!body || !(body->flags & CB_FLAG_GROUNDED)) return CHAR_BODY_AIRBORNE;
+    return (body->flags & CB_FLAG_STEEP) ? CHAR_BODY_ON_STEEP : CHAR_BODY_ON_FLOOR;
+}
+
+fm_vec3_t char_body_ground_velocity(const char_body_t *body)
+{
+    return body ? body->ground_velocity : cb_v(0.0f, 0.0f, 0.0f);
+}
+
+const char_body_events_t *char_body_events(const char_body_t *body)
+{
+    return body ? &body->events : NULL;
+}
+
+/** Rotation taking +Y to unit u (shortest arc). */
+static fm_quat_t quat_y_to(fm_vec3_t u)
+{
+    fm_vec3_t y = cb_v(0.0f, 1.0f, 0.0f);
+    float d = cb_dot(y, u);
+    fm_quat_t q;
+    if (d < -0.999999f) {
+        q = (fm_quat_t){{1.0f, 0.0f, 0.0f, 0.0f}}; /* half turn about X */
+        return q;
+    }
+    fm_vec3_t a = cb_cross(y, u);
+    q = (fm_quat_t){{a.x, a.y, a.z, 1.0f + d}};
+    fm_quat_norm(&q, &q);
+    return q;
+}
+
+/** The own collider as the full capsule at the body's position. */
+static void sync_collider(char_body_t *body)
+{
+    coll_body_t *k = body->collider;
+    if (!k) return;
+    k->shape = COLL_SHAPE_CAPSULE;
+    k->half_extents = cb_v(body->settings.radius, body->inner_half_height, body->settings.radius);
+    k->xf.pos = cb_add(owner_position(body), body->settings.center_offset);
+    k->xf.rot = quat_y_to(body->settings.up);
+    k->xf.scale = cb_v(1.0f, 1.0f, 1.0f);
+}
+
+void char_body_set_collider(char_body_t *body, coll_body_t *collider)
+{
+    if (!body) return;
+    body->collider = collider;
+    sync_collider(body);
+}
+
 static void clear_floor(char_body_t *body)
 {
     body->flags &= (uint8_t)~(CB_FLAG_GROUNDED | CB_FLAG_STEEP | CB_FLAG_CARRY);
@@ -148,13 +206,16 @@ void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_force
     body->origin = owner_pos;
     if (body->owner_pos) *body->owner_pos = owner_pos;
     /* The carry anchor belongs to the old place either way. */
-    body->flags &= (uint8_t)~CB_FLAG_CARRY;
+    body->flags &= (uint8_t)~(CB_FLAG_CARRY | CB_FLAG_CARRIED);
     body->floor_instance = NULL;
+    body->ground_velocity = cb_v(0.0f, 0.0f, 0.0f);
     if (reset_forces) {
+        body->air_velocity = cb_v(0.0f, 0.0f, 0.0f);
         body->velocity = cb_v(0.0f, 0.0f, 0.0f);
         body->slide_speed = 0.0f;
         clear_floor(body);
     }
+    sync_collider(body);
 }
 
 /* ---- the step ---- */
@@ -182,6 +243,33 @@ static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n)
     return cb_scale(v, speed / l);
 }
 
+/**
+ * Turns this step's floor state change and the heights collected by the slide and the probe
+ * into events. A height change counts as a step (stairs, a kerb: what a camera smooths)
+ * when it is at least a tenth of step_height and the floor stood on keeps its orientation
+ * (parallel treads); a ramp's crest or foot changes the floor normal and is not a step.
+ */
+static void record_events(char_body_t *body, bool was_grounded, fm_vec3_t was_normal, float v_up, bool jumping)
+{
+    char_body_events_t *ev = &body->events;
+    bool grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
+    if (!was_grounded && grounded) {
+        ev->flags |= CHAR_BODY_EVENT_LANDED;
+        ev->landing_speed = v_up < 0.0f ? -v_up : 0.0f;
+    }
+    if (was_grounded && !grounded) {
+        ev->flags |= CHAR_BODY_EVENT_LEFT_FLOOR;
+        if (jumping) ev->flags |= CHAR_BODY_EVENT_JUMPED;
+    }
+    float step = ev->step;
+    ev->step = 0.0f;
+    if (was_grounded && grounded && fabsf(step) >= 0.1f * body->settings.step_height && fabsf(step) > 0.0f &&
+        cb_dot(was_normal, body->floor_normal) > 0.9998f) {
+        ev->flags |= CHAR_BODY_EVENT_STEPPED;
+        ev->step = step;
+    }
+}
+
 void char_body_move_and_slide(char_body_t *body, float dt)
 {
     const coll_scene_t *scene = coll_scene_current();
@@ -207,6 +295,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     if (c.sweep_ihh < 0.0f) c.sweep_ihh = 0.0f;
     c.sweep_lift = 0.5f * s->step_height;
     c.skin = 0.01f * s->radius < CB_SKIN ? 0.01f * s->radius : CB_SKIN;
+    c.dt = dt;
+    c.ev = NULL;
+    body->events = (char_body_events_t){0};
+    /* Never collide with the own collider: off every layer while this body steps. */
+    uint8_t own_mask = body->collider ? body->collider->write_mask : 0;
+    if (body->collider) body->collider->write_mask = 0;
 
     fm_vec3_t pos = owner_position(body);
     body->velocity = clamp_speed(body->velocity);
@@ -214,10 +308,13 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     bool was_grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
     bool was_steep = (body->flags & CB_FLAG_STEEP) != 0;
+    const fm_vec3_t was_floor_normal = body->floor_normal;
     fm_vec3_t up = c.up;
 
     /* 1. carry */
-    if (was_grounded && s->follow_floor) cb_carry(&c, &pos);
+    fm_vec3_t ground_v = cb_v(0.0f, 0.0f, 0.0f);
+    if (was_grounded && s->follow_floor) ground_v = cb_carry(&c, &pos);
+    else body->flags &= (uint8_t)~CB_FLAG_CARRIED;
 
     /* 2. recover */
     cb_recover(&c, &pos, &body->velocity);
@@ -233,7 +330,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     } else {
         v_up -= s->gravity * dt;
         if (v_up < -s->max_fall_speed) v_up = -s->max_fall_speed;
-        v = cb_madd(in_h, up, v_up);
+        /* airborne: the input, plus what was kept of the floor's velocity on leaving it */
+        v = cb_madd(cb_add(in_h, body->air_velocity), up, v_up);
         fm_vec3_t n = body->floor_normal;
         fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), n));
         float sin_slope = -cb_dot(down_hill, up);
@@ -257,6 +355,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     body->velocity = v;
 
     /* 4. slide */
+    c.ev = &body->events;
     const fm_vec3_t start = pos;
     fm_vec3_t old_foot = cb_foot(&c, pos);
     cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
@@ -290,9 +389,34 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         cb_probe_floor(&c, &pos, was_grounded, jumping);
     }
 
+    /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as
+     * settings.leave_velocity says; on a floor, ground_velocity is its velocity. */
+    bool grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
+    if (was_grounded && !grounded) {
+        fm_vec3_t keep = ground_v;
+        if (s->leave_velocity == CHAR_BODY_LEAVE_HORIZONTAL) keep = cb_reject(keep, up);
+        if (s->leave_velocity == CHAR_BODY_LEAVE_DROP) keep = cb_v(0.0f, 0.0f, 0.0f);
+        body->velocity = cb_add(body->velocity, keep);
+        body->air_velocity = cb_reject(keep, up); /* the part along up is in the velocity */
+        body->flags &= (uint8_t)~CB_FLAG_CARRIED;
+    } else if (grounded) {
+        body->air_velocity = cb_v(0.0f, 0.0f, 0.0f);
+    } else if (body->events.flags & CHAR_BODY_EVENT_HIT_WALL) {
+        /* a wall met in the air stops the kept velocity going into it */
+        fm_vec3_t n = body->events.wall_normal;
+        float into = cb_dot(body->air_velocity, n);
+        if (into < 0.0f) body->air_velocity = cb_madd(body->air_velocity, n, -into);
+    }
+    body->ground_velocity = grounded ? ground_v : cb_v(0.0f, 0.0f, 0.0f);
+    record_events(body, was_grounded, was_floor_normal, v_up, jumping);
+
     body->velocity = clamp_speed(body->velocity);
     if (cb_finite(pos)) {
         body->origin = pos;
         if (body->owner_pos) *body->owner_pos = pos;
+    }
+    if (body->collider) {
+        body->collider->write_mask = own_mask;
+        sync_collider(body);
     }
 }

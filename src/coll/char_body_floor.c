@@ -31,20 +31,54 @@ bool cb_xf_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local
     return cb_finite(*local);
 }
 
-void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
+/**
+ * The velocity half a step after the chord velocity `cur`, given the chord `prev` of the
+ * step before: turned on by half the turn from prev to cur (about their common normal),
+ * and with its length changed by half the change. Exact for a steady turn (a turntable),
+ * a steady translation and a steady acceleration along a line.
+ */
+static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur)
+{
+    float lp = cb_len(prev), lc = cb_len(cur);
+    if (!(lp > 1e-6f) || !(lc > 1e-6f)) return cb_madd(cur, cb_sub(cur, prev), 0.5f);
+    fm_vec3_t axis = cb_cross(prev, cur);
+    float s = cb_len(axis) / (lp * lc), co = cb_dot(prev, cur) / (lp * lc);
+    fm_vec3_t v = cur;
+    if (s > 1e-7f) {
+        axis = cb_scale(axis, 1.0f / (s * lp * lc));
+        float ch = sqrtf(fmaxf(0.0f, 0.5f * (1.0f + co))), sh = sqrtf(fmaxf(0.0f, 0.5f * (1.0f - co)));
+        /* Rodrigues, by half the angle; axis is perpendicular to cur */
+        v = cb_add(cb_scale(cur, ch), cb_scale(cb_cross(axis, cur), sh));
+    }
+    float grow = lc + 0.5f * (lc - lp);
+    return cb_scale(v, (grow > 0.0f ? grow : 0.0f) / lc);
+}
+
+fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
 {
     char_body_t *b = c->body;
-    if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return;
+    fm_vec3_t none = cb_v(0.0f, 0.0f, 0.0f);
+    if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return none;
     /* Only an instance still in the scene carries (it may have been removed since). */
     bool present = false;
     for (uint16_t i = 0; i < c->scene->mesh_count && i < COLL_SCENE_MAX_MESHES; i++)
         if (c->scene->meshes[i] == b->floor_instance) present = true;
-    if (!present) return;
+    if (!present) return none;
     fm_vec3_t now = cb_xf_apply(&b->floor_instance->xf, b->floor_local_point);
     fm_vec3_t delta = cb_sub(now, b->floor_world_point);
-    if (!cb_finite(delta)) return;
+    if (!cb_finite(delta)) return none;
     /* Swept, so a platform cannot carry the body through a wall. */
     cb_slide(c, pos, delta, NULL, false);
+    /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
+     * velocity over the step (at mid-step); extrapolated by half a step from the previous
+     * chord, a turning platform's tangent at take-off is right to second order (a jump off
+     * a turntable at 1 rev/s would otherwise leave rotated by half a step). */
+    fm_vec3_t chord = cb_scale(delta, 1.0f / c->dt);
+    fm_vec3_t v = chord;
+    if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord);
+    b->carry_velocity = chord;
+    b->flags |= CB_FLAG_CARRIED;
+    return cb_finite(v) ? v : none;
 }
 
 /** What holds the body up at the end of a step. */
@@ -204,12 +238,14 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
              * edge may stop it short. A lift the capsule has no room for (a ledge or an
              * overhang above) means the body cannot stand here at all. */
+            fm_vec3_t before = *pos;
             if (s.gap > 0.0f) {
                 snap_down(c, pos, s.gap);
             } else {
                 float done = cb_move_swept(c, pos, cb_scale(up, -s.gap));
                 if (s.gap < -1e-3f && done * -s.gap < -s.gap - 1e-3f) fits = false;
             }
+            if (c->ev) c->ev->step += cb_dot(cb_sub(*pos, before), up);
         }
     }
 

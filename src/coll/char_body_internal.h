@@ -14,6 +14,7 @@ enum {
     CB_FLAG_GROUNDED = 1u << 0, ///< standing on a floor (walkable or steep)
     CB_FLAG_STEEP    = 1u << 1, ///< the floor is steeper than floor_max_angle
     CB_FLAG_CARRY    = 1u << 2, ///< floor_local_point / floor_world_point are valid
+    CB_FLAG_CARRIED  = 1u << 3, ///< carry_velocity holds the last step's carry (same floor)
 };
 
 /* Tolerances. Each says why it exists. */
@@ -67,6 +68,8 @@ typedef struct {
     float step;          ///< step height
     float snap;          ///< floor snap distance
     float skin;          ///< contact gap: CB_SKIN, or 1 % of the radius when smaller
+    float dt;            ///< this step's (clamped) duration, s
+    char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
 } cb_ctx_t;
 
 /** Full capsule centre of an owner position. */
@@ -105,8 +108,9 @@ bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
 void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot. */
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
-/** Moves the body with the mesh instance it stood on last step. */
-void cb_carry(const cb_ctx_t *c, fm_vec3_t *pos);
+/** Moves the body with the mesh instance it stood on last step; returns the velocity of the
+ *  floor point stood on at the end of that motion (zero when not carried). */
+fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos);
 /** Floor probe after the slide: grounding, steep state, snapping, stair lift, cracks, carry
  *  anchor. Returns false when the body needs a lift onto the floor that the capsule has no
  *  room for (it cannot stand where it is). */

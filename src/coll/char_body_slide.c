@@ -235,6 +235,7 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     } else if (floor_h > rise && cb_move_swept(c, &p, cb_scale(c->up, floor_h - rise)) < 1.0f) {
         return false;
     }
+    if (c->ev) c->ev->step += cb_dot(cb_sub(p, *pos), c->up);
     *pos = p;
     *moved = f;
     return true;
@@ -264,6 +265,18 @@ static fm_vec3_t face_normal(const coll_sweep_hit_t *hit)
     float d = cb_dot(wn, n);
     if (d < 0.0f) { wn = cb_scale(wn, -1.0f); d = -d; }
     return d > 0.999f ? wn : n;
+}
+
+/** Step events of a slide hit: a ceiling met moving up, a wall (the plane slid along). */
+static void record_hit(const cb_ctx_t *c, fm_vec3_t motion, fm_vec3_t plane, fm_vec3_t normal)
+{
+    float nu = cb_dot(normal, c->up);
+    if (nu < -0.3f) {
+        if (cb_dot(motion, c->up) > 0.0f) c->ev->flags |= CHAR_BODY_EVENT_HIT_CEILING;
+    } else if (cb_dot(plane, c->up) < c->body->cos_floor_max_angle) {
+        c->ev->flags |= CHAR_BODY_EVENT_HIT_WALL;
+        c->ev->wall_normal = plane;
+    }
 }
 
 void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
@@ -320,6 +333,7 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
             continue;
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        if (c->ev) record_hit(c, rem, n, hit.normal);
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && cb_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
@@ -404,6 +418,37 @@ static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
 }
 
 /**
+ * True when the straight way from the sweep capsule's centre at `from` to its centre at `to`
+ * crosses no surface outside the part of the capsule that is already in geometry: along the
+ * axis segment always (a body teleported into a stack of slabs leaves along up through the
+ * faces its axis is through), and within the whole capsule when it is deep in something
+ * (`deep`: half a radius or more). A surface beside the axis that a shallowly overlapping
+ * capsule only grazes -- a wall it was squeezed into by a millimetre -- is never crossed:
+ * the free spot behind it would be through the wall or inside a solid. Winding is not
+ * trusted to tell inside from outside.
+ */
+static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t o = cb_sweep_center(c, from), e = cb_sweep_center(c, to);
+    fm_vec3_t d = cb_sub(e, o);
+    float len = cb_len(d);
+    if (!(len > 1e-6f)) return true;
+    fm_vec3_t dir = cb_scale(d, 1.0f / len);
+    float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(fmaxf(0.0f, 1.0f - axial * axial));
+    float reach = axial > 0.999f ? c->sweep_ihh : 0.0f;
+    if (deep) {
+        /* where the ray leaves the capsule: through the cylinder or through a cap */
+        float in = c->radius - c->skin;
+        float cyl = radial > 1e-6f ? in / radial : 1e30f, cap = axial > 1e-6f ? (c->sweep_ihh + in) / axial : 1e30f;
+        reach = cyl < cap ? cyl : cap;
+    }
+    if (reach >= len) return true;
+    coll_ray_hit_t h;
+    return !coll_raycast(c->scene, cb_madd(o, dir, reach), dir, len - reach, b->settings.read_mask, COLL_TYPE_MESH, &h);
+}
+
+/**
  * Last resort for a body the verified recovery could not free (the game teleported it deep
  * into geometry, an up change swung it into a wall, a platform pressed it into one): move it
  * to free space -- verified free, so never into something else. Candidates, shortest first
@@ -412,8 +457,9 @@ static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
  * triangle's normal may point further in) and none points down hard; then rings of growing
  * distance (a quarter of the height to twice it): lifts along up first (the way games
  * unstick a player), unless a ceiling presses on it, then eight directions across up.
- * Never down: a body is not pushed through the floor. At most 37 overlap queries, only on
- * steps that start more than a skin deep in something after the verified recovery.
+ * Never down: a body is not pushed through the floor, and never through a surface it does
+ * not already overlap (reachable). At most 37 overlap queries, only on steps that start more than a
+ * skin deep in something after the verified recovery.
  */
 static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
@@ -430,6 +476,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         if (nu < -0.3f) ceiling = true;
     }
     if (!(deepest > c->skin)) return;
+    const bool deep = deepest >= 0.5f * c->radius;
     if (trust) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
         for (int iter = 0; iter < 4; iter++)
@@ -439,7 +486,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
                 if (want > 0.0f) delta = cb_madd(delta, ct[i].normal, want);
             }
         fm_vec3_t p = cb_add(*pos, delta);
-        if (cb_finite(p) && free_at(c, p)) {
+        if (cb_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep)) {
             *pos = p;
             if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
             return;
@@ -453,14 +500,15 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     const float h = 2.0f * c->half_height;
     const float dists[4] = {0.25f * h, 0.5f * h, h, 2.0f * h};
     for (int k = 0; k < 4; k++) {
-        for (int dir = ceiling ? 1 : 0; dir < 9; dir++) {
+        for (int dir = ceiling && !deep ? 1 : 0; dir < 9; dir++) {
             fm_vec3_t d = c->up;
             if (dir > 0) {
                 float a = (float)(dir - 1) * (0.25f * FM_PI);
                 d = cb_madd(cb_scale(side, cosf(a)), side2, sinf(a));
             }
             fm_vec3_t p = cb_madd(*pos, d, dists[k]);
-            if (cb_finite(p) && free_at(c, p)) {
+            /* deep in a solid, up is the way out even through other faces (a slab stack) */
+            if (cb_finite(p) && free_at(c, p) && ((deep && dir == 0) || reachable(c, *pos, p, deep))) {
                 *pos = p;
                 if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
                 return;
@@ -513,7 +561,7 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * a body wedged between a slab's faces that the game never put there, and pushing
          * through ended 126 mm inside the other face (soak seed 12 level 382). A body the
          * game put deep into geometry may therefore stay there until it moves out. */
-        if (no_worse(ct, n, ct0, n0)) {
+        if (no_worse(ct, n, ct0, n0) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);

@@ -1,0 +1,423 @@
+/* Character body features games expect beyond the seed: the floor's velocity kept on leaving
+ * it, bodies that block each other through their own colliders, step events and the ground
+ * state. Every step runs under the allocation guard (CB_STEP). */
+#include "unity.h"
+#include "alloc_guard.h"
+#include "cb_levels.h"
+#include <math.h>
+#include <stdio.h>
+
+#define TAU 6.2831853f
+
+static char_body_t body;
+static fm_vec3_t pos;
+
+void setUp(void) { cb_world_reset(); }
+void tearDown(void) {}
+
+static void report(const char *what, double value, const char *unit)
+{
+    printf("MEASURED %s = %.6g %s\n", what, value, unit);
+}
+
+/* ---- 1. ground velocity and momentum on leaving ---- */
+
+typedef enum { PLAT_STATIC, PLAT_TRANSLATE, PLAT_TURN, PLAT_LIFT } plat_kind_t;
+
+static void place_platform(coll_mesh_instance_t *in, plat_kind_t kind, float t)
+{
+    in->xf.pos = cb_vec(0.0f, 0.0f, 0.0f);
+    fm_quat_identity(&in->xf.rot);
+    if (kind == PLAT_TRANSLATE) in->xf.pos.x = 4.0f * t;
+    if (kind == PLAT_LIFT) in->xf.pos.y = 2.0f * t;
+    if (kind == PLAT_TURN) {
+        fm_vec3_t axis = cb_vec(0.0f, 1.0f, 0.0f);
+        fm_quat_from_axis_angle(&in->xf.rot, &axis, TAU * t); /* 1 rev/s about +Y */
+    }
+}
+
+/* Analytic velocity of the platform point p at time t. */
+static fm_vec3_t platform_velocity(plat_kind_t kind, fm_vec3_t p)
+{
+    if (kind == PLAT_TRANSLATE) return cb_vec(4.0f, 0.0f, 0.0f);
+    if (kind == PLAT_LIFT) return cb_vec(0.0f, 2.0f, 0.0f);
+    if (kind == PLAT_TURN) return cb_vec(TAU * p.z, 0.0f, -TAU * p.x); /* (0, w, 0) x p */
+    return cb_vec(0.0f, 0.0f, 0.0f);
+}
+
+#define JUMP_TRACK 40
+/* Frames tracked after the jump: 0.3 s, before it comes down on the platform again. */
+static int track_frames(float hz) { int n = (int)(0.3f * hz); return n < JUMP_TRACK ? n : JUMP_TRACK; }
+
+/* Stands on the platform 2 m from its centre, jumps at 6 m/s; positions after the jump step
+ * relative to the position at its end, and the platform's velocity at take-off. */
+static void platform_jump(plat_kind_t kind, uint8_t leave, float hz, fm_vec3_t track[JUMP_TRACK], fm_vec3_t *v_take,
+                          fm_vec3_t *gv_before)
+{
+    const float dt = 1.0f / hz;
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.25f, 0.0f), cb_vec(40.0f, 0.25f, 40.0f), 0.0f); /* top at y = 0 */
+    const coll_mesh_t *m = cb_geo_end();
+    TEST_ASSERT_NOT_NULL(m);
+    coll_transform_t xf = {cb_vec(0.0f, 0.0f, 0.0f), {{0.0f, 0.0f, 0.0f, 1.0f}}, cb_vec(1.0f, 1.0f, 1.0f)};
+    coll_mesh_instance_t *in = cb_world_add_mesh(m, xf, 7);
+    float t = 0.0f;
+    place_platform(in, kind, t);
+    cb_body_init(&body, &pos, cb_vec(2.0f, 0.0f, 0.0f));
+    char_body_settings_t s = *char_body_get_settings(&body);
+    s.leave_velocity = leave;
+    char_body_configure(&body, &s);
+    for (int i = 0; i < 30; i++) {
+        t += dt;
+        place_platform(in, kind, t);
+        CB_STEP(&body, dt);
+    }
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
+    *gv_before = char_body_ground_velocity(&body);
+    /* jump */
+    char_body_set_velocity(&body, cb_vec(0.0f, 6.0f, 0.0f));
+    t += dt;
+    place_platform(in, kind, t);
+    CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE((char_body_events(&body)->flags & CHAR_BODY_EVENT_JUMPED) != 0);
+    *v_take = platform_velocity(kind, char_body_foot_pos(&body));
+    fm_vec3_t p0 = pos;
+    for (int k = 0; k < track_frames(hz); k++) {
+        t += dt;
+        place_platform(in, kind, t);
+        CB_STEP(&body, dt);
+        if (leave == CHAR_BODY_LEAVE_ADD) { TEST_ASSERT_FALSE(char_body_is_on_floor(&body)); }
+        track[k] = cb_vec(pos.x - p0.x, pos.y - p0.y, pos.z - p0.z);
+    }
+}
+
+static void momentum_case(plat_kind_t kind, float hz, const char *name)
+{
+    fm_vec3_t ref[JUMP_TRACK], got[JUMP_TRACK], v_take, v_static, gv, gv_static;
+    platform_jump(PLAT_STATIC, CHAR_BODY_LEAVE_ADD, hz, ref, &v_static, &gv_static);
+    platform_jump(kind, CHAR_BODY_LEAVE_ADD, hz, got, &v_take, &gv);
+    float worst = 0.0f;
+    for (int k = 0; k < track_frames(hz); k++) {
+        float tk = (float)(k + 1) / hz;
+        fm_vec3_t want = cb_vec(ref[k].x + v_take.x * tk, ref[k].y + v_take.y * tk, ref[k].z + v_take.z * tk);
+        float e = sqrtf((got[k].x - want.x) * (got[k].x - want.x) + (got[k].y - want.y) * (got[k].y - want.y) +
+                        (got[k].z - want.z) * (got[k].z - want.z));
+        if (e > worst) worst = e;
+    }
+    char label[96];
+    snprintf(label, sizeof label, "jump off a %s platform at %.0f Hz: worst distance from the ballistic path", name,
+             (double)hz);
+    report(label, worst, "m");
+    TEST_ASSERT_TRUE(worst < 0.01f);
+    float gl = sqrtf(gv.x * gv.x + gv.y * gv.y + gv.z * gv.z);
+    TEST_ASSERT_TRUE(kind == PLAT_STATIC || gl > 1.0f);
+}
+
+static void test_jump_off_translating_platform(void)
+{
+    momentum_case(PLAT_TRANSLATE, 60.0f, "translating (4 m/s)");
+    momentum_case(PLAT_TRANSLATE, 30.0f, "translating (4 m/s)");
+}
+static void test_jump_off_turning_platform(void)
+{
+    momentum_case(PLAT_TURN, 60.0f, "turning (1 rev/s)");
+    momentum_case(PLAT_TURN, 120.0f, "turning (1 rev/s)");
+}
+static void test_jump_off_lift(void)
+{
+    momentum_case(PLAT_LIFT, 60.0f, "lifting (2 m/s)");
+    momentum_case(PLAT_LIFT, 30.0f, "lifting (2 m/s)");
+}
+
+static void test_leave_velocity_settings(void)
+{
+    fm_vec3_t track[JUMP_TRACK], v, gv;
+    platform_jump(PLAT_TRANSLATE, CHAR_BODY_LEAVE_DROP, 60.0f, track, &v, &gv);
+    const int last = track_frames(60.0f) - 1;
+    TEST_ASSERT_FLOAT_WITHIN(0.02f, 0.0f, track[last].x); /* dropped: no drift along x */
+    platform_jump(PLAT_LIFT, CHAR_BODY_LEAVE_HORIZONTAL, 60.0f, track, &v, &gv);
+    fm_vec3_t ref[JUMP_TRACK], vs, gs;
+    platform_jump(PLAT_STATIC, CHAR_BODY_LEAVE_ADD, 60.0f, ref, &vs, &gs);
+    /* the lift's rise dropped: the same jump as from static ground, until the lift catches up */
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, ref[8].y, track[8].y);
+}
+
+static void test_ground_velocity_zero_on_static_floor_and_in_air(void)
+{
+    cb_level_floor(20.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 1.0f, 0.0f));
+    CB_STEP(&body, 1.0f / 60.0f);
+    fm_vec3_t g = char_body_ground_velocity(&body);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, g.x + g.y + g.z);
+    for (int i = 0; i < 60; i++) CB_STEP(&body, 1.0f / 60.0f);
+    g = char_body_ground_velocity(&body);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, fabsf(g.x) + fabsf(g.y) + fabsf(g.z));
+}
+
+/* ---- 2. bodies that block each other ---- */
+
+#define NB 32
+static char_body_t bodies[NB];
+static fm_vec3_t bpos[NB];
+static coll_body_t colliders[NB];
+
+static void add_body(int i, fm_vec3_t start, float radius)
+{
+    bpos[i] = start;
+    char_body_init(&bodies[i], &bpos[i]);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = radius;
+    s.height = 1.8f;
+    s.center_offset = cb_vec(0.0f, 0.9f, 0.0f);
+    s.coll_types = COLL_TYPE_ALL;
+    char_body_configure(&bodies[i], &s);
+    colliders[i] = (coll_body_t){0};
+    colliders[i].write_mask = 0x01;
+    colliders[i].id = (uint16_t)(100 + i);
+    char_body_set_collider(&bodies[i], &colliders[i]);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_body(&cb_world.scene, &colliders[i]));
+}
+
+/* Overlap of two upright capsules (foot at p, height 1.8), m: > 0 when they interpenetrate. */
+static float pair_overlap(int i, int j)
+{
+    const char_body_settings_t *a = char_body_get_settings(&bodies[i]), *b = char_body_get_settings(&bodies[j]);
+    float dx = bpos[i].x - bpos[j].x, dz = bpos[i].z - bpos[j].z;
+    float dy = bpos[i].y - bpos[j].y;
+    float seg = 1.8f - 2.0f * a->radius; /* inner segment length (same height for all) */
+    float vy = fabsf(dy) > seg ? fabsf(dy) - seg : 0.0f;
+    float d = sqrtf(dx * dx + dz * dz + vy * vy);
+    return a->radius + b->radius - d;
+}
+
+static void head_on(float speed, float hz, float offset_z, float *worst, float *passed_x)
+{
+    cb_world_reset();
+    cb_level_floor(30.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    add_body(0, cb_vec(-3.0f, 0.0f, 0.0f), 0.4f);
+    add_body(1, cb_vec(3.0f, 0.0f, offset_z), 0.4f);
+    const float dt = 1.0f / hz;
+    for (int f = 0; f < (int)(2.0f * hz); f++) {
+        bodies[0].input_velocity = cb_vec(speed, 0.0f, 0.0f);
+        bodies[1].input_velocity = cb_vec(-speed, 0.0f, 0.0f);
+        for (int i = 0; i < 2; i++) CB_STEP(&bodies[i], dt);
+        float o = pair_overlap(0, 1);
+        if (o > *worst) *worst = o;
+        TEST_ASSERT_TRUE(cb_body_finite(&bodies[0]) && cb_body_finite(&bodies[1]));
+    }
+    *passed_x = bpos[0].x - bpos[1].x;
+}
+
+static void test_bodies_block_head_on(void)
+{
+    static const float speeds[3] = {1.0f, 3.0f, 10.0f};
+    static const float rates[4] = {30.0f, 60.0f, 120.0f, 240.0f};
+    float worst = 0.0f;
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 4; k++) {
+            float passed;
+            head_on(speeds[i], rates[k], 0.0f, &worst, &passed);
+            TEST_ASSERT_TRUE(passed < 0.0f); /* still facing each other: nobody went through */
+        }
+    report("two bodies head-on, 1-10 m/s, 30-240 Hz: deepest overlap", worst, "m");
+    TEST_ASSERT_TRUE(worst <= 0.001f);
+}
+
+static void test_bodies_slide_past(void)
+{
+    float worst = 0.0f, passed;
+    head_on(3.0f, 60.0f, 0.3f, &worst, &passed); /* offset by less than the sum of radii */
+    report("two bodies offset 0.3 m: deepest overlap", worst, "m");
+    TEST_ASSERT_TRUE(worst <= 0.001f);
+    TEST_ASSERT_TRUE(passed > 1.0f); /* slid past each other */
+}
+
+static uint32_t rng_state = 12345u;
+static float frand(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 17;
+    rng_state ^= rng_state << 5;
+    return (float)(rng_state & 0xFFFFFF) / 16777216.0f;
+}
+
+static void test_32_bodies_milling(void)
+{
+    cb_world_reset();
+    cb_level_floor(12.0f);
+    cb_geo_box(cb_vec(-8.5f, 1.5f, 0.0f), cb_vec(0.5f, 2.0f, 9.0f), 0.0f);
+    cb_geo_box(cb_vec(8.5f, 1.5f, 0.0f), cb_vec(0.5f, 2.0f, 9.0f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, 1.5f, -8.5f), cb_vec(9.0f, 2.0f, 0.5f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, 1.5f, 8.5f), cb_vec(9.0f, 2.0f, 0.5f), 0.0f);
+    cb_geo_box(cb_vec(0.0f, 0.25f, 0.0f), cb_vec(1.5f, 0.25f, 1.5f), 0.3f); /* a low block to climb */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    for (int i = 0; i < NB; i++)
+        add_body(i, cb_vec(-6.0f + 1.6f * (float)(i % 8), 0.0f, -6.0f + 1.6f * (float)(i / 8) + (i / 8 >= 2 ? 4.0f : 0.0f)),
+                 0.3f + 0.05f * (float)(i % 3));
+    const float dt = 1.0f / 60.0f;
+    float worst = 0.0f;
+    for (int f = 0; f < 10000; f++) {
+        for (int i = 0; i < NB; i++) {
+            if (f % 40 == i % 40) {
+                float a = frand() * TAU, sp = 1.0f + 5.0f * frand();
+                bodies[i].input_velocity = cb_vec(sp * cosf(a), 0.0f, sp * sinf(a));
+                if (frand() < 0.2f && char_body_is_on_floor(&bodies[i])) char_body_set_velocity(&bodies[i], cb_vec(0.0f, 6.0f, 0.0f));
+            }
+            CB_STEP(&bodies[i], dt);
+        }
+        for (int i = 0; i < NB; i++) {
+            TEST_ASSERT_TRUE(cb_body_finite(&bodies[i]));
+            if (!(fabsf(bpos[i].x) < 8.0f && fabsf(bpos[i].z) < 8.0f && bpos[i].y > -0.01f))
+                printf("body %d left the room at frame %d: %.3f %.3f %.3f\n", i, f, (double)bpos[i].x, (double)bpos[i].y,
+                       (double)bpos[i].z);
+            TEST_ASSERT_TRUE(fabsf(bpos[i].x) < 8.0f && fabsf(bpos[i].z) < 8.0f && bpos[i].y > -0.01f);
+            for (int j = i + 1; j < NB; j++) {
+                float o = pair_overlap(i, j);
+                if (o > worst) worst = o;
+            }
+        }
+    }
+    report("32 bodies milling 10000 frames: deepest overlap between bodies", worst, "m");
+    TEST_ASSERT_TRUE(worst <= 0.001f);
+}
+
+/* ---- 4. step events and the ground state ---- */
+
+static void test_events_landed_and_left(void)
+{
+    cb_geo_box(cb_vec(-10.0f, -0.5f, 0.0f), cb_vec(10.0f, 0.5f, 10.0f), 0.0f); /* ledge top y 0, edge x 0 */
+    cb_geo_box(cb_vec(0.0f, -3.5f, 0.0f), cb_vec(30.0f, 0.5f, 30.0f), 0.0f);   /* ground y -3 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-2.0f, 1.25f, 0.0f));
+    const float dt = 1.0f / 60.0f;
+    int landed = 0;
+    float speed = 0.0f;
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, dt);
+        if (char_body_events(&body)->flags & CHAR_BODY_EVENT_LANDED) { landed++; speed = char_body_events(&body)->landing_speed; }
+    }
+    TEST_ASSERT_EQUAL_INT(1, landed);
+    report("landing speed after a 1.25 m fall (sqrt(2 g h) = 8.66)", speed, "m/s");
+    TEST_ASSERT_FLOAT_WITHIN(0.6f, 8.66f, speed);
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
+    /* jump: left the floor, jumped */
+    char_body_set_velocity(&body, cb_vec(0.0f, 5.0f, 0.0f));
+    CB_STEP(&body, dt);
+    uint8_t fl = char_body_events(&body)->flags;
+    TEST_ASSERT_TRUE((fl & CHAR_BODY_EVENT_LEFT_FLOOR) && (fl & CHAR_BODY_EVENT_JUMPED));
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_AIRBORNE, char_body_ground_state(&body));
+    for (int i = 0; i < 60; i++) CB_STEP(&body, dt);
+    /* walk off the ledge: left the floor, not a jump */
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    int left = 0, jumped = 0;
+    for (int i = 0; i < 60; i++) {
+        CB_STEP(&body, dt);
+        fl = char_body_events(&body)->flags;
+        if (fl & CHAR_BODY_EVENT_LEFT_FLOOR) left++;
+        if (fl & CHAR_BODY_EVENT_JUMPED) jumped++;
+    }
+    TEST_ASSERT_EQUAL_INT(1, left);
+    TEST_ASSERT_EQUAL_INT(0, jumped);
+}
+
+static void test_events_stepped(void)
+{
+    /* two risers of 0.2 m up on long treads, then back down */
+    const float xs[6] = {-20.0f, 0.0f, 0.0f, 1.0f, 1.0f, 20.0f};
+    const float ys[6] = {0.0f, 0.0f, 0.2f, 0.2f, 0.4f, 0.4f};
+    cb_geo_profile(xs, ys, 6, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-2.0f, 0.0f, 0.0f));
+    const float dt = 1.0f / 60.0f;
+    CB_STEP(&body, dt);
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    float up_sum = 0.0f, down_sum = 0.0f;
+    int ups = 0, downs = 0;
+    for (int i = 0; i < 90; i++) {
+        CB_STEP(&body, dt);
+        const char_body_events_t *e = char_body_events(&body);
+        if (e->flags & CHAR_BODY_EVENT_STEPPED) { up_sum += e->step; ups++; }
+    }
+    body.input_velocity = cb_vec(-3.0f, 0.0f, 0.0f);
+    for (int i = 0; i < 90; i++) {
+        CB_STEP(&body, dt);
+        const char_body_events_t *e = char_body_events(&body);
+        if (e->flags & CHAR_BODY_EVENT_STEPPED) { down_sum += e->step; downs++; }
+    }
+    report("stepped up: sum of step events (0.4 m of risers)", up_sum, "m");
+    report("stepped down: sum of step events", down_sum, "m");
+    TEST_ASSERT_EQUAL_INT(2, ups);
+    TEST_ASSERT_EQUAL_INT(2, downs);
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.4f, up_sum);
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, -0.4f, down_sum);
+}
+
+static void test_events_no_steps_on_a_ramp(void)
+{
+    const float xs[4] = {-20.0f, 0.0f, 4.0f, 24.0f};
+    const float ys[4] = {0.0f, 0.0f, 2.0f, 2.0f};
+    cb_geo_profile(xs, ys, 4, -5.0f, 5.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-2.0f, 0.0f, 0.0f));
+    body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+    int steps = 0;
+    for (int i = 0; i < 120; i++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (char_body_events(&body)->flags & CHAR_BODY_EVENT_STEPPED) steps++;
+    }
+    TEST_ASSERT_EQUAL_INT(0, steps);
+    TEST_ASSERT_TRUE(pos.x > 5.0f);
+}
+
+static void test_events_ceiling_and_wall(void)
+{
+    cb_level_floor(20.0f);
+    cb_geo_box(cb_vec(0.0f, 3.0f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f); /* underside at 2.5 */
+    cb_geo_box(cb_vec(3.5f, 1.0f, 0.0f), cb_vec(0.5f, 1.0f, 5.0f), 0.0f);  /* wall face at x = 3 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+    const float dt = 1.0f / 60.0f;
+    CB_STEP(&body, dt);
+    char_body_set_velocity(&body, cb_vec(0.0f, 10.0f, 0.0f));
+    int ceiling = 0;
+    for (int i = 0; i < 30; i++) {
+        CB_STEP(&body, dt);
+        if (char_body_events(&body)->flags & CHAR_BODY_EVENT_HIT_CEILING) ceiling++;
+    }
+    TEST_ASSERT_TRUE(ceiling >= 1);
+    body.input_velocity = cb_vec(3.0f, 0.0f, 1.0f);
+    int wall = 0;
+    fm_vec3_t n = cb_vec(0.0f, 0.0f, 0.0f);
+    for (int i = 0; i < 90; i++) {
+        CB_STEP(&body, dt);
+        if (char_body_events(&body)->flags & CHAR_BODY_EVENT_HIT_WALL) { wall++; n = char_body_events(&body)->wall_normal; }
+    }
+    TEST_ASSERT_TRUE(wall >= 1);
+    TEST_ASSERT_FLOAT_WITHIN(0.01f, -1.0f, n.x);
+    TEST_ASSERT_FLOAT_WITHIN(0.01f, 0.0f, n.y);
+    /* standing still on the floor: no events */
+    body.input_velocity = cb_vec(0.0f, 0.0f, 0.0f);
+    CB_STEP(&body, dt);
+    CB_STEP(&body, dt);
+    TEST_ASSERT_EQUAL_INT(0, char_body_events(&body)->flags);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_jump_off_translating_platform);
+    RUN_TEST(test_jump_off_turning_platform);
+    RUN_TEST(test_jump_off_lift);
+    RUN_TEST(test_leave_velocity_settings);
+    RUN_TEST(test_ground_velocity_zero_on_static_floor_and_in_air);
+    RUN_TEST(test_bodies_block_head_on);
+    RUN_TEST(test_bodies_slide_past);
+    RUN_TEST(test_32_bodies_milling);
+    RUN_TEST(test_events_landed_and_left);
+    RUN_TEST(test_events_stepped);
+    RUN_TEST(test_events_no_steps_on_a_ramp);
+    RUN_TEST(test_events_ceiling_and_wall);
+    return UNITY_END();
+}
