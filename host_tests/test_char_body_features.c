@@ -404,6 +404,89 @@ static void test_events_ceiling_and_wall(void)
     TEST_ASSERT_EQUAL_INT(0, char_body_events(&body)->flags);
 }
 
+/* ---- 3. one-way platforms ---- */
+
+/* Floor at y = 0, a one-way slab with its top at y = 2 over x in [-3, 3]. */
+static coll_mesh_instance_t *one_way_level(void)
+{
+    cb_level_floor(20.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_geo_box(cb_vec(0.0f, 1.9f, 0.0f), cb_vec(3.0f, 0.1f, 3.0f), 0.0f);
+    coll_mesh_instance_t *in = cb_world_add_geo(2);
+    TEST_ASSERT_NOT_NULL(in);
+    in->flags = COLL_INSTANCE_ONE_WAY;
+    return in;
+}
+
+static void jump_through(float hz, float x)
+{
+    cb_world_reset();
+    one_way_level();
+    const float dt = 1.0f / hz;
+    cb_body_init(&body, &pos, cb_vec(x, 0.0f, 0.0f));
+    CB_STEP(&body, dt);
+    char_body_set_velocity(&body, cb_vec(0.0f, 12.0f, 0.0f)); /* apex 2.4 m */
+    float max_y = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        if (pos.y > max_y) max_y = pos.y;
+    }
+    /* rose freely through it (the discrete jump's apex is 2.2-2.4 m at 30-240 Hz), stands on it */
+    TEST_ASSERT_TRUE(max_y > 2.15f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 2.0f, pos.y);
+    TEST_ASSERT_EQUAL_INT(2, char_body_floor_id(&body));
+}
+
+static void test_one_way_jump_up_through(void)
+{
+    static const float rates[4] = {30.0f, 60.0f, 120.0f, 240.0f};
+    for (int i = 0; i < 4; i++) {
+        jump_through(rates[i], 0.0f);
+        jump_through(rates[i], 2.8f);  /* under its edge: no snag on the way up */
+    }
+}
+
+static void test_one_way_land_walk_and_drop(void)
+{
+    one_way_level();
+    const float dt = 1.0f / 60.0f;
+    cb_body_init(&body, &pos, cb_vec(0.0f, 4.0f, 0.0f));
+    for (int i = 0; i < 90; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 2.0f, pos.y);
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    for (int i = 0; i < 30; i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, 2.0f, pos.y);
+    }
+    TEST_ASSERT_TRUE(pos.x > 1.4f);
+    body.input_velocity = cb_vec(0.0f, 0.0f, 0.0f);
+    char_body_drop_through(&body);
+    for (int i = 0; i < 90; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+    TEST_ASSERT_EQUAL_INT(1, char_body_floor_id(&body));
+    /* and it is solid again from above: jump back up onto it */
+    char_body_set_velocity(&body, cb_vec(0.0f, 12.0f, 0.0f));
+    for (int i = 0; i < 120; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 2.0f, pos.y);
+}
+
+/* A jump that does not clear the top falls back down through it. */
+static void test_one_way_short_jump_falls_back(void)
+{
+    one_way_level();
+    const float dt = 1.0f / 60.0f;
+    cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+    CB_STEP(&body, dt);
+    char_body_set_velocity(&body, cb_vec(0.0f, 9.0f, 0.0f)); /* apex 1.35 m: the top is at 2 */
+    for (int i = 0; i < 120; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -415,6 +498,9 @@ int main(void)
     RUN_TEST(test_bodies_block_head_on);
     RUN_TEST(test_bodies_slide_past);
     RUN_TEST(test_32_bodies_milling);
+    RUN_TEST(test_one_way_jump_up_through);
+    RUN_TEST(test_one_way_land_walk_and_drop);
+    RUN_TEST(test_one_way_short_jump_falls_back);
     RUN_TEST(test_events_landed_and_left);
     RUN_TEST(test_events_stepped);
     RUN_TEST(test_events_no_steps_on_a_ramp);

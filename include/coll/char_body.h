@@ -115,6 +115,7 @@ typedef struct char_body_s {
     fm_vec3_t air_velocity;        ///< floor velocity across up kept since leaving it (private)
     coll_body_t *collider;         ///< the body's own collider, kept in sync, or NULL
     char_body_events_t events;     ///< what happened in the last step
+    float drop_time;               ///< s left falling through one-way platforms (private)
 } char_body_t;
 
 /** Default settings, owner_pos attached (may be NULL: the body then keeps its own origin). */
@@ -160,6 +161,10 @@ const char_body_events_t *char_body_events(const char_body_t *body);
  * detaches it. Bodies never push each other: each stops at or slides along the others.
  */
 void char_body_set_collider(char_body_t *body, coll_body_t *collider);
+
+/** Drops through one-way platforms (COLL_INSTANCE_ONE_WAY): for as long as falling the
+ *  body's height plus floor_snap_distance takes, they do not collide with it. */
+void char_body_drop_through(char_body_t *body);
 
 /** Moves the owner to owner_pos. reset_forces: zero velocity and clear the grounded state. */
 void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_forces);

@@ -26,7 +26,18 @@ typedef struct coll_mesh_instance_s {
     coll_transform_t xf;      ///< world placement (translation, rotation, non-uniform scale)
     uint8_t write_mask;       ///< layers this collider is on; seen when write_mask & read_mask
     uint16_t id;              ///< game's id, reported in hits
+    uint8_t flags;            ///< COLL_INSTANCE_* (0: an ordinary, solid mesh)
 } coll_mesh_instance_t;
+
+/**
+ * coll_mesh_instance_t.flags. COLL_INSTANCE_ONE_WAY: a one-way platform. Only its faces that
+ * look up along the instance's own up (local +Y, rotated) collide, and only with a query that
+ * starts on their front side: a capsule whose axis ends are both above the face's plane
+ * (within 5 % of the radius of touching it), a ray whose origin is above it and that points
+ * down into it. A body jumps up through it from below or from the side, lands and stands on
+ * it, and may drop through on request (char_body_drop_through).
+ */
+enum { COLL_INSTANCE_ONE_WAY = 1u << 0 };
 
 /** Convex collider body shapes. */
 typedef enum {

@@ -192,6 +192,27 @@ void char_body_set_collider(char_body_t *body, coll_body_t *collider)
     sync_collider(body);
 }
 
+void char_body_drop_through(char_body_t *body)
+{
+    if (!body) return;
+    const char_body_settings_t *s = &body->settings;
+    float g = s->gravity > 1e-3f ? s->gravity : 1e-3f;
+    body->drop_time = sqrtf(2.0f * (s->height + s->floor_snap_distance) / g) + 0.05f;
+    if (body->drop_time > 2.0f) body->drop_time = 2.0f;
+}
+
+/** Takes the one-way platforms off every layer for this step (on == true) or puts them back
+ *  (masks saved in saved[], in scene order). */
+static void hide_one_way(const coll_scene_t *scene, bool on, uint8_t *saved)
+{
+    for (uint16_t i = 0; i < scene->mesh_count && i < COLL_SCENE_MAX_MESHES; i++) {
+        coll_mesh_instance_t *in = scene->meshes[i];
+        if (!in || !(in->flags & COLL_INSTANCE_ONE_WAY)) continue;
+        if (on) { saved[i] = in->write_mask; in->write_mask = 0; }
+        else in->write_mask = saved[i];
+    }
+}
+
 static void clear_floor(char_body_t *body)
 {
     body->flags &= (uint8_t)~(CB_FLAG_GROUNDED | CB_FLAG_STEEP | CB_FLAG_CARRY);
@@ -301,6 +322,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     /* Never collide with the own collider: off every layer while this body steps. */
     uint8_t own_mask = body->collider ? body->collider->write_mask : 0;
     if (body->collider) body->collider->write_mask = 0;
+    uint8_t one_way_masks[COLL_SCENE_MAX_MESHES];
+    const bool dropping = body->drop_time > 0.0f;
+    if (dropping) {
+        hide_one_way(scene, true, one_way_masks);
+        body->drop_time -= dt;
+    }
 
     fm_vec3_t pos = owner_position(body);
     body->velocity = clamp_speed(body->velocity);
@@ -419,4 +446,5 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         body->collider->write_mask = own_mask;
         sync_collider(body);
     }
+    if (dropping) hide_one_way(scene, false, one_way_masks);
 }

@@ -222,7 +222,11 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
             float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
             float nu = cb_dot(hit.normal, up);
             if (nu >= b->cos_floor_max_angle) {
-                if (gap <= reach) s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
+                /* A one-way platform is a floor within a step of the foot, not one the
+                 * body fell back into after jumping up through it short of its top. */
+                bool one_way_deep = hit.instance && (hit.instance->flags & COLL_INSTANCE_ONE_WAY) && gap < -c->step;
+                if (gap <= reach && !one_way_deep)
+                    s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
             } else if (nu > 0.0f) {
                 /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
                  * which puts the plane r / cos - (r + step) below the foot along up. Only

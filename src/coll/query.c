@@ -121,6 +121,54 @@ static void tri_abs(const fm_vec3_t *w0, const fm_vec3_t shape[3], fm_vec3_t out
     for (int k = 0; k < 3; k++) fm_vec3_add(&out[k], w0, &shape[k]);
 }
 
+/* ---------------------------------------------------------------- one-way ------- */
+
+/* A one-way instance's up (local +Y in world orientation); zero for an ordinary instance,
+ * which every test below then lets through. */
+static fm_vec3_t one_way_up(const coll_mesh_instance_t *inst)
+{
+    fm_vec3_t u = {{0.0f, 0.0f, 0.0f}};
+    if (!(inst->flags & COLL_INSTANCE_ONE_WAY)) return u;
+    fm_vec3_t y = {{0.0f, 1.0f, 0.0f}};
+    fm_quat_t q = inst->xf.rot;
+    fm_quat_norm(&q, &q);
+    fm_quat_rotate_vec3(&u, &q, &y);
+    return u;
+}
+
+/* Unit normal of a query-relative triangle shape (first vertex at the origin) facing along
+ * the one-way up u, or false when the face does not look up along u (a side or underside of
+ * a one-way platform: it never collides). */
+static bool one_way_normal(const fm_vec3_t *u, const fm_vec3_t shape[3], fm_vec3_t *n)
+{
+    fm_vec3_cross(n, &shape[1], &shape[2]);
+    float l = fm_vec3_len(n);
+    if (!(l > 0.0f)) return false;
+    fm_vec3_scale(n, n, (fm_vec3_dot(n, u) < 0.0f ? -1.0f : 1.0f) / l);
+    return fm_vec3_dot(n, u) > 0.1f;
+}
+
+/* One-way test for a capsule (axis ends seg, relative to the triangle's first vertex):
+ * true when the triangle collides with it, i.e. the instance is ordinary, or the face looks
+ * up and both axis ends lie in front of its plane, no more than 5 % of r short of touching. */
+static bool one_way_capsule(const fm_vec3_t *u, const fm_vec3_t shape[3], const fm_vec3_t seg[2], float r)
+{
+    if (u->x == 0.0f && u->y == 0.0f && u->z == 0.0f) return true;
+    fm_vec3_t n;
+    if (!one_way_normal(u, shape, &n)) return false;
+    float d = min_f(fm_vec3_dot(&seg[0], &n), fm_vec3_dot(&seg[1], &n));
+    return d >= 0.95f * r;
+}
+
+/* One-way test for a ray (origin o relative to the triangle's first vertex). */
+static bool one_way_ray(const fm_vec3_t *u, const fm_vec3_t shape[3], const fm_vec3_t *o, const fm_vec3_t *dir)
+{
+    if (u->x == 0.0f && u->y == 0.0f && u->z == 0.0f) return true;
+    fm_vec3_t n;
+    if (!one_way_normal(u, shape, &n)) return false;
+    return fm_vec3_dot(o, &n) > 0.0f && fm_vec3_dot(dir, &n) < 0.0f;
+}
+
 /* Registration margin of the grid (same formula as the builder) plus rounding slack. */
 static float mesh_margin(const coll_mesh_t *m)
 {
@@ -353,6 +401,8 @@ static void ray_test_tri(const coll_mesh_instance_t *inst, const coll_mesh_view_
     if (tri_box_reject(v, llo, lhi)) return; /* cheap local reject first */
     tri_rel_of(v, x, o_l, &w0, tri);
     fm_vec3_negate(&o, &w0);
+    fm_vec3_t u = one_way_up(inst);
+    if (!one_way_ray(&u, tri, &o, dir)) return;
     if (coll_ray_triangle(&o, dir, tri, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
         fm_vec3_add(&ph.point, &ph.point, &w0);
         rb->have = true;
@@ -611,6 +661,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
+    const fm_vec3_t up1 = one_way_up(inst);
     fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, center);
     fm_vec3_t lo, hi, llo, lhi;
     swept_box(q, sb->best_t, &lo, &hi);
@@ -640,6 +691,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
                     if (tri_box_reject(tri, &lo, &hi)) continue;
                     fm_vec3_sub(&seg[0], &q->seg[0], &w0);
                     fm_vec3_sub(&seg[1], &q->seg[1], &w0);
+                    if (!one_way_capsule(&up1, shape, seg, q->r)) continue;
                     coll_prim_hit_t ph;
                     if (coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best_t, &ph) &&
                         sweep_better(&ph, sb)) {
@@ -793,6 +845,7 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
+    const fm_vec3_t up1 = one_way_up(inst);
     fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &c->center);
     fm_vec3_t lo, hi, llo, lhi;
     swept_box(q, 0.0f, &lo, &hi);
@@ -828,6 +881,7 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
                     fm_vec3_sub(&seg[0], &q->seg[0], &w0);
                     fm_vec3_sub(&seg[1], &q->seg[1], &w0);
                     if (plane_rejects(q->r, seg, shape)) continue;
+                    if (!one_way_capsule(&up1, shape, seg, q->r)) continue;
                     coll_prim_hit_t ph;
                     if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
                         fm_vec3_add(&ph.point, &ph.point, &w0);
