@@ -127,7 +127,7 @@ static void test_course_climbs_all_three_staircases(void)
     for (int i = 0; i < 3; i++) {
         const replay_mark_t *m = mark(c, st[i].name);
         TEST_ASSERT_FLOAT_WITHIN_MESSAGE(0.06f, st[i].top + 1.0f, m->pos.y, st[i].name);
-        TEST_ASSERT_EQUAL_INT_MESSAGE(0, m->state, st[i].name);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(CHAR_BODY_ON_FLOOR, m->state, st[i].name);
     }
 }
 
@@ -165,7 +165,7 @@ static void test_course_jumps_coyote_and_variable_height(void)
     TEST_ASSERT_TRUE(c->g.stats.jumps >= 5);
     const replay_mark_t *m = mark(c, "after_ledge");  /* down on the floor beyond the ledge */
     TEST_ASSERT_TRUE(m->pos.x < -22.0f);
-    TEST_ASSERT_EQUAL_INT(0, m->state);
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, m->state);
     TEST_ASSERT_FLOAT_WITHIN(0.05f, 1.0f, m->pos.y);
 }
 
@@ -182,6 +182,19 @@ static void test_course_rides_every_platform(void)
         TEST_ASSERT_TRUE_MESSAGE(c->g.stats.ride_time[i] > 3.0f, msg);
     }
     /* The lift took the player up to its top (3.2 m above the floor, top face 0 local). */
+    /* Issue-15 features in the example: a jump off the translating platform lands on it,
+     * the one-way platform is jumped up through and dropped through, the player bumps into
+     * a non-player body, the camera smooths the stair steps. */
+    TEST_ASSERT_TRUE(c->g.stats.platform_jump_landings >= 1);
+    TEST_ASSERT_EQUAL_INT(GAME_PLATFORM_ID0 + GAME_PLAT_TRANSLATE, mark(c, "translate_jump_landed")->floor_id);
+    const replay_mark_t *ow = mark(c, "one_way_top");
+    TEST_ASSERT_EQUAL_INT(GAME_ONE_WAY_ID, ow->floor_id);
+    TEST_ASSERT_FLOAT_WITHIN(0.01f, 2.7f, ow->pos.y);
+    TEST_ASSERT_EQUAL_INT(GAME_LEVEL_ID, mark(c, "one_way_dropped")->floor_id);
+    TEST_ASSERT_EQUAL_UINT32(1, c->g.stats.drops);
+    TEST_ASSERT_TRUE(c->g.stats.one_way_landings >= 1);
+    TEST_ASSERT_TRUE(c->g.stats.npc_bumps >= 1);
+    TEST_ASSERT_TRUE(c->g.stats.camera_steps >= 8);
     const replay_mark_t *m = mark(c, "lift_top");
     TEST_ASSERT_EQUAL_INT(GAME_PLATFORM_ID0 + GAME_PLAT_LIFT, m->floor_id);
     TEST_ASSERT_TRUE(m->pos.y > 4.0f);
@@ -209,7 +222,7 @@ static void test_planet_lap_under_planet_gravity(void)
     /* Back near the north pole, with normal gravity again. */
     const replay_mark_t *e = mark(p, "end");
     TEST_ASSERT_TRUE(e->pos.y > 20.5f);
-    TEST_ASSERT_EQUAL_INT(0, e->state);
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, e->state);
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 1.0f, p->g.up.y);
     TEST_ASSERT_EQUAL_UINT(0, (unsigned)p->allocs);
 }
@@ -238,7 +251,7 @@ static void course_game(game_t *g, fm_vec3_t start)
     game_init(g, &level);
     game_input_t idle = {0};
     for (int i = 0; i < 30; i++) game_step(g, &idle, GAME_DT); /* settle on the floor */
-    TEST_ASSERT_EQUAL_INT(0, game_body_state(g));
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, game_body_state(g));
 }
 
 /* Peak height of a standing jump with the button held for `hold` frames. */
@@ -251,7 +264,7 @@ static float jump_peak(int hold)
         game_step(&scratch, &in, GAME_DT);
         if (scratch.pos.y > peak) peak = scratch.pos.y;
     }
-    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch)); /* landed again */
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, game_body_state(&scratch)); /* landed again */
     return peak - y0;
 }
 
@@ -275,7 +288,7 @@ static void ledge_jump(float delay)
         fm_vec3_t fwd, right;
         game_move_basis(&scratch, &fwd, &right);
         game_input_t in = { .stick_y = -fwd.x, .stick_x = -right.x }; /* run towards -x */
-        if (air < 0.0f && game_body_state(&scratch) == 2) air = scratch.time;
+        if (air < 0.0f && game_body_state(&scratch) == CHAR_BODY_AIRBORNE) air = scratch.time;
         in.jump = air >= 0.0f && scratch.time - air >= delay && scratch.time - air < delay + 0.05f;
         game_step(&scratch, &in, GAME_DT);
     }
@@ -307,7 +320,7 @@ static void test_falling_out_respawns_at_the_spawn(void)
     TEST_ASSERT_FLOAT_WITHIN(0.1f, -28.0f, scratch.pos.x);
     TEST_ASSERT_FLOAT_WITHIN(0.1f, -30.0f, scratch.pos.z);
     for (int i = 0; i < 60; i++) game_step(&scratch, &idle, GAME_DT);
-    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch));
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, game_body_state(&scratch));
     TEST_ASSERT_EQUAL_UINT32(1, scratch.stats.respawns);
 }
 
@@ -334,7 +347,7 @@ static void test_gravity_toggle_turns_up_over_several_frames(void)
     TEST_ASSERT_TRUE(frames >= 10 && frames <= 30); /* 0.35 s at 60 Hz = 21 frames */
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, game_v3_dot(scratch.cam_fwd, scratch.up));
     for (int i = 0; i < 60; i++) game_step(&scratch, &in, GAME_DT);
-    TEST_ASSERT_EQUAL_INT(0, game_body_state(&scratch)); /* standing on the side of the planet */
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, game_body_state(&scratch)); /* standing on the side of the planet */
 }
 
 /* ---- script parsing ---- */

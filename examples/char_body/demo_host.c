@@ -83,7 +83,8 @@ bool demo_replay_load(replay_t *r, const char *path)
 
 void demo_status_line(char *buf, int size, const game_t *g, const replay_t *r)
 {
-    static const char *const state[3] = {"floor", "steep", "air  "};
+    static const char *const state[3] = {[CHAR_BODY_AIRBORNE] = "air  ", [CHAR_BODY_ON_FLOOR] = "floor",
+                                         [CHAR_BODY_ON_STEEP] = "steep"};
     const char *cmd = r && !replay_done(r) ? replay_op_name(r->cmds[r->pc].op) : "-";
     int line = r && !replay_done(r) ? r->cmds[r->pc].line : 0;
     snprintf(buf, (size_t)size, "t=%6.2f pos=(%7.2f %6.2f %7.2f) %s floor_id=%3d %s gravity=%s cmd=%s:%d",

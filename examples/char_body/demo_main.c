@@ -139,16 +139,17 @@ static void draw_view(img_t *im, const view_t *v, const game_t *g, const record_
     free(tris);
 
     /* Trajectory of the feet, coloured by state. */
-    static const uint32_t col[3] = {CHAR_BODY_COLOR_FLOOR, CHAR_BODY_COLOR_STEEP, CHAR_BODY_COLOR_AIRBORNE};
+    static const uint32_t col[3] = {[CHAR_BODY_AIRBORNE] = CHAR_BODY_COLOR_AIRBORNE,
+                                    [CHAR_BODY_ON_FLOOR] = CHAR_BODY_COLOR_FLOOR, [CHAR_BODY_ON_STEEP] = CHAR_BODY_COLOR_STEEP};
     for (int pass = 0; pass < 2; pass++) /* airborne (jumps, falls) on top, a little wider */
         for (int i = 1; i < rec->nsamples; i++) {
             int st = rec->samples[i].state;
-            if ((st == 2) != (pass == 1)) continue;
+            if ((st == CHAR_BODY_AIRBORNE) != (pass == 1)) continue;
             float x0, y0, x1, y1;
             project(v, rec->samples[i - 1].foot, &x0, &y0);
             project(v, rec->samples[i].foot, &x1, &y1);
             if (fabsf(x1 - x0) + fabsf(y1 - y0) > 200.0f) continue; /* respawn jump */
-            img_line(im, x0, y0, x1, y1, col[st], st == 2 ? 2.6f : 2.0f);
+            img_line(im, x0, y0, x1, y1, col[st], st == CHAR_BODY_AIRBORNE ? 2.6f : 2.0f);
         }
     /* Capsule snapshots (char_body_debug_draw lines). */
     for (int i = 0; i < rec->nlines; i++) {
@@ -290,6 +291,10 @@ static int run(const game_level_t *level, const char *replay_path, const char *o
     for (int i = 0; i < g.level.platform_count; i++)
         printf("demo: %s: platform %d ridden %.1f s, carried %.2f m\n", name, i, (double)g.stats.ride_time[i],
                (double)g.stats.ride_distance[i]);
+    printf("demo: %s: jumps off a moving platform landed on it %u, one-way platform landings %u, drops %u, "
+           "bumps into non-player bodies %u frames, stair steps smoothed by the camera %u\n",
+           name, (unsigned)g.stats.platform_jump_landings, (unsigned)g.stats.one_way_landings, (unsigned)g.stats.drops,
+           (unsigned)g.stats.npc_bumps, (unsigned)g.stats.camera_steps);
     if (!replay_done(&r)) { printf("demo: %s: replay did not finish\n", name); problems++; }
     if (r.timeouts) { printf("demo: %s: %u command(s) timed out (first at line %u)\n", name, (unsigned)r.timeouts, (unsigned)r.timeout_line); problems++; }
     if (g.stats.respawns) { printf("demo: %s: fell out of the level\n", name); problems++; }

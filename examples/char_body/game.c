@@ -101,11 +101,36 @@ void game_init(game_t *g, const game_level_t *level)
     for (uint8_t i = 0; i < g->level.platform_count; i++)
         if (g->level.platforms[i].inst.mesh) coll_scene_add_mesh(&g->scene, &g->level.platforms[i].inst);
 
+    if (level->one_way_mesh) {
+        g->one_way_inst = (coll_mesh_instance_t){ .mesh = level->one_way_mesh, .xf = COLL_TRANSFORM_IDENTITY,
+                                                  .write_mask = 0x01, .id = GAME_ONE_WAY_ID,
+                                                  .flags = COLL_INSTANCE_ONE_WAY };
+        g->one_way_inst.xf.pos = level->one_way_pos;
+        coll_scene_add_mesh(&g->scene, &g->one_way_inst);
+    }
+
+    /* The player and the non-player bodies see meshes and each other's colliders. */
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.coll_types = COLL_TYPE_MESH | COLL_TYPE_BODY;
     g->pos = level->spawn;
     char_body_init(&g->body, &g->pos);
-    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
     char_body_configure(&g->body, &s);
     char_body_teleport(&g->body, level->spawn, true);
+    g->collider = (coll_body_t){ .write_mask = 0x01, .id = GAME_PLAYER_COLLIDER_ID };
+    char_body_set_collider(&g->body, &g->collider);
+    coll_scene_add_body(&g->scene, &g->collider);
+    for (uint8_t i = 0; i < level->npc_count && i < GAME_MAX_NPCS; i++) {
+        game_npc_state_t *n = &g->npcs[i];
+        n->pos = game_v3_add(level->npcs[i].a, game_v3(0.0f, 0.5f * s.height, 0.0f));
+        char_body_init(&n->body, &n->pos);
+        char_body_configure(&n->body, &s);
+        char_body_teleport(&n->body, n->pos, true);
+        n->collider = (coll_body_t){ .write_mask = 0x01, .id = (uint16_t)(GAME_NPC_ID0 + i) };
+        char_body_set_collider(&n->body, &n->collider);
+        coll_scene_add_body(&g->scene, &n->collider);
+        n->to_b = true;
+    }
+    g->jump_floor_id = -1;
 
     g->up = game_v3(0, 1, 0);
     g->cam_fwd = game_v3(sinf(level->spawn_yaw), 0.0f, -cosf(level->spawn_yaw));
@@ -169,10 +194,28 @@ static fm_vec3_t carry_point(const coll_transform_t *a, const coll_transform_t *
 
 /* ---- the step ---- */
 
-int game_body_state(const game_t *g)
+char_body_ground_state_t game_body_state(const game_t *g)
 {
-    if (!char_body_is_on_floor(&g->body)) return 2;
-    return char_body_is_on_steep_surface(&g->body) ? 1 : 0;
+    return char_body_ground_state(&g->body);
+}
+
+/* The non-player bodies walk their patrols (flat, normal gravity levels only). */
+static void step_npcs(game_t *g, float dt)
+{
+    for (uint8_t i = 0; i < g->level.npc_count && i < GAME_MAX_NPCS; i++) {
+        game_npc_state_t *n = &g->npcs[i];
+        const game_npc_t *d = &g->level.npcs[i];
+        fm_vec3_t foot = char_body_foot_pos(&n->body);
+        fm_vec3_t to = game_v3_reject(game_v3_sub(n->to_b ? d->b : d->a, foot), game_v3(0, 1, 0));
+        if (game_v3_len(to) < 0.3f) n->to_b = !n->to_b;
+        n->body.input_velocity = game_v3_scale(game_v3_norm(to), d->speed);
+        char_body_move_and_slide_in(&n->body, &g->scene, dt);
+        /* the player touching this body (capsules, same height): a bump */
+        fm_vec3_t dpos = game_v3_reject(game_v3_sub(n->pos, g->pos), g->up);
+        float dy = fabsf(game_v3_dot(game_v3_sub(n->pos, g->pos), g->up));
+        float reach = char_body_get_settings(&n->body)->radius + char_body_get_settings(&g->body)->radius + 0.01f;
+        if (game_v3_len(dpos) < reach && dy < 1.0f) g->stats.npc_bumps++;
+    }
 }
 
 void game_move_basis(const game_t *g, fm_vec3_t *fwd, fm_vec3_t *right)
@@ -296,6 +339,7 @@ void game_step(game_t *g, const game_input_t *in, float dt)
         g->jump_buffer_timer = 0.0f;
         g->coyote_timer = 0.0f;
         g->jumping = true;
+        g->jump_floor_id = char_body_floor_id(&g->body);
     } else if (g->jumping) {
         fm_vec3_t v = char_body_get_velocity(&g->body);
         float vup = game_v3_dot(v, g->up);
@@ -310,7 +354,32 @@ void game_step(game_t *g, const game_input_t *in, float dt)
     g->jump_buffer_timer -= dt;
     if (!grounded) g->coyote_timer -= dt;
 
+    /* Drop through the one-way platform stood on. */
+    if (in->drop && !g->drop_held_prev && char_body_floor_id(&g->body) == GAME_ONE_WAY_ID) {
+        char_body_drop_through(&g->body);
+        g->stats.drops++;
+    }
+    g->drop_held_prev = in->drop;
+
     char_body_move_and_slide_in(&g->body, &g->scene, dt);
+    step_npcs(g, dt);
+
+    /* Step events: the camera absorbs stair steps and eases back (as Quake III's view
+     * height smoothing); landings count the one-way platform and jumps off a moving
+     * platform that came down on it again. */
+    const char_body_events_t *ev = char_body_events(&g->body);
+    if (ev->flags & CHAR_BODY_EVENT_STEPPED) {
+        g->cam_step -= ev->step;
+        g->stats.camera_steps++;
+    }
+    g->cam_step *= expf(-12.0f * dt);
+    if (ev->flags & CHAR_BODY_EVENT_LANDED) {
+        int32_t f = char_body_floor_id(&g->body);
+        if (f == GAME_ONE_WAY_ID) g->stats.one_way_landings++;
+        if (f >= GAME_PLATFORM_ID0 && f < GAME_PLATFORM_ID0 + GAME_MAX_PLATFORMS && f == g->jump_floor_id)
+            g->stats.platform_jump_landings++;
+        g->jump_floor_id = -1;
+    }
 
     /* Ride measurement: how far the player actually moved along with the platform stood on
      * (its motion at the player's position), not counting the player's own walking. */
@@ -340,7 +409,7 @@ void game_step(game_t *g, const game_input_t *in, float dt)
 
 void game_camera(const game_t *g, fm_vec3_t *eye, fm_vec3_t *target, fm_vec3_t *cam_up)
 {
-    fm_vec3_t t = game_v3_add(g->pos, game_v3_scale(g->up, 0.6f));
+    fm_vec3_t t = game_v3_add(g->pos, game_v3_scale(g->up, 0.6f + g->cam_step));
     fm_vec3_t back = game_v3_add(game_v3_scale(g->cam_fwd, -cosf(g->cam_pitch)),
                                  game_v3_scale(g->up, sinf(g->cam_pitch)));
     *eye = game_v3_add(t, game_v3_scale(back, g->cam_dist));

@@ -19,6 +19,7 @@ extern "C" {
 #endif
 
 #define GAME_MAX_PLATFORMS 4
+#define GAME_MAX_NPCS 3
 
 /** One frame of player intent. Sticks in [-1, 1]; buttons are "held" states. */
 typedef struct {
@@ -28,7 +29,15 @@ typedef struct {
     float cam_y;          ///< camera pitch rate: +1 = look down more steeply
     bool jump;            ///< jump button held
     bool toggle_gravity;  ///< gravity toggle button held (acts on the press)
+    bool drop;            ///< drop through the one-way platform stood on (acts on the press)
 } game_input_t;
+
+/** A non-player body walking back and forth between two points (feet positions); the
+ *  player bumps into it (each has its own collider, char_body_set_collider). */
+typedef struct {
+    fm_vec3_t a, b;       ///< patrol ends, feet positions
+    float speed;          ///< m/s; 0 stands still at a
+} game_npc_t;
 
 /** How a moving platform moves. All motions are sinusoidal about the platform's base. */
 typedef enum {
@@ -61,6 +70,10 @@ typedef struct {
     float kill_distance;              ///< planet: respawn farther than this from the centre
     uint8_t platform_count;
     game_platform_t platforms[GAME_MAX_PLATFORMS]; ///< inst.mesh/xf are filled by game_init
+    const coll_mesh_t *one_way_mesh;  ///< a one-way platform (COLL_INSTANCE_ONE_WAY), or NULL
+    fm_vec3_t one_way_pos;            ///< its mesh origin (top centre)
+    uint8_t npc_count;
+    game_npc_t npcs[GAME_MAX_NPCS];
 } game_level_t;
 
 /** Tuning of the controller. GAME_TUNING_DEFAULT gives the values the replays assume. */
@@ -97,7 +110,20 @@ typedef struct {
     float ride_time[GAME_MAX_PLATFORMS];     ///< seconds stood on platform i
     float steep_time;         ///< seconds on steep surfaces
     float min_speed_factor;   ///< lowest steep-surface speed factor seen
+    uint32_t platform_jump_landings; ///< jumps off a moving platform that landed on it again
+    uint32_t npc_bumps;       ///< frames the player touched a non-player body
+    uint32_t camera_steps;    ///< stair steps the camera smoothed (step events)
+    uint32_t one_way_landings; ///< landings on the one-way platform
+    uint32_t drops;           ///< drops through the one-way platform
 } game_stats_t;
+
+/** A non-player body's state. */
+typedef struct {
+    char_body_t body;
+    fm_vec3_t pos;            ///< origin = capsule centre
+    coll_body_t collider;     ///< registered in the game's scene
+    bool to_b;                ///< walking towards b
+} game_npc_state_t;
 
 /** The whole game state; plain data, no pointers to outside except the level meshes. */
 typedef struct {
@@ -125,6 +151,12 @@ typedef struct {
     float time;              ///< seconds simulated
     fm_vec3_t prev_pos;
     int32_t prev_floor_id;
+    coll_body_t collider;    ///< the player's own collider (the non-player bodies bump into it)
+    coll_mesh_instance_t one_way_inst;
+    game_npc_state_t npcs[GAME_MAX_NPCS];
+    float cam_step;          ///< camera height offset absorbing stair steps, decays to 0
+    int32_t jump_floor_id;   ///< floor id when the last jump started (-1: none)
+    bool drop_held_prev;
     game_stats_t stats;
 } game_t;
 
@@ -134,6 +166,9 @@ typedef struct {
 /** Platform ids start here; the level mesh has id GAME_LEVEL_ID. */
 #define GAME_LEVEL_ID 1
 #define GAME_PLATFORM_ID0 10
+#define GAME_ONE_WAY_ID 20
+#define GAME_PLAYER_COLLIDER_ID 30
+#define GAME_NPC_ID0 31
 
 /** Sets up the scene, the body and the platforms. The game keeps pointers into itself:
  *  do not copy a game_t after init. */
@@ -148,8 +183,9 @@ void game_camera(const game_t *g, fm_vec3_t *eye, fm_vec3_t *target, fm_vec3_t *
 /** Camera-relative unit vectors on the player's ground plane. */
 void game_move_basis(const game_t *g, fm_vec3_t *fwd, fm_vec3_t *right);
 
-/** 0 normal ground, 1 steep, 2 airborne (the debug colours: green, orange, white). */
-int game_body_state(const game_t *g);
+/** The player's ground state (the animation state and the debug colours: white airborne,
+ *  green on the floor, orange on a steep surface), straight from char_body_ground_state(). */
+char_body_ground_state_t game_body_state(const game_t *g);
 
 /** Platform order of the course (platform N in the replay scripts). */
 enum { GAME_PLAT_TRANSLATE = 0, GAME_PLAT_ROTATE, GAME_PLAT_SCALE, GAME_PLAT_LIFT };

@@ -28,6 +28,16 @@ void game_level_course(game_level_t *out, const coll_mesh_t *level, const coll_m
         out->platforms[i].base_scale = game_v3(1.0f, 1.0f, 1.0f);
         out->platforms[i].mesh = platforms ? platforms[i] : 0;
     }
+    /* A one-way platform (the translating platform's 4 x 4 m mesh, standing still): top at
+     * 1.7 m over the open floor west of the translating platform; jump up through it. */
+    out->one_way_mesh = platforms ? platforms[GAME_PLAT_TRANSLATE] : 0;
+    out->one_way_pos = game_v3(-18.0f, 1.7f, 6.0f);
+    /* Non-player bodies: one standing on the way from the translating platform to the
+     * turntable, two pacing across the interior. */
+    out->npc_count = 3;
+    out->npcs[0] = (game_npc_t){ .a = {{-5.0f, 0.0f, 8.2f}}, .b = {{-5.0f, 0.0f, 8.2f}}, .speed = 0.0f };
+    out->npcs[1] = (game_npc_t){ .a = {{-20.0f, 0.0f, -8.0f}}, .b = {{-12.0f, 0.0f, -8.0f}}, .speed = 1.5f };
+    out->npcs[2] = (game_npc_t){ .a = {{14.0f, 0.0f, -16.0f}}, .b = {{14.0f, 0.0f, -4.0f}}, .speed = 2.0f };
 }
 
 void game_level_planet(game_level_t *out, const coll_mesh_t *level)

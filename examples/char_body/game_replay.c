@@ -84,6 +84,7 @@ static const op_syntax_t syntax[] = {
     {"mark", REPLAY_MARK, 0, 0, true},
     {"push", REPLAY_PUSH, 3, 4, false},
     {"land_jump", REPLAY_LAND_JUMP, 0, 1, false},
+    {"drop", REPLAY_DROP, 0, 0, false},
 };
 
 bool replay_parse(replay_t *r, const char *text, uint32_t len)
@@ -171,7 +172,7 @@ static bool go_to(replay_t *r, const game_t *g, game_input_t *in, fm_vec3_t p, f
     if (speed <= 0.0f) speed = g->tuning.run_speed;
     speed = game_clampf(0.6f + 4.0f * dist, 0.0f, speed);
     float moving = game_v3_len(game_v3_reject(char_body_get_velocity(&g->body), g->up));
-    if (detour && r->detour_time <= 0.0f && speed > 2.0f && moving < 0.3f && game_body_state(g) == 0) {
+    if (detour && r->detour_time <= 0.0f && speed > 2.0f && moving < 0.3f && game_body_state(g) == CHAR_BODY_ON_FLOOR) {
         r->stuck_time += dt;
         if (r->stuck_time > 0.3f) {
             r->detour_time = 0.6f;
@@ -202,7 +203,7 @@ static fm_vec3_t platform_point(const game_t *g, int n, float dx, float dz)
 static float time_limit(replay_op_t op)
 {
     switch (op) {
-    case REPLAY_WAIT: case REPLAY_PUSH: case REPLAY_JUMP: case REPLAY_MARK: case REPLAY_GRAVITY: return 1e9f;
+    case REPLAY_WAIT: case REPLAY_PUSH: case REPLAY_JUMP: case REPLAY_MARK: case REPLAY_GRAVITY: case REPLAY_DROP: return 1e9f;
     case REPLAY_PLANET_LAP: return 90.0f;
     default: return 30.0f;
     }
@@ -249,7 +250,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             /* phase 0: run until the floor is gone; 1: count DELAY, then jump. */
             fm_vec3_t target = game_v3(c->a[0], g->pos.y, c->a[1]);
             steer(g, in, flat_to(g, target), g->tuning.run_speed);
-            if (r->sub_state == 0 && game_body_state(g) == 2) { r->sub_state = 1; r->sub_time = 0.0f; }
+            if (r->sub_state == 0 && game_body_state(g) == CHAR_BODY_AIRBORNE) { r->sub_state = 1; r->sub_time = 0.0f; }
             if (r->sub_state == 1) {
                 r->sub_time += dt;
                 if (r->sub_time >= c->a[2]) { r->jump_hold = 0.5f; done = true; }
@@ -266,7 +267,7 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
             if (game_v3_len(game_v3_reject(v, g->up)) > 0.5f) steer(g, in, v, game_v3_len(game_v3_reject(v, g->up)));
             coll_ray_hit_t hit;
             fm_vec3_t down = game_v3_scale(g->up, -1.0f);
-            if (game_body_state(g) == 2 && game_v3_dot(v, g->up) < 0.0f &&
+            if (game_body_state(g) == CHAR_BODY_AIRBORNE && game_v3_dot(v, g->up) < 0.0f &&
                 coll_raycast(&g->scene, char_body_foot_pos(&g->body), down, c->a[0], 0x01, COLL_TYPE_MESH, &hit)) {
                 r->jump_hold = 0.5f;
                 done = true;
@@ -343,6 +344,10 @@ void replay_input(replay_t *r, const game_t *g, game_input_t *in, float dt)
         case REPLAY_MARK:
             add_mark(r, g, c->name);
             done = instant = true;
+            break;
+        case REPLAY_DROP:
+            in->drop = true;
+            done = true; /* one frame held */
             break;
         }
         if (r->jump_hold > 0.0f) in->jump = true;

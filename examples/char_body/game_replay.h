@@ -17,6 +17,7 @@
  *   wait_phase N FROM TO         stand still until platform N's cycle phase (0..1) is in [FROM, TO)
  *   gravity planet|normal        press the gravity toggle if the mode differs
  *   planet_lap [SPEED]           walk one great circle round the planet (current heading)
+ *   drop                         press the drop button (through the one-way platform stood on)
  *   mark NAME                    record a named moment (the test and the status lines use it)
  */
 #ifndef CHAR_BODY_EXAMPLE_GAME_REPLAY_H
@@ -35,6 +36,7 @@ extern "C" {
 typedef enum {
     REPLAY_WALK_TO = 0, REPLAY_JUMP, REPLAY_COYOTE_JUMP, REPLAY_WAIT, REPLAY_BOARD, REPLAY_RIDE,
     REPLAY_WAIT_PHASE, REPLAY_GRAVITY, REPLAY_PLANET_LAP, REPLAY_MARK, REPLAY_PUSH, REPLAY_LAND_JUMP,
+    REPLAY_DROP,
 } replay_op_t;
 
 typedef struct {
@@ -49,7 +51,7 @@ typedef struct {
     char name[REPLAY_NAME_LEN];
     float time;
     fm_vec3_t pos;
-    int state;          ///< game_body_state()
+    int state;          ///< game_body_state(): CHAR_BODY_AIRBORNE, _ON_FLOOR, _ON_STEEP
     int32_t floor_id;
 } replay_mark_t;
 

@@ -161,7 +161,8 @@ static void draw_scene(cam_t *c, const game_t *g, bool show_help, const char *mo
     char_body_debug_draw(&g->body, &dd);
 
     /* HUD: 5x7 font drawn as small rectangles. */
-    static const char *const state[3] = {"ON FLOOR", "STEEP", "AIRBORNE"};
+    static const char *const state[3] = {[CHAR_BODY_AIRBORNE] = "AIRBORNE", [CHAR_BODY_ON_FLOOR] = "ON FLOOR",
+                                         [CHAR_BODY_ON_STEEP] = "STEEP"};
     char line[200];
     snprintf(line, sizeof line, "T %.1f  POS %.1f %.1f %.1f  %s  FLOOR ID %d  %s GRAVITY", (double)g->time,
              (double)g->pos.x, (double)g->pos.y, (double)g->pos.z, state[game_body_state(g)],

@@ -132,7 +132,7 @@ int main(void)
         char_body_debug_draw(&game.body, &dd);
         char hud[96];
         snprintf(hud, sizeof hud, "t %.1f  %s  floor %d%s", (double)game.time,
-                 (const char *[]){"floor", "steep", "air"}[game_body_state(&game)],
+                 (const char *[]){"air", "floor", "steep"}[game_body_state(&game)],
                  (int)char_body_floor_id(&game.body), playing ? "  REPLAY" : "");
         graphics_draw_text(v.fb, 12, 12, hud);
         display_show(v.fb);
