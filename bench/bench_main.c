@@ -10,7 +10,7 @@
  *   bench_run sizes                            sizeof of the runtime structs
  *
  * METHOD: exact | ref | ccd-gjk:ITERS:TOL | ccd-mpr:ITERS:TOL | disc:N
- * SCENARIO: walk | stairs | vcorner | platform | crowd32 | course | empty
+ * SCENARIO: walk | stairs | vcorner | platform | crowd32 | crowd32_col | stairs_real | crack | course | empty
  */
 #include <math.h>
 #include <stdio.h>
@@ -144,6 +144,41 @@ static const coll_mesh_t *procedural_turntable(void)
     return m;
 }
 
+/* Real-geometry scenes of the character body (the real-geometry issue): ten steps of tread
+ * 0.28 m / riser 0.18 m rising along +x from x = 0 (the default capsule cannot climb them
+ * with the seed's shortened capsule alone), and two floor slabs with a 0.4 m crack along x
+ * at z = 0 (narrower than the capsule: the body walks along it held by its edges). */
+static const coll_mesh_t *procedural_real(bool crack)
+{
+    static bench_level_t lv[2];
+    bench_level_t *l = &lv[crack ? 1 : 0];
+    bench_geo_init(&l->geo, xaligned(4000 * 12), 4000, xaligned(4000 * 12), 4000);
+    if (crack) {
+        bench_geo_box(&l->geo, V(-20, -1, -20), V(20, 0, -0.2));
+        bench_geo_box(&l->geo, V(-20, -1, 0.2), V(20, 0, 20));
+    } else {
+        /* the staircase as a level mesh has it: one strip of treads and risers, z -5 .. 5 */
+        double xs[24], ys[24];
+        int np = 0;
+        xs[np] = -20; ys[np++] = 0;
+        for (int k = 0; k < 10; k++) {
+            xs[np] = 0.28 * k; ys[np++] = 0.18 * k;
+            xs[np] = 0.28 * k; ys[np++] = 0.18 * (k + 1);
+        }
+        xs[np] = 20; ys[np++] = 1.8;
+        for (int i = 0; i + 1 < np; i++) {
+            uint32_t a = bench_geo_vert(&l->geo, xs[i], ys[i], -5), b = bench_geo_vert(&l->geo, xs[i], ys[i], 5);
+            uint32_t c = bench_geo_vert(&l->geo, xs[i + 1], ys[i + 1], 5), d = bench_geo_vert(&l->geo, xs[i + 1], ys[i + 1], -5);
+            bench_geo_tri(&l->geo, a, b, c);
+            bench_geo_tri(&l->geo, a, c, d);
+        }
+    }
+    size_t n = coll_mesh_build_size(l->geo.nv, l->geo.nt, NULL);
+    const coll_mesh_t *m;
+    if (coll_mesh_build(xaligned(n), n, l->geo.v, l->geo.nv, l->geo.idx, l->geo.nt, NULL, &m) != COLL_OK) exit(2);
+    return m;
+}
+
 static float g_cell = 0.0f;   /* > 0: rebuild the level with this grid cell (cost runs) */
 static float g_cell_eff = 0.0f; /* the level's grid cell as built */
 
@@ -217,7 +252,14 @@ static run_out_t run_scenario(const char *scn, const char *assets, bool measure_
     static fm_vec3_t pos[32];
     run_out_t o = {0, {{0, 0, 0}}, 0};
     bool plat = strcmp(scn, "platform") == 0;
-    world_init(&w, assets, plat);
+    bool real_stairs = strcmp(scn, "stairs_real") == 0, crack = strcmp(scn, "crack") == 0;
+    if (real_stairs || crack) {
+        memset(&w, 0, sizeof(w));
+        coll_scene_init(&w.scene);
+        add_part(&w, procedural_real(crack), V(0, 0, 0), 1);
+    } else {
+        world_init(&w, assets, plat);
+    }
     int frames = 90, nb = 1;
     fm_vec3_t in = V(0, 0, 0);
     if (strcmp(scn, "walk") == 0) { body_make(&bodies[0], &pos[0], V(-28, 0, -26)); in = V(5, 0, 0); frames = 30; }
@@ -228,6 +270,27 @@ static run_out_t run_scenario(const char *scn, const char *assets, bool measure_
         char_body_move_and_slide_in(&bodies[0], &w.scene, DT);   /* stand on it first (not measured) */
     }
     else if (strcmp(scn, "course") == 0) { body_make(&bodies[0], &pos[0], V(-28, 0, -30)); frames = COURSE_FRAMES; }
+    else if (real_stairs) { body_make(&bodies[0], &pos[0], V(-1, 0, 0)); in = V(3, 0, 0); frames = 60; }
+    else if (crack) { body_make(&bodies[0], &pos[0], V(-5, 0, 0)); in = V(3, 0, 0); frames = 60; }
+    else if (strcmp(scn, "crowd32_col") == 0) {
+        /* 32 bodies that block each other: each owns a capsule collider in the scene */
+        static coll_body_t col[32];
+        nb = 32; frames = 2;
+        for (int i = 0; i < nb; i++) {
+            body_make(&bodies[i], &pos[i], V(-20 + 1.2 * (i % 8), 0, -20 + 1.2 * (i / 8)));
+            char_body_settings_t st = *char_body_get_settings(&bodies[i]);
+            st.coll_types = COLL_TYPE_ALL;
+            char_body_configure(&bodies[i], &st);
+            col[i] = (coll_body_t){0};
+            col[i].write_mask = 0x01;
+            col[i].id = (uint16_t)(100 + i);
+            char_body_set_collider(&bodies[i], &col[i]);
+            if (coll_scene_add_body(&w.scene, &col[i]) != COLL_OK) exit(2);
+            double a = i * 2.39996;
+            bodies[i].input_velocity = V(4 * cos(a), 0, 4 * sin(a));
+        }
+        for (int i = 0; i < nb; i++) char_body_move_and_slide_in(&bodies[i], &w.scene, DT);
+    }
     else if (strcmp(scn, "crowd32") == 0) {
         nb = 32; frames = 2;
         for (int i = 0; i < nb; i++) {

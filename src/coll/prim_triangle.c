@@ -210,6 +210,18 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
         q = pv_madd(b, t->n, -hb);
         if (hb * hb < best && tri_contains(t, q)) { best = hb * hb; *ps = b; *pt = q; }
     }
+    if (a.x == b.x && a.y == b.y && a.z == b.z) {
+        /* A point (a sphere's centre): the closest point of each edge by projection, far
+         * cheaper than the segment-segment closest pair it would otherwise reduce to. */
+        for (int i = 0; i < 3; i++) {
+            float ee = pv_len2(t->e[i]);
+            float v = ee > 0.0f ? pv_clamp01(pv_dot(pv_sub(a, t->v[i]), t->e[i]) / ee) : 0.0f;
+            fm_vec3_t cq = pv_madd(t->v[i], t->e[i], v);
+            float d2 = pv_len2(pv_sub(a, cq));
+            if (d2 < best) { best = d2; *ps = a; *pt = cq; *edge = i; *eu = 0.0f; *ev = v; }
+        }
+        return best;
+    }
     for (int i = 0; i < 3; i++) {
         fm_vec3_t cp, cq;
         float u, v;
