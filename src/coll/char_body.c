@@ -264,6 +264,23 @@ static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n)
     return cb_scale(v, speed / l);
 }
 
+/** Gathers the candidates of a step that starts at pos (see cb_ctx_t.gather). */
+static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_vec3_t input, float carry, float dt)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t center = cb_center(c, pos), up = c->up;
+    float speed = cb_len(cb_reject(input, up)) + cb_len(b->velocity) + b->settings.gravity * dt;
+    float move = speed * dt + carry + 4.0f * c->skin;
+    float below = c->snap + 2.0f * c->skin; /* the floor probe's reach */
+    fm_vec3_t lo, hi;
+    for (int a = 0; a < 3; a++) {
+        float ext = fabsf(up.v[a]) * (c->half_height - c->radius) + c->radius + move;
+        lo.v[a] = center.v[a] - ext + (up.v[a] > 0.0f ? -up.v[a] * below : -up.v[a] * c->step);
+        hi.v[a] = center.v[a] + ext + (up.v[a] > 0.0f ? up.v[a] * c->step : -up.v[a] * below);
+    }
+    coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
+}
+
 /**
  * Turns this step's floor state change and the heights collected by the slide and the probe
  * into events. A height change counts as a step (stairs, a kerb: what a camera smooths)
@@ -318,6 +335,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.skin = 0.01f * s->radius < CB_SKIN ? 0.01f * s->radius : CB_SKIN;
     c.dt = dt;
     c.ev = NULL;
+    c.gather = NULL;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */
     uint8_t own_mask = body->collider ? body->collider->write_mask : 0;
@@ -338,9 +356,19 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     const fm_vec3_t was_floor_normal = body->floor_normal;
     fm_vec3_t up = c.up;
 
+    /* The step's candidate triangles, gathered once where it will look: the full capsule
+     * grown by this step's reach of motion (the platform's carry included), a stair step's
+     * lift above and the floor probe below. Queries beyond it (the crack rule's ball, an
+     * unstick) go to the scene. */
+    fm_vec3_t carry = cb_v(0.0f, 0.0f, 0.0f);
+    bool carried = was_grounded && s->follow_floor && cb_carry_delta(&c, &carry);
+    coll_gather_t gather;
+    gather_step(&c, &gather, pos, input, cb_len(carry), dt);
+    c.gather = &gather;
+
     /* 1. carry */
     fm_vec3_t ground_v = cb_v(0.0f, 0.0f, 0.0f);
-    if (was_grounded && s->follow_floor) ground_v = cb_carry(&c, &pos);
+    if (carried) ground_v = cb_carry(&c, &pos, carry);
     else body->flags &= (uint8_t)~CB_FLAG_CARRIED;
 
     /* 2. recover */

@@ -54,19 +54,23 @@ static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur)
     return cb_scale(v, (grow > 0.0f ? grow : 0.0f) / lc);
 }
 
-fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
+bool cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
 {
     char_body_t *b = c->body;
-    fm_vec3_t none = cb_v(0.0f, 0.0f, 0.0f);
-    if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return none;
+    if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return false;
     /* Only an instance still in the scene carries (it may have been removed since). */
     bool present = false;
     for (uint16_t i = 0; i < c->scene->mesh_count && i < COLL_SCENE_MAX_MESHES; i++)
         if (c->scene->meshes[i] == b->floor_instance) present = true;
-    if (!present) return none;
+    if (!present) return false;
     fm_vec3_t now = cb_xf_apply(&b->floor_instance->xf, b->floor_local_point);
-    fm_vec3_t delta = cb_sub(now, b->floor_world_point);
-    if (!cb_finite(delta)) return none;
+    *delta = cb_sub(now, b->floor_world_point);
+    return cb_finite(*delta);
+}
+
+fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
+{
+    char_body_t *b = c->body;
     /* Swept, so a platform cannot carry the body through a wall. */
     cb_slide(c, pos, delta, NULL, false);
     /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
@@ -78,7 +82,7 @@ fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos)
     if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord);
     b->carry_velocity = chord;
     b->flags |= CB_FLAG_CARRIED;
-    return cb_finite(v) ? v : none;
+    return cb_finite(v) ? v : cb_v(0.0f, 0.0f, 0.0f);
 }
 
 /** What holds the body up at the end of a step. */
@@ -117,8 +121,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const fm_vec3_t foot = cb_foot(c, pos);
     fm_vec3_t b0 = cb_madd(foot, up, r + c->step);
     coll_sweep_hit_t h1;
-    if (!coll_capsule_sweep(c->scene, b0, up, r, 0.0f, cb_scale(up, -len), b->settings.read_mask,
-                            b->settings.coll_types, &h1) ||
+    if (!cb_sweep(c, b0, r, 0.0f, cb_scale(up, -len), &h1) ||
         !isfinite(h1.t) || !cb_finite(h1.normal) || !cb_finite(h1.point))
         return false;
     float n1u = cb_dot(h1.normal, up);
@@ -138,8 +141,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
-        if (!coll_capsule_sweep(c->scene, b1, up, r, 0.0f, cb_scale(downhill, 2.0f * r), b->settings.read_mask,
-                                b->settings.coll_types, &h2) ||
+        if (!cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2) ||
             !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
             return false; /* rolls off (a ledge), or into a ceiling */
         float descent = (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up);
@@ -181,8 +183,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         float len = cb_len(left);
         if (!(len > 1e-6f)) return;
         coll_sweep_hit_t hit;
-        if (!coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, left,
-                                b->settings.read_mask, b->settings.coll_types, &hit) ||
+        if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit) ||
             !isfinite(hit.t) || !cb_finite(hit.normal)) {
             *pos = cb_add(*pos, left);
             return;
@@ -215,8 +216,7 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
     if (!jumping) {
         fm_vec3_t origin = cb_madd(cb_foot(c, *pos), up, above);
         coll_ray_hit_t hit;
-        bool found = coll_raycast(c->scene, origin, cb_scale(up, -1.0f), above + c->snap, b->settings.read_mask,
-                                  b->settings.coll_types, &hit) &&
+        bool found = cb_ray(c, origin, cb_scale(up, -1.0f), above + c->snap, &hit) &&
                      cb_finite(hit.normal) && cb_finite(hit.point);
         if (found) {
             float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include "coll/char_body.h"
+#include "coll/gather.h"
 
 /** Private bits of char_body_t.flags. */
 enum {
@@ -70,7 +71,30 @@ typedef struct {
     float skin;          ///< contact gap: CB_SKIN, or 1 % of the radius when smaller
     float dt;            ///< this step's (clamped) duration, s
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
+    const coll_gather_t *gather; ///< the step's candidate triangles, or NULL (scene queries)
 } cb_ctx_t;
+
+/* The body's queries: on the step's gather when there is one (it falls back to the scene
+ * by itself for a query reaching outside the gathered box), else on the scene. The body's
+ * read_mask and coll_types; capsule and ray axes along the body's up. */
+static inline bool cb_ray(const cb_ctx_t *c, fm_vec3_t o, fm_vec3_t dir, float max_dist, coll_ray_hit_t *hit)
+{
+    if (c->gather) return coll_gather_raycast(c->gather, o, dir, max_dist, hit);
+    return coll_raycast(c->scene, o, dir, max_dist, c->body->settings.read_mask, c->body->settings.coll_types, hit);
+}
+static inline bool cb_sweep(const cb_ctx_t *c, fm_vec3_t center, float radius, float ihh, fm_vec3_t disp,
+                            coll_sweep_hit_t *hit)
+{
+    if (c->gather) return coll_gather_capsule_sweep(c->gather, center, c->up, radius, ihh, disp, hit);
+    return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
+                              c->body->settings.coll_types, hit);
+}
+static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_contact_t *out, uint32_t max_out)
+{
+    if (c->gather) return coll_gather_capsule_overlaps(c->gather, center, c->up, c->radius, c->sweep_ihh, out, max_out);
+    return coll_capsule_overlaps(c->scene, center, c->up, c->radius, c->sweep_ihh, c->body->settings.read_mask,
+                                 c->body->settings.coll_types, out, max_out);
+}
 
 /** Full capsule centre of an owner position. */
 static inline fm_vec3_t cb_center(const cb_ctx_t *c, fm_vec3_t pos)
@@ -108,9 +132,12 @@ bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
 void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot. */
 void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
-/** Moves the body with the mesh instance it stood on last step; returns the velocity of the
- *  floor point stood on at the end of that motion (zero when not carried). */
-fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos);
+/** How far the mesh instance stood on last step moved the floor point: false when there is
+ *  nothing to carry (not on an instance, or it left the scene). */
+bool cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta);
+/** Moves the body by the carry delta (swept); returns the velocity of the floor point stood
+ *  on at the end of that motion. */
+fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
 /** Floor probe after the slide: grounding, steep state, snapping, stair lift, cracks, carry
  *  anchor. Returns false when the body needs a lift onto the floor that the capsule has no
  *  room for (it cannot stand where it is). */

@@ -98,15 +98,13 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
 
 float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
-    const char_body_t *b = c->body;
     float len = cb_len(d);
     if (!(len > 1e-6f) || !isfinite(len)) {
         if (isfinite(len)) *pos = cb_add(*pos, d); /* sub-micrometre: below every tolerance */
         return 1.0f;
     }
     coll_sweep_hit_t hit;
-    if (!coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, d,
-                            b->settings.read_mask, b->settings.coll_types, &hit) ||
+    if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit) ||
         !isfinite(hit.t)) {
         *pos = cb_add(*pos, d);
         return 1.0f;
@@ -132,7 +130,6 @@ float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
  */
 static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_hit_t *hit)
 {
-    const char_body_t *b = c->body;
     float nu = cb_dot(hit->normal, c->up);
     if (nu <= 0.05f) return false;
     fm_vec3_t ball = cb_madd(cb_sweep_center(c, *pos), c->up, -c->sweep_ihh);
@@ -141,8 +138,7 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     /* A plane under the contact lies r / nu below the ball centre along the axis. */
     float reach = c->radius / (nu > 0.1f ? nu : 0.1f) + 0.02f;
     coll_ray_hit_t rh;
-    if (coll_raycast(c->scene, ball, cb_scale(c->up, -1.0f), reach, b->settings.read_mask,
-                     b->settings.coll_types, &rh))
+    if (cb_ray(c, ball, cb_scale(c->up, -1.0f), reach, &rh))
         return false;
     fm_vec3_t h = cb_reject(rel, c->up);
     float hl = cb_len(h);
@@ -152,8 +148,7 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     if (need <= 0.0f) return false;
     fm_vec3_t d = cb_scale(dir, need);
     coll_sweep_hit_t h2;
-    if (coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, d,
-                           b->settings.read_mask, b->settings.coll_types, &h2)) {
+    if (cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &h2)) {
         float travel = need * h2.t - c->skin;
         if (travel > 0.0f) *pos = cb_madd(*pos, dir, travel);
     } else {
@@ -168,8 +163,7 @@ static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float belo
 {
     const char_body_t *b = c->body;
     coll_ray_hit_t rh;
-    if (!coll_raycast(c->scene, cb_madd(p, c->up, above), cb_scale(c->up, -1.0f), above + below,
-                      b->settings.read_mask, b->settings.coll_types, &rh) ||
+    if (!cb_ray(c, cb_madd(p, c->up, above), cb_scale(c->up, -1.0f), above + below, &rh) ||
         cb_dot(rh.normal, c->up) < b->cos_floor_max_angle)
         return false;
     *h = cb_dot(cb_sub(rh.point, ref), c->up);
@@ -195,7 +189,6 @@ static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float belo
  */
 static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const coll_sweep_hit_t *hit, float *moved)
 {
-    const char_body_t *b = c->body;
     if (!(cb_dot(hit->normal, c->up) > 0.0f) || !(c->step > 0.0f)) return false;
     fm_vec3_t h = cb_reject(left, c->up);
     float hl = cb_len(h);
@@ -212,8 +205,7 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     /* down by the lift, keeping the contact that stops it */
     fm_vec3_t down = cb_scale(c->up, -lift);
     coll_sweep_hit_t dh;
-    bool hung = coll_capsule_sweep(c->scene, cb_sweep_center(c, p), c->up, c->radius, c->sweep_ihh, down,
-                                   b->settings.read_mask, b->settings.coll_types, &dh) && isfinite(dh.t);
+    bool hung = cb_sweep(c, cb_sweep_center(c, p), c->radius, c->sweep_ihh, down, &dh) && isfinite(dh.t);
     float travel = hung ? lift * (dh.t > 0.0f ? dh.t : 0.0f) - c->skin : lift;
     if (travel > 0.0f) p = cb_madd(p, c->up, -travel);
     fm_vec3_t foot = cb_foot(c, p);
@@ -295,8 +287,7 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
         float len = cb_len(rem);
         if (!(len > 1e-6f)) break;
         coll_sweep_hit_t hit;
-        if (!coll_capsule_sweep(c->scene, cb_sweep_center(c, *pos), c->up, c->radius, c->sweep_ihh, rem,
-                                b->settings.read_mask, b->settings.coll_types, &hit)) {
+        if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, rem, &hit)) {
             *pos = cb_add(*pos, rem);
             break;
         }
@@ -362,9 +353,7 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
 /** Contacts of the sweep capsule at pos (at most CB_MAX_CONTACTS). */
 static uint32_t overlaps_at(const cb_ctx_t *c, fm_vec3_t pos, coll_contact_t *ct)
 {
-    const char_body_t *b = c->body;
-    uint32_t n = coll_capsule_overlaps(c->scene, cb_sweep_center(c, pos), c->up, c->radius, c->sweep_ihh,
-                                       b->settings.read_mask, b->settings.coll_types, ct, CB_MAX_CONTACTS);
+    uint32_t n = cb_overlaps(c, cb_sweep_center(c, pos), ct, CB_MAX_CONTACTS);
     return n > CB_MAX_CONTACTS ? CB_MAX_CONTACTS : n;
 }
 
@@ -580,7 +569,7 @@ void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec
     if (!(len > 1e-5f)) return;
     fm_vec3_t dir = cb_scale(d, 1.0f / len);
     coll_ray_hit_t hit;
-    if (!coll_raycast(c->scene, o, dir, len, b->settings.read_mask, b->settings.coll_types, &hit)) return;
+    if (!cb_ray(c, o, dir, len, &hit)) return;
     fm_vec3_t n = hit.normal;
     if (!cb_finite(n) || cb_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
     /* Slide the foot along the wall it would have entered. */

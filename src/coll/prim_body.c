@@ -651,6 +651,12 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
         fm_vec3_t ax[3];
         if (f.shape == COLL_SHAPE_SPHERE) ax[0] = ax[1] = ax[2] = f.pos;
         else capsule_axis(&f, ax);
+        /* Cheap exact reject first: the segments farther apart at the start than the two
+         * radii plus the whole motion cannot meet (the general sweep below costs ~5k). */
+        fm_vec3_t cp, cq;
+        float u, v, reach = r + f.he.x + sqrtf(pv_dot(*disp, *disp)) * t_max;
+        if (prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq) > reach * reach * 1.0001f + 1e-8f)
+            return false;
         if (!coll_capsule_triangle_sweep(seg, r + f.he.x, disp, ax, t_max, hit)) return false;
         hit->point = pv_madd(hit->point, hit->normal, f.he.x);
         return true;
@@ -682,7 +688,25 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
         fm_vec3_t ax[3];
         if (f.shape == COLL_SHAPE_SPHERE) ax[0] = ax[1] = ax[2] = f.pos;
         else capsule_axis(&f, ax);
-        if (!coll_capsule_triangle_overlap(seg, r + f.he.x, ax, hit)) return false;
+        /* Round shapes against the capsule: the closest points of the two axes are the
+         * whole answer (what the general triangle path would compute, without its setup). */
+        fm_vec3_t cp, cq;
+        float u, v, reach = r + f.he.x;
+        float d2 = prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq);
+        float rin = reach - pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * reach);
+        if (!(d2 < rin * rin)) return false;
+        float d = sqrtf(d2);
+        if (!(d > 1e-6f)) { /* the axes cross: the general path picks a careful push-out */
+            if (!coll_capsule_triangle_overlap(seg, reach, ax, hit)) return false;
+            hit->point = pv_madd(hit->point, hit->normal, f.he.x);
+            return true;
+        }
+        fm_vec3_t n = pv_scale(pv_sub(cp, cq), 1.0f / d);
+        hit->t = 0.0f;
+        hit->depth = reach - d;
+        hit->normal = n;
+        hit->point = pv_madd(cq, n, f.he.x);
+        return true;
         hit->point = pv_madd(hit->point, hit->normal, f.he.x);
         return true;
     }

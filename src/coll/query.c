@@ -12,6 +12,7 @@
  * so everything derived from it is recomputed per query.
  */
 #include "coll/scene.h"
+#include "coll/gather.h"
 #include "coll/mesh_format.h"
 #include "coll/prim.h"
 #include <math.h>
@@ -482,9 +483,16 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     note_overflow(scene, seen);
 }
 
+/* Radius of a sphere round the body's centre that contains it (scale is not part of a body). */
 static float body_bound_radius(const coll_body_t *b)
 {
-    return fabsf(b->half_extents.x) + fabsf(b->half_extents.y) + fabsf(b->half_extents.z);
+    float x = fabsf(b->half_extents.x), y = fabsf(b->half_extents.y), z = fabsf(b->half_extents.z);
+    switch (b->shape) {
+    case COLL_SHAPE_SPHERE: return x;
+    case COLL_SHAPE_CAPSULE: return x + y;
+    case COLL_SHAPE_CYLINDER: return sqrtf(x * x + y * y);
+    default: return sqrtf(x * x + y * y + z * z);
+    }
 }
 
 static bool body_visible(const coll_body_t *b, uint8_t read_mask)
@@ -492,12 +500,62 @@ static bool body_visible(const coll_body_t *b, uint8_t read_mask)
     return b && (b->write_mask & read_mask) && vfin(&b->xf.pos);
 }
 
+/* Collider bodies of the scene along a ray (origin-relative results into rb). */
+static void ray_bodies(const coll_scene_t *scene, const fm_vec3_t *origin, const fm_vec3_t *dir, uint8_t read_mask,
+                       ray_best_t *rb)
+{
+    static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
+    float dl2 = fm_vec3_len2(dir);
+    for (uint16_t i = 0; i < scene->body_count; i++) {
+        const coll_body_t *b = scene->bodies[i];
+        if (!body_visible(b, read_mask)) continue;
+        fm_vec3_t rel;
+        fm_vec3_sub(&rel, &b->xf.pos, origin);
+        /* Bounding-sphere reject: distance from the centre to the ray segment. */
+        float s = fm_vec3_dot(&rel, dir) / dl2;
+        if (s < 0.0f) s = 0.0f;
+        if (s > rb->best) s = rb->best;
+        fm_vec3_t cp;
+        fm_vec3_scale(&cp, dir, s);
+        float R = body_bound_radius(b);
+        if (fm_vec3_distance2(&cp, &rel) > R * R * 1.0001f + 1e-6f) continue;
+        coll_prim_hit_t ph;
+        if (coll_ray_body(&zero, dir, b, &rel, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
+            rb->have = true;
+            rb->best = ph.t;
+            rb->ph = ph;
+            rb->inst = NULL;
+            rb->body = b;
+            rb->tri = -1;
+        }
+    }
+}
+
+static bool ray_result(const ray_best_t *rb, const fm_vec3_t *origin, coll_ray_hit_t *hit)
+{
+    if (!rb->have) return false;
+    if (hit) {
+        fm_vec3_add(&hit->point, origin, &rb->ph.point);
+        hit->normal = rb->ph.normal;
+        hit->distance = rb->ph.t;
+        hit->instance = rb->inst;
+        hit->body = rb->body;
+        hit->triangle = rb->tri;
+        hit->type = rb->inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
+        hit->id = rb->inst ? rb->inst->id : rb->body->id;
+    }
+    return true;
+}
+
+static bool ray_args_ok(const fm_vec3_t *origin, const fm_vec3_t *dir, float max_dist)
+{
+    return vfin(origin) && vfin(dir) && isfinite(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
+}
+
 bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, float max_dist,
                   uint8_t read_mask, uint8_t coll_types, coll_ray_hit_t *hit)
 {
-    if (!scene || !vfin(&origin) || !vfin(&dir) || !isfinite(max_dist) || !(max_dist > 0.0f))
-        return false;
-    if (!(fm_vec3_len2(&dir) > 0.0f)) return false;
+    if (!scene || !ray_args_ok(&origin, &dir, max_dist)) return false;
     ray_best_t rb;
     memset(&rb, 0, sizeof rb);
     rb.best = max_dist;
@@ -510,45 +568,8 @@ bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, fl
             if (inst && (inst->write_mask & read_mask)) ray_instance(scene, inst, &origin, &dir, &seen, &rb);
         }
     }
-    if (coll_types & COLL_TYPE_BODY) {
-        static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
-        float dl2 = fm_vec3_len2(&dir);
-        for (uint16_t i = 0; i < scene->body_count; i++) {
-            const coll_body_t *b = scene->bodies[i];
-            if (!body_visible(b, read_mask)) continue;
-            fm_vec3_t rel;
-            fm_vec3_sub(&rel, &b->xf.pos, &origin);
-            /* Bounding-sphere reject: distance from the centre to the ray segment. */
-            float s = fm_vec3_dot(&rel, &dir) / dl2;
-            if (s < 0.0f) s = 0.0f;
-            if (s > rb.best) s = rb.best;
-            fm_vec3_t cp;
-            fm_vec3_scale(&cp, &dir, s);
-            float R = body_bound_radius(b);
-            if (fm_vec3_distance2(&cp, &rel) > R * R * 1.0001f + 1e-6f) continue;
-            coll_prim_hit_t ph;
-            if (coll_ray_body(&zero, &dir, b, &rel, rb.best, &ph) && (!rb.have || ph.t < rb.best)) {
-                rb.have = true;
-                rb.best = ph.t;
-                rb.ph = ph;
-                rb.inst = NULL;
-                rb.body = b;
-                rb.tri = -1;
-            }
-        }
-    }
-    if (!rb.have) return false;
-    if (hit) {
-        fm_vec3_add(&hit->point, &origin, &rb.ph.point);
-        hit->normal = rb.ph.normal;
-        hit->distance = rb.ph.t;
-        hit->instance = rb.inst;
-        hit->body = rb.body;
-        hit->triangle = rb.tri;
-        hit->type = rb.inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
-        hit->id = rb.inst ? rb.inst->id : rb.body->id;
-    }
-    return true;
+    if (coll_types & COLL_TYPE_BODY) ray_bodies(scene, &origin, &dir, read_mask, &rb);
+    return ray_result(&rb, &origin, hit);
 }
 
 /* ------------------------------------------------------------------ capsule -------- */
@@ -734,6 +755,46 @@ static bool body_box_reject(const coll_body_t *b, const fm_vec3_t *rel, const fm
     return false;
 }
 
+/* Collider bodies of the scene against a capsule sweep (centre-relative results into sb). */
+static void sweep_bodies(const coll_scene_t *scene, const fm_vec3_t *center, const capsule_q_t *q, uint8_t read_mask,
+                         sweep_best_t *sb)
+{
+    for (uint16_t i = 0; i < scene->body_count; i++) {
+        const coll_body_t *b = scene->bodies[i];
+        if (!body_visible(b, read_mask)) continue;
+        fm_vec3_t rel, lo, hi;
+        fm_vec3_sub(&rel, &b->xf.pos, center);
+        swept_box(q, sb->best_t, &lo, &hi);
+        if (body_box_reject(b, &rel, &lo, &hi)) continue;
+        coll_prim_hit_t ph;
+        if (coll_capsule_body_sweep(q->seg, q->r, &q->disp, b, &rel, sb->best_t, &ph) && sweep_better(&ph, sb)) {
+            sb->have = true;
+            sb->best_t = ph.t;
+            sb->ph = ph;
+            sb->inst = NULL;
+            sb->body = b;
+            sb->tri = -1;
+        }
+    }
+}
+
+static bool sweep_result(const sweep_best_t *sb, const fm_vec3_t *center, coll_sweep_hit_t *hit)
+{
+    if (!sb->have) return false;
+    if (hit) {
+        fm_vec3_add(&hit->point, center, &sb->ph.point);
+        hit->normal = sb->ph.normal;
+        hit->t = sb->ph.t;
+        hit->depth = sb->ph.t == 0.0f ? sb->ph.depth : 0.0f;
+        hit->instance = sb->inst;
+        hit->body = sb->body;
+        hit->triangle = sb->tri;
+        hit->type = sb->inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
+        hit->id = sb->inst ? sb->inst->id : sb->body->id;
+    }
+    return true;
+}
+
 bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
                         float inner_half_height, fm_vec3_t displacement, uint8_t read_mask,
                         uint8_t coll_types, coll_sweep_hit_t *hit)
@@ -754,38 +815,8 @@ bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t a
             if (inst && (inst->write_mask & read_mask)) sweep_instance(scene, inst, &center, &q, &seen, &sb);
         }
     }
-    if (coll_types & COLL_TYPE_BODY) {
-        for (uint16_t i = 0; i < scene->body_count; i++) {
-            const coll_body_t *b = scene->bodies[i];
-            if (!body_visible(b, read_mask)) continue;
-            fm_vec3_t rel, lo, hi;
-            fm_vec3_sub(&rel, &b->xf.pos, &center);
-            swept_box(&q, sb.best_t, &lo, &hi);
-            if (body_box_reject(b, &rel, &lo, &hi)) continue;
-            coll_prim_hit_t ph;
-            if (coll_capsule_body_sweep(q.seg, q.r, &q.disp, b, &rel, sb.best_t, &ph) && sweep_better(&ph, &sb)) {
-                sb.have = true;
-                sb.best_t = ph.t;
-                sb.ph = ph;
-                sb.inst = NULL;
-                sb.body = b;
-                sb.tri = -1;
-            }
-        }
-    }
-    if (!sb.have) return false;
-    if (hit) {
-        fm_vec3_add(&hit->point, &center, &sb.ph.point);
-        hit->normal = sb.ph.normal;
-        hit->t = sb.ph.t;
-        hit->depth = sb.ph.t == 0.0f ? sb.ph.depth : 0.0f;
-        hit->instance = sb.inst;
-        hit->body = sb.body;
-        hit->triangle = sb.tri;
-        hit->type = sb.inst ? COLL_TYPE_MESH : COLL_TYPE_BODY;
-        hit->id = sb.inst ? sb.inst->id : sb.body->id;
-    }
-    return true;
+    if (coll_types & COLL_TYPE_BODY) sweep_bodies(scene, &center, &q, read_mask, &sb);
+    return sweep_result(&sb, &center, hit);
 }
 
 /* ------------------------------------------------------------------ overlaps ------- */
@@ -893,6 +924,21 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     note_overflow(scene, seen);
 }
 
+/* Collider bodies of the scene overlapping a capsule. */
+static void overlap_bodies(const coll_scene_t *scene, const capsule_q_t *q, uint8_t read_mask, contacts_t *c)
+{
+    for (uint16_t i = 0; i < scene->body_count; i++) {
+        const coll_body_t *b = scene->bodies[i];
+        if (!body_visible(b, read_mask)) continue;
+        fm_vec3_t rel, lo, hi;
+        fm_vec3_sub(&rel, &b->xf.pos, &c->center);
+        swept_box(q, 0.0f, &lo, &hi);
+        if (body_box_reject(b, &rel, &lo, &hi)) continue;
+        coll_prim_hit_t ph;
+        if (coll_capsule_body_overlap(q->seg, q->r, b, &rel, &ph) && ph.depth > 0.0f) contact_add(c, &ph, NULL, b, -1);
+    }
+}
+
 uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
                                float inner_half_height, uint8_t read_mask, uint8_t coll_types,
                                coll_contact_t *out, uint32_t max_out)
@@ -910,18 +956,229 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
             if (inst && (inst->write_mask & read_mask)) overlap_instance(scene, inst, &q, &seen, &c);
         }
     }
-    if (coll_types & COLL_TYPE_BODY) {
-        for (uint16_t i = 0; i < scene->body_count; i++) {
-            const coll_body_t *b = scene->bodies[i];
-            if (!body_visible(b, read_mask)) continue;
-            fm_vec3_t rel, lo, hi;
-            fm_vec3_sub(&rel, &b->xf.pos, &center);
-            swept_box(&q, 0.0f, &lo, &hi);
-            if (body_box_reject(b, &rel, &lo, &hi)) continue;
-            coll_prim_hit_t ph;
-            if (coll_capsule_body_overlap(q.seg, q.r, b, &rel, &ph) && ph.depth > 0.0f)
-                contact_add(&c, &ph, NULL, b, -1);
+    if (coll_types & COLL_TYPE_BODY) overlap_bodies(scene, &q, read_mask, &c);
+    return c.total;
+}
+
+/* ------------------------------------------------------------------ gather --------- */
+
+void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
+                       uint8_t types)
+{
+    g->scene = scene;
+    g->read_mask = read_mask;
+    g->types = types;
+    g->ntris = 0;
+    g->valid = false;
+    if (!scene || !vfin(&lo) || !vfin(&hi)) return;
+    for (int a = 0; a < 3; a++) {
+        g->origin.v[a] = 0.5f * (lo.v[a] + hi.v[a]);
+        g->hi.v[a] = 0.5f * (hi.v[a] - lo.v[a]);
+        g->lo.v[a] = -g->hi.v[a];
+    }
+    g->valid = true;
+    if (!(types & COLL_TYPE_MESH)) return;
+    seen_t seen;
+    seen_init(&seen);
+    for (uint16_t i = 0; i < scene->mesh_count; i++) {
+        const coll_mesh_instance_t *inst = scene->meshes[i];
+        if (!inst || !(inst->write_mask & read_mask)) continue;
+        const coll_mesh_t *m = inst->mesh;
+        xf3_t x;
+        if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) continue;
+        fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &g->origin);
+        fm_vec3_t llo, lhi;
+        local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
+        uint32_t clo[3], chi[3];
+        if (!instance_cells(m, &llo, &lhi, clo, chi)) continue;
+        bool walk_all = walk_entries(m, clo, chi);
+        coll_mesh_view_t mv;
+        coll_mesh_view_init(&mv, m);
+        const uint32_t *cells = mv.cells;
+        lazy_seen_t lz = { 0u, 0u };
+        if (m->flags & COLL_MESHF_HASH) { /* a hashed entry may list a triangle twice */
+            seen_ready(&seen);
+            lz.ncell = 2u;
+        }
+        for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
+            for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
+                for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
+                    uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
+                    bool dedup = lazy_enter(&lz, &seen, &mv, ci);
+                    for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                        uint32_t t = coll_mesh_view_ref(&mv, k);
+                        int sc = dedup ? seen_check(&seen, t) : SEEN_NEW;
+                        if (sc == SEEN_BEFORE) continue;
+                        if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
+                        fm_vec3_t v[3], shape[3], w0, tri[3];
+                        coll_mesh_view_tri(&mv, t, v);
+                        if (tri_box_reject(v, &llo, &lhi)) continue;
+                        tri_rel_of(v, &x, &o_l, &w0, shape);
+                        tri_abs(&w0, shape, tri);
+                        if (tri_box_reject(tri, &g->lo, &g->hi)) continue;
+                        if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
+                            g->valid = false;
+                            seen_clear(&seen);
+                            return;
+                        }
+                        coll_gather_tri_t *gt = &g->tris[g->ntris++];
+                        gt->w0 = w0;
+                        gt->e1 = shape[1];
+                        gt->e2 = shape[2];
+                        for (int a = 0; a < 3; a++) {
+                            gt->lo.v[a] = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a]));
+                            gt->hi.v[a] = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a]));
+                        }
+                        gt->inst = inst;
+                        gt->tri = (int32_t)t;
+                    }
+                }
+        seen_clear(&seen);
+        note_overflow(scene, &seen);
+    }
+}
+
+/* The query box lo..hi (relative to the query's own origin at rel from the gather's) lies
+ * inside the gathered box: every triangle that can touch the query was gathered. */
+static bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
+{
+    if (!g->valid) return false;
+    for (int a = 0; a < 3; a++)
+        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
+    return true;
+}
+
+/* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
+ * w0 and shape (shape[0] = 0); false when its box misses lo..hi (query-relative). */
+static bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *lo,
+                       const fm_vec3_t *hi, fm_vec3_t *w0, fm_vec3_t shape[3])
+{
+    const coll_gather_tri_t *gt = &g->tris[k];
+    for (int a = 0; a < 3; a++)
+        if (gt->hi.v[a] - rel->v[a] < lo->v[a] || gt->lo.v[a] - rel->v[a] > hi->v[a]) return false;
+    fm_vec3_sub(w0, &gt->w0, rel);
+    shape[0].x = shape[0].y = shape[0].z = 0.0f;
+    shape[1] = gt->e1;
+    shape[2] = gt->e2;
+    return true;
+}
+
+bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, float max_dist, coll_ray_hit_t *hit)
+{
+    if (!g || !g->scene) return false;
+    if (!ray_args_ok(&origin, &dir, max_dist)) return false;
+    fm_vec3_t rel, lo, hi;
+    fm_vec3_sub(&rel, &origin, &g->origin);
+    for (int a = 0; a < 3; a++) {
+        float e = dir.v[a] * max_dist, slack = 1e-4f * max_dist + 1e-6f;
+        lo.v[a] = min_f(0.0f, e) - slack;
+        hi.v[a] = max_f(0.0f, e) + slack;
+    }
+    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+        return coll_raycast(g->scene, origin, dir, max_dist, g->read_mask, g->types, hit);
+    ray_best_t rb;
+    memset(&rb, 0, sizeof rb);
+    rb.best = max_dist;
+    rb.tri = -1;
+    for (uint16_t k = 0; k < g->ntris; k++) {
+        fm_vec3_t w0, shape[3], o;
+        if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
+        fm_vec3_negate(&o, &w0);
+        const coll_mesh_instance_t *inst = g->tris[k].inst;
+        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
+            fm_vec3_t u = one_way_up(inst);
+            if (!one_way_ray(&u, shape, &o, &dir)) continue;
+        }
+        coll_prim_hit_t ph;
+        if (coll_ray_triangle(&o, &dir, shape, rb.best, &ph) && (!rb.have || ph.t < rb.best)) {
+            fm_vec3_add(&ph.point, &ph.point, &w0);
+            rb.have = true;
+            rb.best = ph.t;
+            rb.ph = ph;
+            rb.inst = inst;
+            rb.body = NULL;
+            rb.tri = g->tris[k].tri;
         }
     }
+    if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
+    return ray_result(&rb, &origin, hit);
+}
+
+bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                               float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
+{
+    if (!g || !g->scene) return false;
+    if (!capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement)) return false;
+    capsule_q_t q;
+    capsule_setup(&q, &axis, radius, inner_half_height, &displacement);
+    fm_vec3_t rel, lo, hi;
+    fm_vec3_sub(&rel, &center, &g->origin);
+    swept_box(&q, 1.0f, &lo, &hi);
+    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+        return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
+                                  g->types, hit);
+    sweep_best_t sb;
+    memset(&sb, 0, sizeof sb);
+    sb.best_t = 1.0f;
+    sb.tri = -1;
+    for (uint16_t k = 0; k < g->ntris; k++) {
+        fm_vec3_t w0, shape[3], seg[2];
+        if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
+        fm_vec3_sub(&seg[0], &q.seg[0], &w0);
+        fm_vec3_sub(&seg[1], &q.seg[1], &w0);
+        const coll_mesh_instance_t *inst = g->tris[k].inst;
+        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
+            fm_vec3_t u = one_way_up(inst);
+            if (!one_way_capsule(&u, shape, seg, q.r)) continue;
+        }
+        coll_prim_hit_t ph;
+        if (coll_tri_sweep(seg, q.r, &q.disp, shape, sb.best_t, &ph) && sweep_better(&ph, &sb)) {
+            fm_vec3_add(&ph.point, &ph.point, &w0);
+            sb.have = true;
+            sb.best_t = ph.t;
+            sb.ph = ph;
+            sb.inst = inst;
+            sb.body = NULL;
+            sb.tri = g->tris[k].tri;
+            swept_box(&q, sb.best_t, &lo, &hi); /* shrink the sweep */
+        }
+    }
+    if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
+    return sweep_result(&sb, &center, hit);
+}
+
+uint32_t coll_gather_capsule_overlaps(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                      float inner_half_height, coll_contact_t *out, uint32_t max_out)
+{
+    if (!g || !g->scene) return 0;
+    if (!capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
+    static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
+    capsule_q_t q;
+    capsule_setup(&q, &axis, radius, inner_half_height, &zero);
+    fm_vec3_t rel, lo, hi;
+    fm_vec3_sub(&rel, &center, &g->origin);
+    swept_box(&q, 0.0f, &lo, &hi);
+    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+        return coll_capsule_overlaps(g->scene, center, axis, radius, inner_half_height, g->read_mask, g->types, out,
+                                     max_out);
+    contacts_t c = { out, max_out, 0, 0, center };
+    for (uint16_t k = 0; k < g->ntris; k++) {
+        fm_vec3_t w0, shape[3], seg[2];
+        if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
+        fm_vec3_sub(&seg[0], &q.seg[0], &w0);
+        fm_vec3_sub(&seg[1], &q.seg[1], &w0);
+        if (plane_rejects(q.r, seg, shape)) continue;
+        const coll_mesh_instance_t *inst = g->tris[k].inst;
+        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
+            fm_vec3_t u = one_way_up(inst);
+            if (!one_way_capsule(&u, shape, seg, q.r)) continue;
+        }
+        coll_prim_hit_t ph;
+        if (coll_capsule_triangle_overlap(seg, q.r, shape, &ph) && ph.depth > 0.0f) {
+            fm_vec3_add(&ph.point, &ph.point, &w0);
+            contact_add(&c, &ph, inst, NULL, g->tris[k].tri);
+        }
+    }
+    if (g->types & COLL_TYPE_BODY) overlap_bodies(g->scene, &q, g->read_mask, &c);
     return c.total;
 }

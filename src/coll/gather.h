@@ -1,0 +1,54 @@
+/**
+ * @file gather.h
+ * @brief The candidate triangles of one character step, gathered once (private).
+ *
+ * A step asks the scene for a handful of queries around one place (the overlap recovery,
+ * the slide's sweeps, the floor probe ray). Each scene query walks the grid cells of every
+ * instance, deduplicates, and transforms the candidates again. A gather walks the cells of
+ * the step's box once and keeps the triangles that meet it, in query-relative form (an
+ * exact shape and the first vertex's offset from the gather's origin), in a fixed buffer;
+ * the queries below then scan that buffer. A query whose box is not inside the gathered box,
+ * or any query after the buffer overflowed, goes to the scene query instead: results are
+ * the same either way (exact nearest hits, all candidates).
+ */
+#ifndef COLL_GATHER_H
+#define COLL_GATHER_H
+
+#include "coll/scene.h"
+
+/** Triangles a gather keeps (72 bytes each on the console). */
+#define COLL_GATHER_MAX 128
+
+typedef struct {
+    fm_vec3_t w0;        ///< first vertex relative to the gather's origin
+    fm_vec3_t e1, e2;    ///< the other two vertices relative to the first (exact shape)
+    fm_vec3_t lo, hi;    ///< box of the triangle relative to the gather's origin
+    const coll_mesh_instance_t *inst;
+    int32_t tri;
+} coll_gather_tri_t;
+
+typedef struct {
+    const coll_scene_t *scene;
+    fm_vec3_t origin;    ///< world centre of the gathered box
+    fm_vec3_t lo, hi;    ///< the gathered box, relative to origin
+    uint8_t read_mask, types;
+    bool valid;          ///< false: overflowed (or nothing gathered): every query goes to the scene
+    uint16_t ntris;
+    coll_gather_tri_t tris[COLL_GATHER_MAX];
+} coll_gather_t;
+
+/** Gathers the mesh triangles (seen through read_mask, when types has COLL_TYPE_MESH) that
+ *  meet the world box lo..hi. Collider bodies are not gathered: queries test them as usual. */
+void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
+                       uint8_t types);
+
+/** coll_raycast / coll_capsule_sweep / coll_capsule_overlaps on the gathered scene (its
+ *  read_mask and types). g NULL or invalid: nothing (use the scene functions). */
+bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir_unit, float max_dist,
+                         coll_ray_hit_t *hit);
+bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                               float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit);
+uint32_t coll_gather_capsule_overlaps(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                                      float inner_half_height, coll_contact_t *out, uint32_t max_out);
+
+#endif
