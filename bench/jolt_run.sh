@@ -88,6 +88,18 @@ md=$out/jolt_scene.md
             "$(val "$n" settled_at_rest)" "$(val "$n" settled_at_rest_grounded)" "$(val "$n" overflows)"
     done; done
     echo
+    echo "What the bodies met (body-steps of the measured steps; the first ~50 steps are the drop"
+    echo "from the start height onto the terrain):"
+    echo
+    echo "| grid cell | steps | body-steps | airborne | within 5 cm of the stairs or wall | hit a wall | stepped up/down | lowest foot |"
+    echo "|---|---|---|---|---|---|---|---|"
+    for c in $CELLS; do for s in $STEPS; do
+        n="c${c}_s$s"
+        printf "| %s | %d | %s | %s | %s | %s | %s | %s m |\n" "$(cellname "$c")" "$s" "$(val "$n" samples)" \
+            "$(val "$n" airborne_samples)" "$(val "$n" near_stairs_wall_samples)" "$(val "$n" hit_wall_samples)" \
+            "$(val "$n" stepped_samples)" "$(val "$n" min_foot_y)"
+    done; done
+    echo
     echo "Profile split (callgrind inclusive counts within the measured loop, per update; the"
     echo "queries are called from the char body's phases, so the columns overlap by phase, not by query):"
     echo

@@ -6,7 +6,9 @@
  * changes every 2 s at 5-9.5 m/s, dt 1/60. Character-vs-character contacts are off; Jolt's
  * 100 dynamic boxes are left out (no rigid bodies here).
  *
- *   jolt_scene STEPS [CELL]     CELL: grid cell in meters, 0 or absent = automatic
+ *   jolt_scene STEPS [CELL [MAX_SLIDES]]
+ *       CELL: grid cell in meters, 0 or absent = automatic
+ *       MAX_SLIDES: sweep-and-slide iterations per step, absent = the library's default (4)
  *
  * Prints key=value lines. Instructions are counted by callgrind with
  * --toggle-collect=jolt_step_all: that function is the per-step character loop (target
@@ -182,6 +184,8 @@ typedef struct {
     uint64_t pen_samples;     /* body-steps with the sweep capsule > 1 mm into a triangle */
     uint64_t samples;
     uint64_t airborne_samples;
+    uint64_t stepped, hit_wall;   /* body-steps with a STEPPED / HIT_WALL event */
+    uint64_t near_boxes;          /* body-steps with the full capsule within 5 cm of the stairs or wall */
     double min_foot_y;
     int worst_body; uint32_t worst_step;
 } check_t;
@@ -242,6 +246,10 @@ static void check_step(check_t *ck, uint32_t step)
         if (-ps < ck->min_clear_sweep) ck->min_clear_sweep = -ps;
         if (ps > ck->max_pen_sweep) { ck->max_pen_sweep = ps; ck->worst_body = i; ck->worst_step = step; }
         if (pfb > ck->max_pen_full_box) ck->max_pen_full_box = pfb;
+        if (pfb > -0.05) ck->near_boxes++;
+        const char_body_events_t *ev = char_body_events(&g_body[i]);
+        ck->stepped += (ev->flags & CHAR_BODY_EVENT_STEPPED) != 0;
+        ck->hit_wall += (ev->flags & CHAR_BODY_EVENT_HIT_WALL) != 0;
         if (pf > pfb && pf > ck->max_pen_full_terrain) ck->max_pen_full_terrain = pf;
         if (ps > 1e-3) ck->pen_samples++;
         if (char_body_ground_state(&g_body[i]) == CHAR_BODY_AIRBORNE) ck->airborne_samples++;
@@ -299,11 +307,12 @@ static void print_ground(const char *tag, const ground_t *g)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s STEPS [CELL]   (CELL 0 or absent: automatic grid cell)\n", argv[0]);
+        fprintf(stderr, "usage: %s STEPS [CELL [MAX_SLIDES]]   (CELL 0 or absent: automatic grid cell)\n", argv[0]);
         return 2;
     }
     uint32_t steps = (uint32_t)strtoul(argv[1], NULL, 10);
     float cell = argc > 2 ? strtof(argv[2], NULL) : 0.0f;
+    int max_slides = argc > 3 ? atoi(argv[3]) : 0;
 
     build_geometry();
     coll_mesh_build_opts_t opts = {cell, 0};
@@ -335,6 +344,7 @@ int main(int argc, char **argv)
     s.step_height = 0.4f;                       /* ExtendedUpdateSettings::mWalkStairsStepUp */
     s.floor_snap_distance = 0.5f;               /* ExtendedUpdateSettings::mStickToFloorStepDown */
     s.coll_types = COLL_TYPE_MESH;              /* character vs character off */
+    if (max_slides > 0) s.max_slides = (uint8_t)max_slides;
     for (int y = 0; y < NCHAR_Y; y++)
         for (int x = 0; x < NCHAR_X; x++) {
             int i = y * NCHAR_X + x;
@@ -355,6 +365,7 @@ int main(int argc, char **argv)
 
     ground_t end = ground_report();
     uint64_t air_samples = ck.airborne_samples, samples = ck.samples;
+    uint64_t stepped = ck.stepped, hit_wall = ck.hit_wall, near_boxes = ck.near_boxes;
     uint32_t overflows = g_scene.overflow_count;
 
     /* settle (not measured): inputs stop; every body should come to rest on a floor */
@@ -372,6 +383,7 @@ int main(int argc, char **argv)
     printf("updates=%llu\n", (unsigned long long)steps * NCHARS);
     printf("cell_request=%g\n", (double)cell);
     printf("cell=%.4g\n", (double)mesh->cell_size);
+    printf("max_slides=%d\n", (int)g_body[0].settings.max_slides);
     printf("triangles=%u\n", coll_mesh_triangle_count(mesh));
     printf("mesh_bytes=%zu\n", coll_mesh_size(mesh));
     printf("overflows=%u\n", overflows);
@@ -384,6 +396,9 @@ int main(int argc, char **argv)
     printf("max_pen_full_stairs_wall_mm=%.4f\n", ck.max_pen_full_box * 1e3);
     printf("samples=%llu\n", (unsigned long long)samples);
     printf("airborne_samples=%llu\n", (unsigned long long)air_samples);
+    printf("stepped_samples=%llu\n", (unsigned long long)stepped);
+    printf("hit_wall_samples=%llu\n", (unsigned long long)hit_wall);
+    printf("near_stairs_wall_samples=%llu\n", (unsigned long long)near_boxes);
     printf("min_foot_y=%.4f\n", ck.min_foot_y);
     print_ground("end", &end);
     print_ground("settled", &settled);
