@@ -52,6 +52,15 @@ incl() {
             if (r ~ /^\//) { if (n + 0 > a) a = n + 0 } else s += n
         } END { printf "%d\n", (a > s ? a : s) }'
 }
+# Calls of function $2 within the measured region of run $1 (callgrind's calls= lines;
+# names are compressed as "cfn=(id) name" the first time, "cfn=(id)" after).
+calls() {
+    awk -v f="$2" '
+        /^c?fn=\(/ { id = $1; sub(/^c?fn=/, "", id); if (NF > 1) { nm = $0; sub(/^[^ ]* /, "", nm); name[id] = nm }
+                     if ($0 ~ /^cfn=/) cur = name[id]; next }
+        /^calls=/ { if (cur == f) { c = $1; sub(/^calls=/, "", c); n += c } }
+        END { printf "%d\n", n }' "$dir/$1.out"
+}
 k() { awk -v n="$1" -v d="$2" 'BEGIN { printf "%.1fk", n / d / 1000 }'; }
 cellname() { if [ "$1" = 0 ]; then echo "automatic ($(val "c$1_s60" cell) m)"; else echo "$1 m ($(val "c$1_s60" cell) m built)"; fi; }
 
@@ -100,8 +109,9 @@ md=$out/jolt_scene.md
             "$(val "$n" stepped_samples)" "$(val "$n" min_foot_y)"
     done; done
     echo
-    echo "Profile split (callgrind inclusive counts within the measured loop, per update; the"
-    echo "queries are called from the char body's phases, so the columns overlap by phase, not by query):"
+    echo "Profile split (callgrind inclusive counts within the measured loop, instructions per"
+    echo "update; the three query columns exclude each other, as do the three char body phase"
+    echo "columns (cb_*); each phase includes the queries it makes):"
     echo
     echo "| grid cell | steps | total | move_and_slide | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | cb_slide | cb_probe_floor | cb_recover |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
@@ -110,6 +120,20 @@ md=$out/jolt_scene.md
         row="| $(cellname "$c") | $s | $(k "$(total "$n")" $u)"
         for f in char_body_move_and_slide_in coll_capsule_sweep coll_raycast coll_capsule_overlaps cb_slide cb_probe_floor cb_recover; do
             row="$row | $(k "$(incl "$n" "$f")" $u)"
+        done
+        echo "$row |"
+    done; done
+    echo
+    echo "Calls per update (the exact primitives: capsule-triangle sweeps, ray-triangle tests;"
+    echo "tri_box_reject: candidate triangles from the grid tested against a query's box):"
+    echo
+    echo "| grid cell | steps | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | tri_box_reject | coll_tri_sweep | coll_ray_triangle |"
+    echo "|---|---|---|---|---|---|---|---|"
+    for c in $CELLS; do for s in $STEPS; do
+        n="c${c}_s$s"; u=$((s * 100))
+        row="| $(cellname "$c") | $s"
+        for f in coll_capsule_sweep coll_raycast coll_capsule_overlaps tri_box_reject coll_tri_sweep coll_ray_triangle; do
+            row="$row | $(awk -v n="$(calls "$n" "$f")" -v u=$u 'BEGIN { printf "%.2f", n / u }')"
         done
         echo "$row |"
     done; done
