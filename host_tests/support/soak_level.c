@@ -786,6 +786,20 @@ fm_vec3_t soak_level_spawn(soak_rng_t *r, const soak_level_t *l, const char_body
         if (u + v > 1) { u = 1 - u; v = 1 - v; }
         dv3 c = v_add(a, v_add(v_scale(e1, u), v_scale(e2, v)));
         for (int k = 0; k < 3; k++) o.v[k] = (float)((k == 0 ? c.x : k == 1 ? c.y + h : c.z) - s->center_offset.v[k]);
+        /* inside the map: some triangle straight above (a ceiling or the sky's brushes),
+         * so not on the top of the map's outer shell */
+        bool roofed = false;
+        for (uint32_t i = 0; i < l->nwtris && !roofed; i++) {
+            const soak_wtri_t *t = &l->wtris[i];
+            double x[3] = {c.x, c.y + h, c.z};
+            /* 2D point-in-triangle test on (x, z), the triangle above the spawn point */
+            double ax = t->v[0][0] - x[0], az = t->v[0][2] - x[2], bx = t->v[1][0] - x[0], bz = t->v[1][2] - x[2];
+            double cx = t->v[2][0] - x[0], cz = t->v[2][2] - x[2];
+            double d1 = ax * bz - az * bx, d2 = bx * cz - bz * cx, d3 = cx * az - cz * ax;
+            bool inside = (d1 > 0 && d2 > 0 && d3 > 0) || (d1 < 0 && d2 < 0 && d3 < 0);
+            if (inside && t->v[0][1] > x[1] && t->v[1][1] > x[1] && t->v[2][1] > x[1]) roofed = true;
+        }
+        if (!roofed) continue;
         soak_capsule_t full, sweep;
         soak_capsules_at(s, o, &full, &sweep);
         if (soak_check_nearest(l, s, &full) > 0.01) return o; /* room for the capsule */
