@@ -10,7 +10,7 @@
  * 11 drawindexes (int32), 13 surfaces (104 bytes: int32 shaderNum, fogNum, surfaceType,
  * firstVert, numVerts, firstIndex, numIndexes, lightmapNum, lightmapX, lightmapY,
  * lightmapWidth, lightmapHeight, float lightmapOrigin[3], lightmapVecs[3][3], int32
- * patchWidth, patchHeight).
+ * patchWidth, patchHeight at bytes 96 and 100).
  *
  * Surface types: 1 planar and 3 triangle soup: triangles from drawindexes (relative to
  * firstVert); 2 patch: a patchWidth x patchHeight grid of control points (odd sizes),
@@ -21,6 +21,8 @@
  * (0x4000) are taken (water, fog, lava, slime and decals are not solid; SURF_NODRAW
  * surfaces are normally not in the surface lump at all). Quake's invisible clip brushes
  * (CONTENTS_PLAYERCLIP) have no surfaces and are therefore missing: brushes are not read.
+ *
+ * Triangles are wound counter-clockwise seen from the side their vertex normals point to.
  *
  * Every length, count and index is validated before use; an error returns a message
  * (the caller prints it as "ERROR: <file>: ...").
@@ -93,12 +95,30 @@ static int vert(const ctx_t *c, uint32_t i, double out[3])
     return 0;
 }
 
-static void emit(const ctx_t *c, const double a[3], const double b[3], const double d[3])
+/* The drawvert's normal, converted like the position (zero when absent or not finite). */
+static void vnormal(const ctx_t *c, uint32_t i, double out[3])
 {
-    double t[9];
+    const unsigned char *v = c->verts.p + (size_t)i * VERT_SIZE + 28;
+    double x = rdf(v), y = rdf(v + 4), z = rdf(v + 8);
+    if (!isfinite(x) || !isfinite(y) || !isfinite(z)) x = y = z = 0;
+    out[0] = x; out[1] = z; out[2] = -y;
+}
+
+/* Emits a triangle wound counter-clockwise seen from its front (the side its vertex
+ * normals point to: the open side of a wall or floor), as glTF and OBJ have it, whatever
+ * the map's winding: the facing matters to tools (the soak's spawn points), and the
+ * runtime is double-sided anyway. n: the summed vertex normals (zero: kept as is). */
+static void emit(const ctx_t *c, const double a[3], const double b[3], const double d[3], const double n[3])
+{
+    double t[9], e1[3], e2[3], x[3];
+    for (int k = 0; k < 3; k++) { e1[k] = b[k] - a[k]; e2[k] = d[k] - a[k]; }
+    x[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    x[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    x[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    int flip = n && x[0] * n[0] + x[1] * n[1] + x[2] * n[2] < 0;
     memcpy(t, a, 3 * sizeof(double));
-    memcpy(t + 3, b, 3 * sizeof(double));
-    memcpy(t + 6, d, 3 * sizeof(double));
+    memcpy(t + 3, flip ? d : b, 3 * sizeof(double));
+    memcpy(t + 6, flip ? b : d, 3 * sizeof(double));
     c->fn(c->user, t);
     c->st->triangles++;
 }
@@ -107,13 +127,15 @@ static const char *do_indexed(const ctx_t *c, long s, uint32_t fv, uint32_t nv, 
 {
     if (ni % 3) return fail("surface %ld: %ld indexes, not a multiple of 3", s, (long)ni);
     for (uint32_t k = 0; k < ni; k += 3) {
-        double p[3][3];
+        double p[3][3], n[3] = {0, 0, 0}, vn[3];
         for (int j = 0; j < 3; j++) {
             int32_t ix = rdi(c->indexes.p + ((size_t)fi + k + (uint32_t)j) * 4);
             if (ix < 0 || (uint32_t)ix >= nv) return fail("surface %ld: index %ld outside its vertices", s, (long)ix);
             if (vert(c, fv + (uint32_t)ix, p[j]) != 0) return fail("surface %ld: non-finite vertex %ld", s, (long)ix);
+            vnormal(c, fv + (uint32_t)ix, vn);
+            for (int a = 0; a < 3; a++) n[a] += vn[a];
         }
-        emit(c, p[0], p[1], p[2]);
+        emit(c, p[0], p[1], p[2], n);
     }
     return NULL;
 }
@@ -140,19 +162,28 @@ static const char *do_patch(const ctx_t *c, long s, uint32_t fv, uint32_t nv, in
     if ((uint32_t)w * (uint32_t)h != nv) return fail("surface %ld: patch has %ld vertices, not width x height", s, (long)nv);
     for (int32_t py = 0; py + 2 < h; py += 2)
         for (int32_t px = 0; px + 2 < w; px += 2) {
-            double cp[3][3][3];
+            double cp[3][3][3], cn[3][3][3];
             for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
+                for (int j = 0; j < 3; j++) {
                     if (vert(c, fv + (uint32_t)((py + i) * w + px + j), cp[i][j]) != 0)
                         return fail("surface %ld: non-finite patch control point", s, 0);
-            double g[PATCH_LEVEL + 1][PATCH_LEVEL + 1][3];
+                    vnormal(c, fv + (uint32_t)((py + i) * w + px + j), cn[i][j]);
+                }
+            double g[PATCH_LEVEL + 1][PATCH_LEVEL + 1][3], gn[PATCH_LEVEL + 1][PATCH_LEVEL + 1][3];
             for (int i = 0; i <= PATCH_LEVEL; i++)
-                for (int j = 0; j <= PATCH_LEVEL; j++)
+                for (int j = 0; j <= PATCH_LEVEL; j++) {
                     bez(cp, (double)j / PATCH_LEVEL, (double)i / PATCH_LEVEL, g[i][j]);
+                    bez(cn, (double)j / PATCH_LEVEL, (double)i / PATCH_LEVEL, gn[i][j]);
+                }
             for (int i = 0; i < PATCH_LEVEL; i++)
                 for (int j = 0; j < PATCH_LEVEL; j++) {
-                    emit(c, g[i][j], g[i + 1][j], g[i + 1][j + 1]);
-                    emit(c, g[i][j], g[i + 1][j + 1], g[i][j + 1]);
+                    double n1[3], n2[3];
+                    for (int a = 0; a < 3; a++) {
+                        n1[a] = gn[i][j][a] + gn[i + 1][j][a] + gn[i + 1][j + 1][a];
+                        n2[a] = gn[i][j][a] + gn[i + 1][j + 1][a] + gn[i][j + 1][a];
+                    }
+                    emit(c, g[i][j], g[i + 1][j], g[i + 1][j + 1], n1);
+                    emit(c, g[i][j], g[i + 1][j + 1], g[i][j + 1], n2);
                 }
         }
     return NULL;
@@ -208,7 +239,7 @@ const char *bsp_read(const unsigned char *d, size_t n, double unit, int all_mode
     for (uint32_t s = first; s < first + count; s++) {
         const unsigned char *f = c.surfaces.p + (size_t)s * SURFACE_SIZE;
         int32_t shader = rdi(f), type = rdi(f + 8), fv = rdi(f + 12), nv = rdi(f + 16), fi = rdi(f + 20),
-                ni = rdi(f + 24), pw = rdi(f + 88), ph = rdi(f + 92);
+                ni = rdi(f + 24), pw = rdi(f + 96), ph = rdi(f + 100);
         if (shader < 0 || (uint32_t)shader >= c.shaders.n)
             return fail("surface %ld: shader %ld outside the shader lump", (long)s, (long)shader);
         const unsigned char *sh = c.shaders.p + (size_t)shader * SHADER_SIZE;
