@@ -73,11 +73,10 @@ soak-ci: $(BUILD)/host/soak/soak $(BUILD)/qemu/soak/soak $(SOAK_CI_REAL)
 SOAK_ORACLE_FRAMES ?= 100000
 .PHONY: soak-oracles
 soak-oracles: $(BUILD)/host/soak/soak
-	@rc=0; for o in direction progress footing support velocity; do \
+	@mkdir -p $(SOAK_OUT); rc=0; for o in direction progress footing support velocity; do \
 	  echo "=== oracle $$o"; \
 	  $< --frames $(SOAK_ORACLE_FRAMES) --seed $(or $(SEED),1) --oracles $$o --out $(SOAK_OUT)/oracle-$$o --max-replays 10 \
-	    | grep -E '^soak: ' || true; \
-	  $< --frames $(SOAK_ORACLE_FRAMES) --seed $(or $(SEED),1) --oracles $$o --out /dev/null --max-replays 0 > /dev/null || rc=1; \
+	    > $(SOAK_OUT)/oracle-$$o.log; [ $$? = 0 ] || rc=1; grep -E '^soak: ' $(SOAK_OUT)/oracle-$$o.log; \
 	done; exit $$rc
 
 # Store this build's final state in every regression replay, native and MIPS (after an
