@@ -4,7 +4,7 @@
 #
 #   make real-levels              extract REAL_MAPS from the installed .pk3 (a zip) and bake
 #                                 them to $(BUILD)/real/<map>.coll (+ .raw for the checker, .report)
-#   make soak-real [REAL_FRAMES=N] [REAL_BODIES=N] [SEED=S]
+#   make soak-real [REAL_FRAMES=N] [REAL_BODIES=N] [SEED=S] [ORACLES=footing,...]
 #                                 soak every real level: N frames each, bodies one after another
 #   make soak-real-one MAP=oa_dm4 [REAL_FRAMES=N]
 #   make bsp-test                 collbake's BSP reader and loss rule (part of make test)
@@ -39,7 +39,7 @@ soak-real: $(BUILD)/host/soak/soak $(REAL_COLLS)
 	@rc=0; for m in $(REAL_MAPS); do \
 	  echo "=== $$m"; \
 	  $(BUILD)/host/soak/soak --level $(REAL_DIR)/$$m.coll --bodies $(REAL_BODIES) --frames $(REAL_FRAMES) \
-	    --seed $(or $(SEED),1) --out $(SOAK_OUT)/real-$$m --max-replays 10 | grep -vE '^(FAIL|  replay|KNOWN)' || rc=1; \
+	    --seed $(or $(SEED),1) $(if $(ORACLES),--oracles $(ORACLES)) --out $(SOAK_OUT)/real-$$m$(if $(ORACLES),-$(ORACLES)) --max-replays 10 | grep -vE '^(FAIL|  replay|KNOWN)'; [ $${PIPESTATUS[0]} = 0 ] || rc=1; \
 	done; exit $$rc
 
 soak-real-one: $(BUILD)/host/soak/soak $(REAL_DIR)/$(MAP).coll

@@ -771,35 +771,56 @@ int soak_level_load(soak_level_t *l, const char *blob_path, const char *raw_path
     return 0;
 }
 
-fm_vec3_t soak_level_spawn(soak_rng_t *r, const soak_level_t *l, const char_body_settings_t *s)
+/* Candidate floor points of a loaded level: on upward-facing triangles of at least
+ * 0.25 m^2, under a roof (some triangle straight above: a ceiling or the sky's brushes, so
+ * not on the top of the map's outer shell). Found once per level (a fixed sequence). */
+#define SPAWN_CANDIDATES 512
+static struct { char file[256]; uint32_t n; double p[SPAWN_CANDIDATES][3]; } g_spawn;
+
+static bool roofed(const soak_level_t *l, const double x[3])
 {
-    fm_vec3_t o = {{0.0f, 0.0f, 0.0f}};
-    double h = 0.5 * (double)s->height + 0.05;
-    for (int tries = 0; tries < 2000 && l->nwtris > 0; tries++) {
-        const soak_wtri_t *w = &l->wtris[soak_rng_below(r, l->nwtris)];
+    for (uint32_t i = 0; i < l->nwtris; i++) {
+        const soak_wtri_t *t = &l->wtris[i];
+        if (t->v[0][1] <= x[1] || t->v[1][1] <= x[1] || t->v[2][1] <= x[1]) continue;
+        double ax = t->v[0][0] - x[0], az = t->v[0][2] - x[2], bx = t->v[1][0] - x[0], bz = t->v[1][2] - x[2];
+        double cx = t->v[2][0] - x[0], cz = t->v[2][2] - x[2];
+        double d1 = ax * bz - az * bx, d2 = bx * cz - bz * cx, d3 = cx * az - cz * ax;
+        if ((d1 > 0 && d2 > 0 && d3 > 0) || (d1 < 0 && d2 < 0 && d3 < 0)) return true;
+    }
+    return false;
+}
+
+static void spawn_candidates(const soak_level_t *l)
+{
+    if (g_spawn.n && strcmp(g_spawn.file, l->file) == 0) return;
+    snprintf(g_spawn.file, sizeof g_spawn.file, "%s", l->file);
+    g_spawn.n = 0;
+    soak_rng_t r;
+    soak_rng_seed(&r, 0x5BA3ull);
+    for (int tries = 0; tries < 20000 && g_spawn.n < SPAWN_CANDIDATES && l->nwtris > 0; tries++) {
+        const soak_wtri_t *w = &l->wtris[soak_rng_below(&r, l->nwtris)];
         dv3 a = v3(w->v[0][0], w->v[0][1], w->v[0][2]);
         dv3 e1 = v_sub(v3(w->v[1][0], w->v[1][1], w->v[1][2]), a), e2 = v_sub(v3(w->v[2][0], w->v[2][1], w->v[2][2]), a);
         dv3 n = v_cross(e1, e2);
         double area2 = v_len(n);
         if (!(area2 > 0.5) || n.y < 0.9 * area2) continue; /* >= 0.25 m^2, facing up (+Y) */
-        double u = soak_rng_unit(r), v = soak_rng_unit(r);
+        double u = soak_rng_unit(&r), v = soak_rng_unit(&r);
         if (u + v > 1) { u = 1 - u; v = 1 - v; }
         dv3 c = v_add(a, v_add(v_scale(e1, u), v_scale(e2, v)));
-        for (int k = 0; k < 3; k++) o.v[k] = (float)((k == 0 ? c.x : k == 1 ? c.y + h : c.z) - s->center_offset.v[k]);
-        /* inside the map: some triangle straight above (a ceiling or the sky's brushes),
-         * so not on the top of the map's outer shell */
-        bool roofed = false;
-        for (uint32_t i = 0; i < l->nwtris && !roofed; i++) {
-            const soak_wtri_t *t = &l->wtris[i];
-            double x[3] = {c.x, c.y + h, c.z};
-            /* 2D point-in-triangle test on (x, z), the triangle above the spawn point */
-            double ax = t->v[0][0] - x[0], az = t->v[0][2] - x[2], bx = t->v[1][0] - x[0], bz = t->v[1][2] - x[2];
-            double cx = t->v[2][0] - x[0], cz = t->v[2][2] - x[2];
-            double d1 = ax * bz - az * bx, d2 = bx * cz - bz * cx, d3 = cx * az - cz * ax;
-            bool inside = (d1 > 0 && d2 > 0 && d3 > 0) || (d1 < 0 && d2 < 0 && d3 < 0);
-            if (inside && t->v[0][1] > x[1] && t->v[1][1] > x[1] && t->v[2][1] > x[1]) roofed = true;
-        }
-        if (!roofed) continue;
+        double x[3] = {c.x, c.y + 0.05, c.z};
+        if (!roofed(l, x)) continue;
+        memcpy(g_spawn.p[g_spawn.n++], x, sizeof x);
+    }
+}
+
+fm_vec3_t soak_level_spawn(soak_rng_t *r, const soak_level_t *l, const char_body_settings_t *s)
+{
+    fm_vec3_t o = {{0.0f, 0.0f, 0.0f}};
+    spawn_candidates(l);
+    double h = 0.5 * (double)s->height;
+    for (int tries = 0; tries < 200 && g_spawn.n > 0; tries++) {
+        const double *c = g_spawn.p[soak_rng_below(r, g_spawn.n)];
+        for (int k = 0; k < 3; k++) o.v[k] = (float)((k == 1 ? c[1] + h : c[k]) - s->center_offset.v[k]);
         soak_capsule_t full, sweep;
         soak_capsules_at(s, o, &full, &sweep);
         if (soak_check_nearest(l, s, &full) > 0.01) return o; /* room for the capsule */

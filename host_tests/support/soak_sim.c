@@ -313,9 +313,9 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
         if (want >= 1e-3 && soak_check_free_flat(sim->lvl, s, m->pos0, D)) {
             sim->st.oracle_frames[SOAK_FAIL_PROGRESS]++;
             if (along < SOAK_PROGRESS_MIN * want)
-                FAIL(SOAK_FAIL_PROGRESS, "walking on free flat floor: covered %.2f of %.2f mm (%.0f %%), from (%.4f %.4f %.4f)",
+                FAIL(SOAK_FAIL_PROGRESS, "walking on free flat floor: covered %.2f of %.2f mm (%.0f %%), from (%.4f %.4f %.4f)%s",
                      along * 1000.0, want * 1000.0, 100.0 * along / want, (double)m->pos0.x, (double)m->pos0.y,
-                     (double)m->pos0.z);
+                     (double)m->pos0.z, inl > 1.8e19 ? " (huge input: its square overflows a float)" : "");
         }
     }
     /* (c) footing */
