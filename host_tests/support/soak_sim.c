@@ -338,12 +338,19 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
         double tol = SOAK_VEL_TOL_POS / dt;
         if (SOAK_VEL_TOL_REL * (sp > real ? sp : real) > tol) tol = SOAK_VEL_TOL_REL * (sp > real ? sp : real);
         sim->st.oracle_frames[SOAK_FAIL_VELOCITY]++;
+        /* a tag for sorting the failures: [moved while still] the body moved but reports
+         * no velocity there (a push); [still while moving] the reverse (blocked, or a
+         * contact took the motion); [other] a different velocity (a mid-step slide) */
+        double vu = v[0] * up[0] + v[1] * up[1] + v[2] * up[2], vh[3], rh[3];
+        for (int k = 0; k < 3; k++) { vh[k] = v[k] - up[k] * vu; rh[k] = d[k] / dt - up[k] * (dup / dt); }
         if (dlen3(eh) > tol)
-            FAIL(SOAK_FAIL_VELOCITY, "across up: velocity (%.3f %.3f %.3f) but moved %.3f m/s off it (displacement/dt %.3f %.3f %.3f, tol %.3f)",
+            FAIL(SOAK_FAIL_VELOCITY, "across up %s: velocity (%.3f %.3f %.3f) but moved %.3f m/s off it (displacement/dt %.3f %.3f %.3f, tol %.3f)",
+                 dlen3(vh) <= tol ? "[moved while still]" : dlen3(rh) <= tol ? "[still while moving]" : "[other]",
                  v[0], v[1], v[2], dlen3(eh), d[0] / dt, d[1] / dt, d[2] / dt, tol);
         if (!m->grounded0 && !grounded1 && fabs(eup) > tol)
-            FAIL(SOAK_FAIL_VELOCITY, "airborne, along up: velocity %.3f m/s but displacement/dt %.3f m/s (tol %.3f)",
-                 v[0] * up[0] + v[1] * up[1] + v[2] * up[2], dup / dt, tol);
+            FAIL(SOAK_FAIL_VELOCITY, "airborne, along up %s: velocity %.3f m/s but displacement/dt %.3f m/s (tol %.3f)",
+                 fabs(vu) <= tol ? "[moved while still]" : fabs(dup / dt) <= tol ? "[still while moving]" : "[other]", vu,
+                 dup / dt, tol);
     }
     /* (d) support */
     if (!excused && dlen3(d) <= SOAK_REST_MOVE) sim->rest_frames++;
