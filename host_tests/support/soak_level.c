@@ -133,6 +133,10 @@ typedef struct {
     soak_level_t *l;
     soak_piece_t *p;
     int err;
+    /* generator 2: the character this level's soak run uses (soak_settings_random from the
+     * same level seed, as soak_main draws it), so cracks, slots and risers are sized
+     * against its radius, step height and floor angle */
+    double radius, step, max_angle_deg;
 } bld_t;
 
 static uint32_t b_vert(bld_t *b, dv3 v)
@@ -271,7 +275,7 @@ static void gen_geometry(bld_t *b, soak_rng_t *r, int kind)
          * wide (skewed towards narrow: 1.5 x radius for radii 0.1 .. 1), sometimes with a
          * 1-20 mm height mismatch */
         double hgt = soak_rng_range(r, 0.03, 0.5), u = soak_rng_unit(r);
-        double g = 0.005 + 1.495 * u * u * u;
+        double g = 0.005 + (1.5 * b->radius - 0.005) * u * u * u; /* 0.5 cm .. 1.5 r, mostly narrow */
         double l1 = soak_rng_range(r, 1, 5), l2 = soak_rng_range(r, 1, 5), w = soak_rng_range(r, 1.5, 6);
         double dh = soak_rng_chance(r, 0.3) ? soak_rng_range(r, 0.001, 0.02) : 0.0;
         if (soak_rng_chance(r, 0.5)) dh = -dh;
@@ -282,7 +286,10 @@ static void gen_geometry(bld_t *b, soak_rng_t *r, int kind)
     case K_VSLOT: {
         /* a V valley: two walkable 35-44 degree slopes facing each other whose bottom
          * edges leave a 10-15 cm slot, y0 deep down to the room floor */
-        double a1 = soak_rng_range(r, 35, 44) * (SOAK_PI / 180.0), a2 = soak_rng_range(r, 35, 44) * (SOAK_PI / 180.0);
+        /* walkable for this level's character: at most its floor angle - 1 degree */
+        double amax = b->max_angle_deg - 1.0 < 44.0 ? b->max_angle_deg - 1.0 : 44.0;
+        double amin = amax < 35.0 ? amax - 9.0 : 35.0;
+        double a1 = soak_rng_range(r, amin, amax) * (SOAK_PI / 180.0), a2 = soak_rng_range(r, amin, amax) * (SOAK_PI / 180.0);
         double slot = soak_rng_range(r, 0.10, 0.15), y0 = soak_rng_range(r, 0.1, 0.6);
         double run = soak_rng_range(r, 1, 4), w = soak_rng_range(r, 1.5, 6);
         for (int side = 0; side < 2; side++) {
@@ -332,9 +339,11 @@ static void gen_geometry(bld_t *b, soak_rng_t *r, int kind)
         break;
     }
     case K_STAIRS2: {
-        /* a regular staircase: treads 0.25-0.45 m, equal risers 0.05-0.35 m */
+        /* a regular staircase: treads 0.25-0.45 m, equal risers of 30-100 % of the step
+         * height (5-35 cm when the step is under 2 cm) */
         int n = 3 + (int)soak_rng_below(r, 10);
-        double tread = soak_rng_range(r, 0.25, 0.45), rise = soak_rng_range(r, 0.05, 0.35);
+        double tread = soak_rng_range(r, 0.25, 0.45);
+        double rise = b->step >= 0.02 ? soak_rng_range(r, 0.3, 1.0) * b->step : soak_rng_range(r, 0.05, 0.35);
         double w = soak_rng_range(r, 1, 4), len = tread * n;
         for (int k = 0; k < n; k++) b_box(b, v3(k * tread, 0, -w / 2), v3(len, (k + 1) * rise, w / 2));
         break;
@@ -436,7 +445,17 @@ int soak_level_generate_v(soak_level_t *l, uint64_t seed, int gen)
     l->npieces = l->nbodies = l->nverts = l->ntris = l->nwtris = 0;
     l->pool_used = 0;
     coll_scene_init(&l->scene);
-    bld_t b = {l, NULL, 0};
+    bld_t b = {l, NULL, 0, 0.5, 0.25, 45.0};
+    if (gen >= 2) {
+        soak_rng_t sr;
+        soak_rng_seed(&sr, soak_mix64(seed ^ 0x5E77ull)); /* soak_main's settings stream */
+        char_body_settings_t hint;
+        fm_vec3_t unused;
+        soak_settings_random(&sr, &hint, &unused);
+        b.radius = hint.radius;
+        b.step = hint.step_height;
+        b.max_angle_deg = (double)hint.floor_max_angle * (180.0 / SOAK_PI);
+    }
     const double H = SOAK_ROOM_HALF, Y = SOAK_ROOM_HEIGHT;
 
     /* The room: floor grid (the lowest floor), four walls and a ceiling. Closed, so the
