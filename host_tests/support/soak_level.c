@@ -1,8 +1,11 @@
-/* Soak harness: PRNG, deterministic trig and the random level generator.
+/* Soak harness: PRNG, deterministic trig, the random level generator (versions 1 and 2)
+ * and loaded (baked, real) levels with their spawn points.
  * Generation is done in double with +-*÷ and sqrt only (no libm trig), so a seed gives
  * bit-identical levels on every IEEE platform (x86-64, big-endian MIPS under qemu). */
 #include "soak_sim.h"
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ------------------------------------------------------------------ PRNG */
@@ -689,8 +692,6 @@ void soak_settings_random(soak_rng_t *r, char_body_settings_t *s, fm_vec3_t *sta
 }
 
 /* ------------------------------------------------------------------ loaded (real) levels */
-#include <stdio.h>
-#include <stdlib.h>
 
 static uint32_t le32(const unsigned char *p)
 {

@@ -12,8 +12,10 @@
  *                    Generation uses double arithmetic and our own sin/cos only, so a seed
  *                    gives bit-identical levels on x86-64 and big-endian MIPS.
  *  - soak_play_*     random per-frame play (inputs, jumps, teleports, up changes, dt, NaN).
- *  - soak_check_*    independent double-precision brute-force property checker.
- *  - soak_sim_*      runs a body on a level frame by frame and classifies property failures.
+ *  - soak_check_*    independent double-precision brute-force property checker, and the
+ *                    geometry of the behaviour oracles (footing, free flat floor, support).
+ *  - soak_sim_*      runs a body on a level frame by frame and classifies property failures
+ *                    (state checks, then the behaviour oracles: soak_sim_check_motion).
  *  - soak_replay_*   text replay files (hex floats) with per-architecture expected states.
  *
  * Every non-static symbol starts with soak_ (this file's objects are linked into every
