@@ -473,6 +473,42 @@ static void test_quantized_blobs_stay_within_the_reported_error(void)
     }
 }
 
+/* collbake's Quake III BSP reader and loss rule (tools/collbake/test_bsp.sh, ASan build):
+ * the tiny generated BSP bakes to the expected triangles and bounds, every broken copy is
+ * refused with an ERROR line naming the file, random corruption never crashes, and a bake
+ * keeping under half its input triangles is refused. */
+static void test_bsp_reader_and_loss_rule(void)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/bsp/results.tsv", asset_dir());
+    size_t size = 0;
+    char *txt = read_file(path, &size);
+    TEST_ASSERT_NOT_NULL_MESSAGE(txt, "no BSP test results (make bsp-test)");
+    char *t = realloc(txt, size + 1);
+    TEST_ASSERT_NOT_NULL(t);
+    t[size] = 0;
+    int ok = 0, bad = 0, refused = 0;
+    bool good = false, loss = false;
+    char *save = NULL;
+    for (char *line = strtok_r(t, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        if (strncmp(line, "ok\t", 3) == 0) {
+            ok++;
+            if (strncmp(line + 3, "good\t", 5) == 0) good = true;
+            if (strncmp(line + 3, "loss_rule\t", 10) == 0) loss = true;
+            if (strncmp(line + 3, "bad_", 4) == 0) refused++;
+        } else {
+            printf("%s\n", line);
+            bad++;
+        }
+    }
+    free(t);
+    printf("BSP reader: %d checks ok (%d broken files refused), %d failed\n", ok, refused, bad);
+    TEST_ASSERT_TRUE(good);
+    TEST_ASSERT_TRUE(loss);
+    TEST_ASSERT_TRUE(refused >= 20);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, "BSP checks failed (listed above)");
+}
+
 /* assimp-testmodels and the must-refuse inputs: no crash, every baked blob loads. */
 static void test_testmodels_bake_and_load_or_are_refused(void)
 {
@@ -553,5 +589,6 @@ int main(void)
     RUN_TEST(test_raycasts_agree_with_in_memory_build_and_brute_force);
     RUN_TEST(test_quantized_blobs_stay_within_the_reported_error);
     RUN_TEST(test_testmodels_bake_and_load_or_are_refused);
+    RUN_TEST(test_bsp_reader_and_loss_rule);
     return UNITY_END();
 }

@@ -61,6 +61,21 @@ static void assert_same_bits(const fm_vec3_t *a, const fm_vec3_t *b, const char 
             TEST_FAIL_MESSAGE(msg);
         }
     }
+    /* generator version 2 (cracks, slots, tiles, overhangs, staircases); version 1 above
+     * must stay as it is: replays without a `gen` line regenerate their level with it */
+    static const struct { uint64_t seed, hash; } ref2[] = {
+        {1, 0x1cf74c5cc5811629ull}, {2, 0x82540a32be551c5eull}, {0xDEADBEEFull, 0x98fa62cb41e44f05ull},
+    };
+    for (unsigned i = 0; i < sizeof ref2 / sizeof ref2[0]; i++) {
+        TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl_a, ref2[i].seed, SOAK_GEN_CURRENT));
+        uint64_t h = soak_level_hash(&lvl_a);
+        if (h != ref2[i].hash) {
+            char msg[120];
+            snprintf(msg, sizeof msg, "gen 2 seed %llu: level hash 0x%016llxull", (unsigned long long)ref2[i].seed,
+                     (unsigned long long)h);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
 }
 
 static void test_prng_is_splitmix64(void)

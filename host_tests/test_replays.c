@@ -169,6 +169,197 @@ static void test_checker_allowance_follows_the_seed_rule(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-6, expect_raw, ex);
 }
 
+/* ---------------------------------------------------------------- the behaviour oracles */
+
+static soak_sim_t osim;
+
+/* The room only, one body (r 0.5, height 2, step 0.25, snap 0.3, foot at the owner origin)
+ * standing at the origin; only the oracle under test enabled. */
+static char_body_t *oracle_setup(uint32_t oracle)
+{
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate(&lvl, 3));
+    lvl.nwtris = lvl.pieces[0].ntris;
+    lvl.npieces = 1;
+    lvl.nbodies = 0;
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.center_offset.y = 1.0f;
+    fm_vec3_t start = {{0.0f, 0.0f, 0.0f}};
+    soak_sim_begin(&osim, &lvl, &s, start);
+    osim.excused = false;
+    osim.oracles = 1u << oracle;
+    char_body_t *b = &osim.body;
+    b->flags = CB_FLAG_GROUNDED; b->floor_id = 1;
+    b->floor_normal.x = 0.0f; b->floor_normal.y = 1.0f; b->floor_normal.z = 0.0f;
+    return b;
+}
+
+/* One hand-made step from p0 to p1 (owner positions), reported velocity v1. */
+static int oracle_step(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t v1, fm_vec3_t input, bool grounded0, bool steep0,
+                       bool excuse)
+{
+    soak_motion_t m;
+    memset(&m, 0, sizeof m);
+    m.pos0 = p0; m.pos1 = p1; m.vel1 = v1; m.input = input; m.dt = 1.0f / 60;
+    m.grounded0 = grounded0; m.steep0 = steep0; m.excuse = excuse;
+    osim.owner = p1;
+    osim.body.velocity = v1;
+    return soak_sim_check_motion(&osim, &m);
+}
+
+static fm_vec3_t V(float x, float y, float z) { fm_vec3_t v = {{x, y, z}}; return v; }
+
+static void test_oracle_direction(void)
+{
+    oracle_setup(SOAK_FAIL_DIRECTION);
+    fm_vec3_t o = V(0, 0, 0), in = V(1, 0, 0), z = V(0, 0, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0166f, 0, 0), z, in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0, 0, 0.05f), z, in, true, false, false));   /* sideways */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.0009f, 0, 0), z, in, true, false, false)); /* < 1 mm back */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_DIRECTION, oracle_step(o, V(-0.002f, 0, 0), z, in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.002f, 0.3f, 0), z, V(0, 0, 0), true, false, false)); /* no input */
+    /* not on walkable ground, or a game-caused move: no verdict */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.1f, 0, 0), z, in, false, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.1f, 0, 0), z, in, true, true, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.1f, 0, 0), z, in, true, false, true));
+    /* the along-up part does not count (stair lift, snap) */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0f, -0.2f, 0), z, in, true, false, false));
+}
+
+static void test_oracle_progress(void)
+{
+    oracle_setup(SOAK_FAIL_PROGRESS);
+    const char_body_settings_t *s = &osim.body.settings;
+    fm_vec3_t o = V(0, 0, 0), in = V(2, 0, 0), z = V(0, 0, 0); /* 33.3 mm per 1/60 s */
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, o, V(0.0333f, 0, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0333f, 0, 0), z, in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0302f, 0, 0), z, in, true, false, false)); /* 90.6 % */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_PROGRESS, oracle_step(o, V(0.0290f, 0, 0), z, in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_PROGRESS, oracle_step(o, V(0, 0, 0.0333f), z, in, true, false, false));
+    /* hovering 5 cm above the floor, or 2 cm short of a wall (x = 24): no verdict */
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(0, 0.05f, 0), V(0.0333f, 0, 0)));
+    fm_vec3_t w = V(23.48f, 0, 0);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, w, V(0.0333f, 0, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(w, w, z, in, true, false, false));
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, w, V(-0.0333f, 0, 0)));   /* away from it */
+    /* a 5 cm crack across the way: not flat */
+    static const double q[2][4][3] = {{{-5, 0, -5}, {0.01, 0, -5}, {0.01, 0, 5}, {-5, 0, 5}},
+                                      {{0.06, 0, -5}, {5, 0, -5}, {5, 0, 5}, {0.06, 0, 5}}};
+    for (int k = 0; k < 4; k++) {
+        soak_wtri_t *t = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
+        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
+        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
+        t->rad = 10; t->mask = 1;
+    }
+    lvl.nwtris = 4;
+    lvl.npieces = 0;
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-2, 0, 0), V(0.0333f, 0, 0)));
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(-0.01f, 0, 0), V(0.0333f, 0, 0)));
+}
+
+/* Two floor quads at y = 0 with a gap between x = a and x = b (a < b). */
+static void two_floors(double a, double b, int both)
+{
+    const double q[2][4][3] = {{{-5, 0, -5}, {a, 0, -5}, {a, 0, 5}, {-5, 0, 5}},
+                               {{b, 0, -5}, {5, 0, -5}, {5, 0, 5}, {b, 0, 5}}};
+    int n = 0;
+    for (int k = 0; k < (both ? 4 : 2); k++) {
+        soak_wtri_t *t = &lvl.wtris[n++];
+        const double(*c)[3] = q[k / 2];
+        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
+        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
+        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
+        t->rad = 10; t->mask = 1;
+    }
+    lvl.nwtris = (uint32_t)n;
+    lvl.npieces = 0;
+}
+
+static void test_oracle_footing(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25 */
+    fm_vec3_t z = V(0, 0, 0);
+    /* on the room floor: 0.5 mm below is fine, 3 mm below fails; on it or above is fine */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.003, soak_check_footing(&lvl, s, V(0, -0.003f, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, -0.0005f, 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.003f, 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, 0.2f, 0), z, z, true, false, false));
+    /* not grounded, or an excused step: no verdict */
+    osim.body.flags = 0; osim.body.floor_id = -1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, -0.003f, 0), z, z, true, false, false));
+    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = 1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, -0.003f, 0), z, z, true, false, true));
+    /* a 20 cm crack under the foot (r 0.5): resting on both edges sags
+     * r - sqrt(r^2 - 0.1^2) = 10.1 mm; that + 0.5 mm passes, + 2 mm fails */
+    two_floors(-0.1, 0.1, 1);
+    double sag = 0.5 - sqrt(0.25 - 0.01);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(0, (float)-sag, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, (float)-(sag + 0.0005), 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, (float)-(sag + 0.002), 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0.03f, -0.2f, 0), z, z, true, false, false)); /* sunk in */
+    /* a slot off centre: the sag over the nearer edge */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0.05f, (float)-(0.5 - sqrt(0.25 - 0.0025)), 0), z, z, true, false, false));
+    /* one edge only (a ledge beside the foot, the step zone overlapping it): legitimate */
+    two_floors(-0.1, 0.1, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, -0.2f, 0), z, z, true, false, false));
+    /* a surface 0.1 m above the foot right under it (a tread not lifted onto): fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(-0.5f, -0.1f, 0), z, z, true, false, false));
+}
+
+static void test_oracle_support(void)
+{
+    char_body_t *b = oracle_setup(SOAK_FAIL_SUPPORT);
+    fm_vec3_t p = V(0, 0, 0), z = V(0, 0, 0);
+    /* at rest on the floor, grounded: fine for any time */
+    for (int i = 0; i < 40; i++) TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, p, z, z, true, false, false));
+    /* at rest on the floor, not grounded: fails on the 30th frame at rest */
+    b->flags = 0; b->floor_id = -1;
+    osim.rest_frames = 0;
+    for (int i = 1; i < SOAK_REST_FRAMES; i++) TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, p, z, z, false, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_SUPPORT, oracle_step(p, p, z, z, false, false, false));
+    /* moving resets the count; hovering 5 cm up touches nothing */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, V(0.01f, 0, 0), z, z, false, false, false));
+    TEST_ASSERT_EQUAL_INT(0, (int)osim.rest_frames);
+    fm_vec3_t h = V(0, 0.05f, 0);
+    for (int i = 0; i < 40; i++) TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(h, h, z, z, false, false, false));
+    /* touching only a wall (room wall at z = -24) at rest, airborne: no verdict */
+    TEST_ASSERT_FALSE(soak_check_touches_walkable(&lvl, &b->settings, V(0, 2, -23.5f)));
+    TEST_ASSERT_TRUE(soak_check_touches_walkable(&lvl, &b->settings, p));
+}
+
+static void test_oracle_velocity(void)
+{
+    oracle_setup(SOAK_FAIL_VELOCITY);
+    fm_vec3_t o = V(0, 1, 0), in = V(3, 0, 0);
+    /* walking: 50 mm in 1/60 s is 3 m/s */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.05f, 1, 0), V(3, 0, 0), in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0505f, 1, 0), V(3, 0, 0), in, true, false, false)); /* 0.5 mm */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_VELOCITY, oracle_step(o, V(0.05f, 1, 0), V(2, 0, 0), in, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_VELOCITY, oracle_step(o, V(0, 1, 0), V(3, 0, 0), in, true, false, false)); /* blocked, says 3 */
+    /* grounded: the along-up part is exempt (snap and stair lift move it with v_up 0) */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.05f, 1.2f, 0), V(3, 0, 0), in, true, false, false));
+    /* airborne before and after: along up too */
+    osim.body.flags = 0; osim.body.floor_id = -1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.05f, 0.99f, 0), V(3, -0.6f, 0), in, false, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_VELOCITY, oracle_step(o, V(0.05f, 0.99f, 0), V(3, 0, 0), in, false, false, false));
+    /* a game-caused move (teleport, carry, mover near) or a push-out: no verdict */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(2, 1, 0), V(3, 0, 0), in, false, false, true));
+    soak_motion_t m;
+    memset(&m, 0, sizeof m);
+    m.pos0 = o; m.pos1 = V(0.3f, 1, 0); m.vel1 = V(0, 0, 0); m.dt = 1.0f / 60; m.pen0 = true;
+    osim.owner = m.pos1; osim.body.velocity = m.vel1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &m));
+    /* dt beyond the body's 0.1 s clamp: the displacement is over 0.1 s */
+    m.pen0 = false; m.dt = 0.2f; m.vel1 = V(3, 0, 0); m.pos1 = V(0.3f, 1, 0);
+    osim.owner = m.pos1; osim.body.velocity = m.vel1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &m));
+    /* version 1 replays: no behaviour oracle */
+    osim.checks = SOAK_CHECKS_V1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0, 1, 0), V(3, 0, 0), in, true, false, false));
+}
+
 static void test_replay_format_round_trips_special_values(void)
 {
     soak_replay_t rp;
@@ -188,6 +379,8 @@ static void test_replay_format_round_trips_special_values(void)
     snprintf(rp.expect[0].arch, sizeof rp.expect[0].arch, "%s", soak_arch());
     rp.expect[0].pos.x = 1.5f; rp.expect[0].on_floor = 1;
     snprintf(rp.note, sizeof rp.note, "round trip test");
+    rp.gen = SOAK_GEN_CURRENT; rp.checks = SOAK_CHECKS_CURRENT; rp.oracles = 1u << SOAK_FAIL_FOOTING;
+    snprintf(rp.level_file, sizeof rp.level_file, "build/real/x.coll");
     char path[64];
     snprintf(path, sizeof path, "/tmp/soak_rt_%ld.replay", (long)getpid());
     TEST_ASSERT_EQUAL_INT(0, soak_replay_write(path, &rp));
@@ -213,6 +406,18 @@ static void test_replay_format_round_trips_special_values(void)
     TEST_ASSERT_EQUAL_UINT32(1, rd.nexpect);
     TEST_ASSERT_NOT_NULL(soak_replay_expect_for(&rd, soak_arch()));
     TEST_ASSERT_EQUAL_STRING("round trip test", rd.note);
+    TEST_ASSERT_EQUAL_INT(SOAK_GEN_CURRENT, rd.gen);
+    TEST_ASSERT_EQUAL_INT(SOAK_CHECKS_CURRENT, rd.checks);
+    TEST_ASSERT_EQUAL_UINT32(1u << SOAK_FAIL_FOOTING, rd.oracles);
+    TEST_ASSERT_EQUAL_STRING("build/real/x.coll", rd.level_file);
+    /* files from before the fields: generator and checks version 1 */
+    rp.gen = 0; rp.checks = 0; rp.oracles = 0; rp.level_file[0] = 0;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_write(path, &rp));
+    rc = soak_replay_read(path, &rd, &line);
+    remove(path);
+    TEST_ASSERT_EQUAL_INT(0, rc);
+    TEST_ASSERT_EQUAL_INT(SOAK_GEN_V1, rd.gen);
+    TEST_ASSERT_EQUAL_INT(SOAK_CHECKS_V1, rd.checks);
 }
 
 /* ---------------------------------------------------------------- the replays */
@@ -329,6 +534,11 @@ int main(void)
     RUN_TEST(test_checker_sees_penetration_and_floor_reach);
     RUN_TEST(test_checker_flags_bad_body_states);
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
+    RUN_TEST(test_oracle_direction);
+    RUN_TEST(test_oracle_progress);
+    RUN_TEST(test_oracle_footing);
+    RUN_TEST(test_oracle_support);
+    RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);
     RUN_TEST(test_every_replay_passes);
     RUN_TEST(test_open_replays_parse);

@@ -17,12 +17,12 @@ ASSET_DIR     := $(BUILD)/assets
 # The tests find the baked files here (they run from the repository root).
 export COLL_ASSET_DIR := $(ASSET_DIR)
 
-$(COLLBAKE): $(COLLBAKE_SRCS) $(BUILD)/host/libcoll.a src/coll/mesh_format.h
+$(COLLBAKE): $(COLLBAKE_SRCS) tools/collbake/bsp.h $(BUILD)/host/libcoll.a src/coll/mesh_format.h
 	@mkdir -p $(@D)
 	$(host_CC) $(STD) $(WARN) -Wno-double-promotion $(host_CFLAGS) $(INC) $(COLLBAKE_SRCS) \
 	    -L$(BUILD)/host -lcoll $(ASSIMP_LIBS) -lm -o $@
 
-$(COLLBAKE_ASAN): $(COLLBAKE_SRCS) $(BUILD)/asan/libcoll.a src/coll/mesh_format.h
+$(COLLBAKE_ASAN): $(COLLBAKE_SRCS) tools/collbake/bsp.h $(BUILD)/asan/libcoll.a src/coll/mesh_format.h
 	@mkdir -p $(@D)
 	$(asan_CC) $(STD) $(WARN) -Wno-double-promotion $(asan_CFLAGS) $(INC) $(COLLBAKE_SRCS) \
 	    -L$(BUILD)/asan -lcoll $(ASSIMP_LIBS) $(asan_LDFLAGS) -o $@

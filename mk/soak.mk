@@ -4,7 +4,9 @@
 #   make soak-replay REPLAY=path      reproduce one replay file (native)
 #   make soak-replay-qemu REPLAY=path the same on big-endian MIPS under qemu
 #   make soak-asan [FRAMES=N] [SEED=S] the soak under ASan + UBSan
-#   make soak-ci                      CI share: 100k frames native + 10k frames under qemu
+#   make soak-ci                      CI share: 100k frames native + 10k frames under qemu + two
+#                                     real levels (mk/real.mk) x 20k frames
+#   make soak-oracles [SOAK_ORACLE_FRAMES=N] [SEED=S]  each behaviour oracle alone, strict
 #
 # Failure replays go to $(BUILD)/soak-failures/; move them to host_tests/replays/open/
 # (still failing) or host_tests/replays/ (fixed; `soak --replay F --bless` stores the
@@ -53,12 +55,29 @@ soak-replay-qemu: $(BUILD)/qemu/soak/soak
 # CI: failures on the levels of open replays, or of the kinds listed in known_kinds.txt
 # (open bug classes), are printed as KNOWN and do not fail; anything else does.
 SOAK_CI_KINDS := --known-kinds host_tests/replays/open/known_kinds.txt
-soak-ci: $(BUILD)/host/soak/soak $(BUILD)/qemu/soak/soak
+# two real levels (mk/real.mk), 20 000 frames each
+SOAK_CI_REAL := $(REAL_DIR)/oa_dm4.coll $(REAL_DIR)/dm6ish.coll
+soak-ci: $(BUILD)/host/soak/soak $(BUILD)/qemu/soak/soak $(SOAK_CI_REAL)
 	@rc=0; \
 	$(BUILD)/host/soak/soak --frames 100000 --seed 1 --out $(SOAK_OUT) --known host_tests/replays/open $(SOAK_CI_KINDS) || rc=1; \
 	$(qemu_RUN) $(BUILD)/qemu/soak/soak --frames 10000 --seed 2 --out $(SOAK_OUT) --known host_tests/replays/open $(SOAK_CI_KINDS) || rc=1; \
+	for l in $(SOAK_CI_REAL); do \
+	  echo "=== soak-ci real level $$l"; \
+	  $(BUILD)/host/soak/soak --level $$l --bodies 8 --frames 20000 --seed 1 --out $(SOAK_OUT)/real $(SOAK_CI_KINDS) || rc=1; \
+	done; \
 	if [ $$rc != 0 ]; then echo "soak-ci: new failures; replays in $(SOAK_OUT) (see docs/RELIABILITY.md)"; fi; \
 	exit $$rc
+
+# The behaviour oracles alone, strict (no kind list), one run per oracle so that each
+# gets its own count (a level stops at its first failure): the issue-12 status.
+SOAK_ORACLE_FRAMES ?= 100000
+.PHONY: soak-oracles
+soak-oracles: $(BUILD)/host/soak/soak
+	@mkdir -p $(SOAK_OUT); rc=0; for o in direction progress footing support velocity; do \
+	  echo "=== oracle $$o"; \
+	  $< --frames $(SOAK_ORACLE_FRAMES) --seed $(or $(SEED),1) --oracles $$o --out $(SOAK_OUT)/oracle-$$o --max-replays 10 \
+	    > $(SOAK_OUT)/oracle-$$o.log; [ $$? = 0 ] || rc=1; grep -E '^soak: ' $(SOAK_OUT)/oracle-$$o.log; \
+	done; exit $$rc
 
 # Store this build's final state in every regression replay, native and MIPS (after an
 # intended behaviour change of the character body; review the diff of the expect lines).

@@ -312,3 +312,207 @@ double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s
     }
     return best - cap->r;
 }
+
+/* ------------------------------------------------------------------ behaviour oracles */
+
+void soak_capsules_at(const char_body_settings_t *s, fm_vec3_t o, soak_capsule_t *full, soak_capsule_t *sweep)
+{
+    double c[3] = {(double)o.x + s->center_offset.x, (double)o.y + s->center_offset.y,
+                   (double)o.z + s->center_offset.z};
+    double up[3] = {s->up.x, s->up.y, s->up.z};
+    double h = (double)s->height * 0.5 - s->radius;
+    if (h < 0) h = 0;
+    double step = s->step_height;
+    for (int k = 0; k < 3; k++) {
+        full->a[k] = c[k] - up[k] * h;
+        full->b[k] = c[k] + up[k] * h;
+        sweep->a[k] = c[k] - up[k] * (h - step);
+        sweep->b[k] = full->b[k];
+    }
+    full->r = sweep->r = s->radius;
+}
+
+/* Unit normal of w oriented along up (n.up >= 0); false for a degenerate triangle. */
+static bool tri_normal_up(const soak_wtri_t *w, const double up[3], double n[3])
+{
+    double e1[3], e2[3];
+    sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
+    cross3(n, e1, e2);
+    double l = sqrt(dot3(n, n));
+    if (!(l > 0)) return false;
+    if (dot3(n, up) < 0) l = -l;
+    for (int k = 0; k < 3; k++) n[k] /= l;
+    return true;
+}
+
+/* Walkable (collision is double-sided: either face) and the seed's slope allowance of the
+ * sweep capsule's bottom ball, as a height along up (0 on flat floors or when the seed's
+ * rule holds). */
+static bool tri_walkable(const soak_wtri_t *w, const char_body_settings_t *s, const double up[3], double n[3],
+                         double *allow_up)
+{
+    if (!tri_normal_up(w, up, n)) return false;
+    double cs = dot3(n, up);
+    if (cs < cos((double)s->floor_max_angle) - 1e-4) return false;
+    double a = (double)s->radius - ((double)s->radius + s->step_height) * cs;
+    *allow_up = a > 0 ? a / cs : 0;
+    return true;
+}
+
+static void foot_point(const char_body_settings_t *s, fm_vec3_t owner, double up[3], double f[3], double *r)
+{
+    soak_capsule_t full, sweep;
+    soak_capsules_at(s, owner, &full, &sweep);
+    up[0] = s->up.x; up[1] = s->up.y; up[2] = s->up.z;
+    for (int k = 0; k < 3; k++) f[k] = full.a[k] - up[k] * full.r;
+    *r = full.r;
+}
+
+static double pt_tri_dist(const double p[3], const soak_wtri_t *w)
+{
+    double c[3];
+    closest_pt_tri(c, p, w->v[0], w->v[1], w->v[2]);
+    return dist3(c, p);
+}
+
+int32_t soak_footing_tri = -1; /* the triangle of the last soak_check_footing result (diagnosis) */
+
+double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
+{
+    soak_footing_tri = -1;
+    double up[3], f[3], r;
+    foot_point(s, owner, up, f, &r);
+    const double step = s->step_height, below = (double)s->floor_snap_distance + 2 * r;
+    /* 1. the surface directly under the foot: the highest walkable triangle the line along
+     *    up through the foot crosses, from snap + 2r below to step_height + 1 mm above
+     *    (higher than the step zone it would be inside the sweep capsule: penetration) */
+    bool found = false;
+    double z1 = -1e300, ex1 = 0;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(f, w->c) > w->rad + below + step + r) continue;
+        double n[3], allow;
+        if (!tri_walkable(w, s, up, n, &allow)) continue;
+        double d[3];
+        sub3(d, w->v[0], f);
+        double t = dot3(n, d) / dot3(n, up);
+        if (!(t >= -below && t <= step + SOAK_FOOT_TOL)) continue;
+        double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
+        if (pt_tri_dist(x, w) > 1e-9) continue;
+        if (!found || t > z1) z1 = t;
+        if (!found || t - allow > ex1) { ex1 = t - allow; if (ex1 > 0) soak_footing_tri = (int32_t)i; }
+        found = true;
+    }
+    /* 2. a crack or slot narrower than the capsule: walkable triangles on opposite sides
+     *    of the foot (their closest points to the bottom ball centre point in directions
+     *    across up more than 120 degrees apart) that the bottom ball overlaps. Resting on
+     *    both edges the foot sags r - sqrt(r^2 - (g/2)^2) below them over a gap g, and no
+     *    more: for each such triangle the excess is how far the ball must be raised along
+     *    up to clear it (the sag is thereby allowed exactly); a pair fails by the smaller
+     *    of its two excesses. One-sided overlaps (a ledge or tread edge in the step zone
+     *    beside the foot) are legitimate and not counted. */
+    double bc[3] = {f[0] + up[0] * r, f[1] + up[1] * r, f[2] + up[2] * r};
+    enum { MAXC = 64 };
+    double cu[MAXC][3], cex[MAXC];
+    int32_t ctri[MAXC];
+    int nc = 0;
+    for (uint32_t i = 0; i < lvl->nwtris && nc < MAXC; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(bc, w->c) > w->rad + r) continue;
+        double n[3], allow;
+        if (!tri_walkable(w, s, up, n, &allow)) continue;
+        double c[3], d[3];
+        closest_pt_tri(c, bc, w->v[0], w->v[1], w->v[2]);
+        if (dist3(c, bc) >= r) continue;
+        sub3(d, bc, w->v[0]);
+        if (dot3(n, d) <= 0) continue; /* ball centre below its plane: not resting on it */
+        sub3(d, c, bc);
+        double du = dot3(d, up), dh[3] = {d[0] - up[0] * du, d[1] - up[1] * du, d[2] - up[2] * du};
+        double l = sqrt(dot3(dh, dh));
+        if (l < 1e-6) continue; /* right under the ball centre: case 1's business */
+        double lo = 0, hi = step + r + 0.01, p[3];
+        for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * hi;
+        if (pt_tri_dist(p, w) < r) continue; /* not cleared by any raise in range */
+        for (int it = 0; it < 40; it++) {
+            double mid = 0.5 * (lo + hi);
+            for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * mid;
+            if (pt_tri_dist(p, w) >= r) hi = mid; else lo = mid;
+        }
+        for (int k = 0; k < 3; k++) cu[nc][k] = dh[k] / l;
+        cex[nc] = hi - allow;
+        ctri[nc] = (int32_t)i;
+        nc++;
+    }
+    double worst = ex1 > 0 ? ex1 : 0;
+    for (int i = 0; i < nc; i++)
+        for (int j = i + 1; j < nc; j++) {
+            if (dot3(cu[i], cu[j]) > -0.5) continue;
+            double ex = cex[i] < cex[j] ? cex[i] : cex[j];
+            if (ex > worst) { worst = ex; soak_footing_tri = ctri[cex[i] < cex[j] ? i : j]; }
+        }
+    return worst;
+}
+
+bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp)
+{
+    const double h0 = 0.01, below = 0.002;
+    double len = sqrt((double)disp.x * disp.x + (double)disp.y * disp.y + (double)disp.z * disp.z);
+    double r = s->radius;
+    int n = (int)ceil(len / (0.5 * r)) + 1;
+    if (n > 64 || !(len > 0)) return false;
+    for (int k = 0; k <= n; k++) {
+        double t = (double)k / n;
+        fm_vec3_t p, q;
+        for (int j = 0; j < 3; j++) {
+            double base = (double)owner.v[j] + (double)disp.v[j] * t;
+            p.v[j] = (float)(base + s->up.v[j] * h0);
+            q.v[j] = (float)(base - s->up.v[j] * below);
+        }
+        soak_capsule_t full, sweep;
+        /* raised by 1 cm: nothing (floor included) within 9 mm: no wall, bump or slope */
+        soak_capsules_at(s, p, &full, &sweep);
+        if (soak_check_nearest(lvl, s, &full) < h0 - 1e-3) return false;
+        /* lowered by 2 mm: the floor is there (no hole, crack wider than a hair, or drop) */
+        soak_capsules_at(s, q, &full, &sweep);
+        if (!(soak_check_nearest(lvl, s, &full) < 0)) return false;
+        /* and it is a static walkable triangle right under the foot point */
+        double up[3], f[3], rr;
+        foot_point(s, q, up, f, &rr);
+        bool under = false;
+        for (uint32_t i = 0; i < lvl->nwtris && !under; i++) {
+            const soak_wtri_t *w = &lvl->wtris[i];
+            if (!tri_seen(w->mask, s) || dist3(f, w->c) > w->rad + 0.01) continue;
+            double nn[3], allow;
+            if (!tri_walkable(w, s, up, nn, &allow)) continue;
+            double d[3];
+            sub3(d, w->v[0], f);
+            double tt = dot3(nn, d) / dot3(nn, up);
+            if (!(tt >= -0.005 && tt <= 0.005)) continue;
+            double x[3] = {f[0] + up[0] * tt, f[1] + up[1] * tt, f[2] + up[2] * tt};
+            if (pt_tri_dist(x, w) <= 1e-9) under = true;
+        }
+        if (!under) return false;
+    }
+    return true;
+}
+
+bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
+{
+    soak_capsule_t full, sweep;
+    soak_capsules_at(s, owner, &full, &sweep);
+    double up[3] = {s->up.x, s->up.y, s->up.z}, r = full.r;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(full.a, w->c) > w->rad + r + 0.01) continue;
+        double n[3], allow;
+        if (!tri_walkable(w, s, up, n, &allow)) continue;
+        double c[3], d[3];
+        closest_pt_tri(c, full.a, w->v[0], w->v[1], w->v[2]);
+        sub3(d, full.a, c);
+        if (dot3(d, up) > 1e-6 && dist3(c, full.a) <= r + 1e-3) return true;
+    }
+    return false;
+}

@@ -1,8 +1,11 @@
-/* Soak harness: PRNG, deterministic trig and the random level generator.
+/* Soak harness: PRNG, deterministic trig, the random level generator (versions 1 and 2)
+ * and loaded (baked, real) levels with their spawn points.
  * Generation is done in double with +-*÷ and sqrt only (no libm trig), so a seed gives
  * bit-identical levels on every IEEE platform (x86-64, big-endian MIPS under qemu). */
 #include "soak_sim.h"
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ------------------------------------------------------------------ PRNG */
@@ -125,12 +128,18 @@ static dv3 rand_unit(soak_rng_t *r)
 }
 
 /* ------------------------------------------------------------------ builder */
-enum { K_ROOM, K_BOX, K_RAMP, K_STAIRS, K_WALL, K_VCORNER, K_SOUP, K_SLAB, K_OVERLAP, K_PLATFORM };
+enum { K_ROOM, K_BOX, K_RAMP, K_STAIRS, K_WALL, K_VCORNER, K_SOUP, K_SLAB, K_OVERLAP, K_PLATFORM,
+       /* generator version 2 (issue 12: real-world geometry) */
+       K_CRACK, K_VSLOT, K_TILES, K_OVERHANG, K_STAIRS2 };
 
 typedef struct {
     soak_level_t *l;
     soak_piece_t *p;
     int err;
+    /* generator 2: the character this level's soak run uses (soak_settings_random from the
+     * same level seed, as soak_main draws it), so cracks, slots and risers are sized
+     * against its radius, step height and floor angle */
+    double radius, step, max_angle_deg;
 } bld_t;
 
 static uint32_t b_vert(bld_t *b, dv3 v)
@@ -263,6 +272,85 @@ static void gen_geometry(bld_t *b, soak_rng_t *r, int kind)
         }
         break;
     }
+    /* ---- generator version 2 ---- */
+    case K_CRACK: {
+        /* two floor pieces (boxes, tops at hgt) with a crack between them, 0.5 cm .. 1.5 m
+         * wide (skewed towards narrow: 1.5 x radius for radii 0.1 .. 1), sometimes with a
+         * 1-20 mm height mismatch */
+        double hgt = soak_rng_range(r, 0.03, 0.5), u = soak_rng_unit(r);
+        double g = 0.005 + (1.5 * b->radius - 0.005) * u * u * u; /* 0.5 cm .. 1.5 r, mostly narrow */
+        double l1 = soak_rng_range(r, 1, 5), l2 = soak_rng_range(r, 1, 5), w = soak_rng_range(r, 1.5, 6);
+        double dh = soak_rng_chance(r, 0.3) ? soak_rng_range(r, 0.001, 0.02) : 0.0;
+        if (soak_rng_chance(r, 0.5)) dh = -dh;
+        b_box(b, v3(-g / 2 - l1, 0, -w / 2), v3(-g / 2, hgt, w / 2));
+        b_box(b, v3(g / 2, 0, -w / 2), v3(g / 2 + l2, hgt + dh, w / 2));
+        break;
+    }
+    case K_VSLOT: {
+        /* a V valley: two walkable 35-44 degree slopes facing each other whose bottom
+         * edges leave a 10-15 cm slot, y0 deep down to the room floor */
+        /* walkable for this level's character: at most its floor angle - 1 degree */
+        double amax = b->max_angle_deg - 1.0 < 44.0 ? b->max_angle_deg - 1.0 : 44.0;
+        double amin = amax < 35.0 ? amax - 9.0 : 35.0;
+        double a1 = soak_rng_range(r, amin, amax) * (SOAK_PI / 180.0), a2 = soak_rng_range(r, amin, amax) * (SOAK_PI / 180.0);
+        double slot = soak_rng_range(r, 0.10, 0.15), y0 = soak_rng_range(r, 0.1, 0.6);
+        double run = soak_rng_range(r, 1, 4), w = soak_rng_range(r, 1.5, 6);
+        for (int side = 0; side < 2; side++) {
+            double a = side ? a2 : a1, sg = side ? 1.0 : -1.0, x0 = sg * slot / 2, x1 = sg * (slot / 2 + run);
+            double top = y0 + run * soak_sin(a) / soak_cos(a);
+            dv3 p0 = v3(x0, y0, -w / 2), p1 = v3(x0, y0, w / 2), p2 = v3(x1, top, w / 2), p3 = v3(x1, top, -w / 2);
+            dv3 q0 = v3(x0, 0, -w / 2), q1 = v3(x0, 0, w / 2), q2 = v3(x1, 0, w / 2), q3 = v3(x1, 0, -w / 2);
+            b_quad(b, p0, p1, p2, p3);      /* slope */
+            b_quad(b, q0, q1, p1, p0);      /* slot wall */
+            b_quad(b, q3, q2, p2, p3);      /* back */
+            b_quad(b, q0, p0, p3, q3);      /* ends */
+            b_quad(b, q1, q2, p2, p1);
+        }
+        break;
+    }
+    case K_TILES: {
+        /* modular floor tiles: nx x nz thin boxes with 0-2 cm gaps and 1-20 mm height
+         * mismatches */
+        int nx = 2 + (int)soak_rng_below(r, 5), nz = 2 + (int)soak_rng_below(r, 5);
+        double ts = soak_rng_range(r, 0.5, 2), th = soak_rng_range(r, 0.02, 0.3);
+        double gap = soak_rng_chance(r, 0.3) ? 0.0 : soak_rng_range(r, 0.002, 0.02);
+        for (int iz = 0; iz < nz; iz++)
+            for (int ix = 0; ix < nx; ix++) {
+                double dh = soak_rng_chance(r, 0.5) ? soak_rng_range(r, 0.001, 0.02) : 0.0;
+                if (soak_rng_chance(r, 0.5)) dh = -dh;
+                double x0 = ix * (ts + gap), z0 = iz * (ts + gap);
+                b_box(b, v3(x0, 0, z0), v3(x0 + ts, th + dh, z0 + ts));
+            }
+        break;
+    }
+    case K_OVERHANG: {
+        if (soak_rng_chance(r, 0.5)) {
+            /* a low ledge: a slab on a wall, its underside hc above the floor */
+            double hc = soak_rng_range(r, 0.3, 2.5), t = soak_rng_range(r, 0.05, 0.4);
+            double d = soak_rng_range(r, 0.5, 3), w = soak_rng_range(r, 1.5, 6);
+            b_box(b, v3(-0.3, 0, -w / 2), v3(0, hc + t, w / 2));
+            b_box(b, v3(0, hc, -w / 2), v3(d, hc + t, w / 2));
+        } else {
+            /* a single-sided ramp: one quad from the floor up at 8-40 degrees, nothing
+             * under it: its low edge and the floor form an acute wedge */
+            double ang = soak_rng_range(r, 8, 40) * (SOAK_PI / 180.0), len = soak_rng_range(r, 1, 5);
+            double w = soak_rng_range(r, 1, 5), y0 = soak_rng_chance(r, 0.5) ? 0.0 : soak_rng_range(r, 0.001, 0.05);
+            double hgt = y0 + len * soak_sin(ang);
+            double run = len * soak_cos(ang);
+            b_quad(b, v3(0, y0, -w / 2), v3(0, y0, w / 2), v3(run, hgt, w / 2), v3(run, hgt, -w / 2));
+        }
+        break;
+    }
+    case K_STAIRS2: {
+        /* a regular staircase: treads 0.25-0.45 m, equal risers of 30-100 % of the step
+         * height (5-35 cm when the step is under 2 cm) */
+        int n = 3 + (int)soak_rng_below(r, 10);
+        double tread = soak_rng_range(r, 0.25, 0.45);
+        double rise = b->step >= 0.02 ? soak_rng_range(r, 0.3, 1.0) * b->step : soak_rng_range(r, 0.05, 0.35);
+        double w = soak_rng_range(r, 1, 4), len = tread * n;
+        for (int k = 0; k < n; k++) b_box(b, v3(k * tread, 0, -w / 2), v3(len, (k + 1) * rise, w / 2));
+        break;
+    }
     case K_SOUP: {
         int n = 5 + (int)soak_rng_below(r, 36);
         double ext = soak_rng_range(r, 1, 4);
@@ -345,15 +433,32 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
     }
 }
 
-int soak_level_generate(soak_level_t *l, uint64_t seed)
+int soak_level_generate(soak_level_t *l, uint64_t seed) { return soak_level_generate_v(l, seed, SOAK_GEN_V1); }
+
+int soak_level_generate_v(soak_level_t *l, uint64_t seed, int gen)
 {
     soak_rng_t r;
+    if (gen < SOAK_GEN_V1 || gen > SOAK_GEN_CURRENT) return -8;
     soak_rng_seed(&r, soak_mix64(seed ^ 0x5EEDF00Dull));
     l->seed = seed;
+    l->gen = gen;
+    l->loaded = false;
+    l->file[0] = 0;
+    l->wtris = l->wtris_store;
     l->npieces = l->nbodies = l->nverts = l->ntris = l->nwtris = 0;
     l->pool_used = 0;
     coll_scene_init(&l->scene);
-    bld_t b = {l, NULL, 0};
+    bld_t b = {l, NULL, 0, 0.5, 0.25, 45.0};
+    if (gen >= 2) {
+        soak_rng_t sr;
+        soak_rng_seed(&sr, soak_mix64(seed ^ 0x5E77ull)); /* soak_main's settings stream */
+        char_body_settings_t hint;
+        fm_vec3_t unused;
+        soak_settings_random(&sr, &hint, &unused);
+        b.radius = hint.radius;
+        b.step = hint.step_height;
+        b.max_angle_deg = (double)hint.floor_max_angle * (180.0 / SOAK_PI);
+    }
     const double H = SOAK_ROOM_HALF, Y = SOAK_ROOM_HEIGHT;
 
     /* The room: floor grid (the lowest floor), four walls and a ceiling. Closed, so the
@@ -372,7 +477,12 @@ int soak_level_generate(soak_level_t *l, uint64_t seed)
     for (int i = 0; i < nstatic; i++) {
         static const int kinds[] = {K_BOX, K_BOX, K_RAMP, K_RAMP, K_STAIRS, K_STAIRS, K_WALL,
                                     K_VCORNER, K_VCORNER, K_SOUP, K_SLAB, K_OVERLAP};
-        int kind = kinds[soak_rng_below(&r, (uint32_t)(sizeof kinds / sizeof kinds[0]))];
+        /* version 2: half of the pieces are the real-world shapes of issue 12 */
+        static const int kinds2[] = {K_BOX, K_RAMP, K_STAIRS, K_WALL, K_VCORNER, K_SOUP, K_SLAB, K_OVERLAP,
+                                     K_CRACK, K_CRACK, K_VSLOT, K_VSLOT, K_TILES, K_TILES, K_OVERHANG,
+                                     K_OVERHANG, K_STAIRS2, K_STAIRS2};
+        int kind = gen >= 2 ? kinds2[soak_rng_below(&r, (uint32_t)(sizeof kinds2 / sizeof kinds2[0]))]
+                            : kinds[soak_rng_below(&r, (uint32_t)(sizeof kinds / sizeof kinds[0]))];
         soak_piece_t *prev = l->npieces > 1 ? &l->pieces[l->npieces - 1] : NULL;
         if (kind == K_OVERLAP && (!prev || prev->kind == K_ROOM)) kind = K_BOX;
         b.p = new_piece(l, kind);
@@ -399,6 +509,9 @@ int soak_level_generate(soak_level_t *l, uint64_t seed)
             uint32_t mode = soak_rng_below(&r, 3);
             if (mode == 1) pos = v_add(pos, rv3(&r, -0.01, 0.01, 0, 0.002, -0.01, 0.01));
             if (mode == 2) rot = q_mul(rot, q_axis_angle(v3(0, 1, 0), soak_rng_range(&r, 0.1, 1.5)));
+        } else if (kind >= K_CRACK) {
+            /* real-world shapes stand on the room floor, upright, unscaled (a random yaw) */
+            gen_geometry(&b, &r, kind);
         } else {
             gen_geometry(&b, &r, kind);
             if (kind == K_SLAB || kind == K_SOUP || soak_rng_chance(&r, 0.15))
@@ -576,4 +689,161 @@ void soak_settings_random(soak_rng_t *r, char_body_settings_t *s, fm_vec3_t *sta
     start->x = (float)(soak_rng_range(r, -SOAK_ROOM_HALF + m, SOAK_ROOM_HALF - m) - s->center_offset.x);
     start->y = (float)(soak_rng_range(r, m, 10) - s->center_offset.y);
     start->z = (float)(soak_rng_range(r, -SOAK_ROOM_HALF + m, SOAK_ROOM_HALF - m) - s->center_offset.z);
+}
+
+/* ------------------------------------------------------------------ loaded (real) levels */
+
+static uint32_t le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+static unsigned char *read_all(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    size_t cap = 1 << 16, len = 0;
+    unsigned char *buf = NULL;
+    if (posix_memalign((void **)&buf, 16, cap) != 0) { fclose(f); return NULL; }
+    for (;;) {
+        if (len == cap) {
+            unsigned char *nb = NULL;
+            if (posix_memalign((void **)&nb, 16, cap * 2) != 0) { free(buf); fclose(f); return NULL; }
+            memcpy(nb, buf, len);
+            free(buf);
+            buf = nb;
+            cap *= 2;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) break;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) { free(buf); return NULL; }
+    *n = len;
+    return buf;
+}
+
+int soak_level_load(soak_level_t *l, const char *blob_path, const char *raw_path, char *err, size_t errlen)
+{
+    static unsigned char *blob;      /* kept for the life of the program (the mesh lives in it) */
+    static soak_wtri_t *tris;
+    size_t nb = 0, nr = 0;
+    free(blob); blob = NULL;
+    free(tris); tris = NULL;
+    l->loaded = false;
+    blob = read_all(blob_path, &nb);
+    if (!blob) { snprintf(err, errlen, "ERROR: %s: cannot read", blob_path); return -1; }
+    const coll_mesh_t *m = NULL;
+    coll_err_t e = coll_mesh_load(blob, nb, &m);
+    if (e != COLL_OK) { snprintf(err, errlen, "ERROR: %s: does not load: %s", blob_path, coll_strerror(e)); return -2; }
+    unsigned char *raw = read_all(raw_path, &nr);
+    if (!raw) { snprintf(err, errlen, "ERROR: %s: cannot read (collbake --dump-raw)", raw_path); return -3; }
+    if (nr < 16 || memcmp(raw, "CRAW", 4) != 0 || le32(raw + 4) != 1) {
+        free(raw); snprintf(err, errlen, "ERROR: %s: not a CRAW v1 file", raw_path); return -4;
+    }
+    uint32_t nv = le32(raw + 8), nt = le32(raw + 12);
+    if (nv > 0x10000000u || nt > 0x10000000u || nr != 16 + (size_t)nv * 12 + (size_t)nt * 12) {
+        free(raw); snprintf(err, errlen, "ERROR: %s: truncated or bad counts", raw_path); return -5;
+    }
+    tris = malloc((size_t)(nt ? nt : 1) * sizeof *tris);
+    if (!tris) { free(raw); snprintf(err, errlen, "ERROR: out of memory"); return -6; }
+    for (int k = 0; k < 3; k++) { l->lo[k] = 1e300; l->hi[k] = -1e300; }
+    for (uint32_t t = 0; t < nt; t++) {
+        soak_wtri_t *w = &tris[t];
+        for (int j = 0; j < 3; j++) {
+            uint32_t vi = le32(raw + 16 + (size_t)nv * 12 + ((size_t)t * 3 + (size_t)j) * 4);
+            if (vi >= nv) { free(raw); snprintf(err, errlen, "ERROR: %s: bad index", raw_path); return -7; }
+            for (int k = 0; k < 3; k++) {
+                uint32_t u = le32(raw + 16 + ((size_t)vi * 3 + (size_t)k) * 4);
+                float f;
+                memcpy(&f, &u, 4);
+                w->v[j][k] = f;
+                if (f < l->lo[k]) l->lo[k] = f;
+                if (f > l->hi[k]) l->hi[k] = f;
+            }
+        }
+        double c[3], rad = 0;
+        for (int k = 0; k < 3; k++) c[k] = (w->v[0][k] + w->v[1][k] + w->v[2][k]) / 3.0;
+        for (int j = 0; j < 3; j++) {
+            double d = sqrt((w->v[j][0] - c[0]) * (w->v[j][0] - c[0]) + (w->v[j][1] - c[1]) * (w->v[j][1] - c[1]) +
+                            (w->v[j][2] - c[2]) * (w->v[j][2] - c[2]));
+            if (d > rad) rad = d;
+        }
+        memcpy(w->c, c, sizeof c);
+        w->rad = rad;
+        w->mask = 0x01;
+    }
+    free(raw);
+    l->npieces = l->nbodies = l->nverts = l->ntris = 0;
+    l->pool_used = 0;
+    l->gen = 0;
+    coll_scene_init(&l->scene);
+    soak_piece_t *p = new_piece(l, K_ROOM);
+    p->inst.mesh = m;
+    p->bound_radius = 0;
+    l->wtris = tris;
+    l->nwtris = nt;
+    if (coll_scene_add_mesh(&l->scene, &p->inst) != COLL_OK) { snprintf(err, errlen, "ERROR: scene full"); return -8; }
+    snprintf(l->file, sizeof l->file, "%s", blob_path);
+    l->loaded = true;
+    return 0;
+}
+
+/* Candidate floor points of a loaded level: on upward-facing triangles of at least
+ * 0.25 m^2, under a roof (some triangle straight above: a ceiling or the sky's brushes, so
+ * not on the top of the map's outer shell). Found once per level (a fixed sequence). */
+#define SPAWN_CANDIDATES 512
+static struct { char file[256]; uint32_t n; double p[SPAWN_CANDIDATES][3]; } g_spawn;
+
+static bool roofed(const soak_level_t *l, const double x[3])
+{
+    for (uint32_t i = 0; i < l->nwtris; i++) {
+        const soak_wtri_t *t = &l->wtris[i];
+        if (t->v[0][1] <= x[1] || t->v[1][1] <= x[1] || t->v[2][1] <= x[1]) continue;
+        double ax = t->v[0][0] - x[0], az = t->v[0][2] - x[2], bx = t->v[1][0] - x[0], bz = t->v[1][2] - x[2];
+        double cx = t->v[2][0] - x[0], cz = t->v[2][2] - x[2];
+        double d1 = ax * bz - az * bx, d2 = bx * cz - bz * cx, d3 = cx * az - cz * ax;
+        if ((d1 > 0 && d2 > 0 && d3 > 0) || (d1 < 0 && d2 < 0 && d3 < 0)) return true;
+    }
+    return false;
+}
+
+static void spawn_candidates(const soak_level_t *l)
+{
+    if (g_spawn.n && strcmp(g_spawn.file, l->file) == 0) return;
+    snprintf(g_spawn.file, sizeof g_spawn.file, "%s", l->file);
+    g_spawn.n = 0;
+    soak_rng_t r;
+    soak_rng_seed(&r, 0x5BA3ull);
+    for (int tries = 0; tries < 20000 && g_spawn.n < SPAWN_CANDIDATES && l->nwtris > 0; tries++) {
+        const soak_wtri_t *w = &l->wtris[soak_rng_below(&r, l->nwtris)];
+        dv3 a = v3(w->v[0][0], w->v[0][1], w->v[0][2]);
+        dv3 e1 = v_sub(v3(w->v[1][0], w->v[1][1], w->v[1][2]), a), e2 = v_sub(v3(w->v[2][0], w->v[2][1], w->v[2][2]), a);
+        dv3 n = v_cross(e1, e2);
+        double area2 = v_len(n);
+        if (!(area2 > 0.5) || n.y < 0.9 * area2) continue; /* >= 0.25 m^2, facing up (+Y) */
+        double u = soak_rng_unit(&r), v = soak_rng_unit(&r);
+        if (u + v > 1) { u = 1 - u; v = 1 - v; }
+        dv3 c = v_add(a, v_add(v_scale(e1, u), v_scale(e2, v)));
+        double x[3] = {c.x, c.y + 0.05, c.z};
+        if (!roofed(l, x)) continue;
+        memcpy(g_spawn.p[g_spawn.n++], x, sizeof x);
+    }
+}
+
+fm_vec3_t soak_level_spawn(soak_rng_t *r, const soak_level_t *l, const char_body_settings_t *s)
+{
+    fm_vec3_t o = {{0.0f, 0.0f, 0.0f}};
+    spawn_candidates(l);
+    double h = 0.5 * (double)s->height;
+    for (int tries = 0; tries < 200 && g_spawn.n > 0; tries++) {
+        const double *c = g_spawn.p[soak_rng_below(r, g_spawn.n)];
+        for (int k = 0; k < 3; k++) o.v[k] = (float)((k == 1 ? c[1] + h : c[k]) - s->center_offset.v[k]);
+        soak_capsule_t full, sweep;
+        soak_capsules_at(s, o, &full, &sweep);
+        if (soak_check_nearest(l, s, &full) > 0.01) return o; /* room for the capsule */
+    }
+    return o;
 }

@@ -100,6 +100,20 @@ void soak_play_next(soak_play_t *p, const soak_level_t *lvl, const char_body_set
     }
     p->hold--;
     f->input = p->input;
+    if (p->gentle) {
+        /* real levels: plain walking (the input drawn above, tamed) and jumping */
+        double l = sqrt((double)f->input.x * f->input.x + (double)f->input.z * f->input.z);
+        if (!isfinite(l) || l > 8.0) {
+            double a = soak_rng_range(r, 0, 6.283185307179586), sp = soak_rng_range(r, 0.5, 8);
+            p->input.x = (float)(soak_cos(a) * sp); p->input.y = 0.0f; p->input.z = (float)(soak_sin(a) * sp);
+        }
+        p->input.y = 0.0f;
+        f->input = p->input;
+        f->dt = p->base_dt;
+        if (soak_rng_chance(r, 0.015)) { f->ops |= SOAK_OP_JUMP; f->jump = (float)soak_rng_range(r, 2, 10); }
+        (void)lvl; (void)s; (void)owner;
+        return;
+    }
 
     double u = soak_rng_unit(r);
     if (u < 0.80) f->dt = p->base_dt;
@@ -144,7 +158,8 @@ void soak_play_next(soak_play_t *p, const soak_level_t *lvl, const char_body_set
 /* ------------------------------------------------------------------ simulation */
 const char *soak_fail_name(int kind)
 {
-    static const char *names[SOAK_FAIL_COUNT] = {"none", "nonfinite", "penetration", "escape", "floor", "state"};
+    static const char *names[SOAK_FAIL_COUNT] = {"none", "nonfinite", "penetration", "escape", "floor", "state",
+                                                 "direction", "progress", "footing", "support", "velocity"};
     return (kind >= 0 && kind < SOAK_FAIL_COUNT) ? names[kind] : "unknown";
 }
 
@@ -165,6 +180,8 @@ void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings
     char_body_configure(&sim->body, s);
     char_body_teleport(&sim->body, start, true);
     sim->excused = true; /* the start point may be inside geometry */
+    sim->checks = SOAK_CHECKS_CURRENT;
+    sim->oracles = SOAK_ORACLES_ALL;
 }
 
 static bool vfinite(fm_vec3_t v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
@@ -227,19 +244,124 @@ int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
 
     soak_capsule_t full, sweep;
     const char_body_settings_t *s = char_body_get_settings(b);
+    soak_motion_t m;
+    memset(&m, 0, sizeof m);
     if (check) {
         soak_body_capsules(b, &full, &sweep);
         if (mover_near(sim, &sweep)) { excuse = true; sim->last_mover = sim->frame + 1; }
         sim->pen_before = soak_check_static_pen(sim->lvl, s, &sweep, NULL, NULL);
         sim->pos_before = sim->owner;
         sim->vel_before = char_body_get_velocity(b);
+        m.pos0 = sim->owner;
+        m.input = f->input;
+        m.dt = f->dt;
+        m.grounded0 = char_body_is_on_floor(b);
+        m.steep0 = char_body_is_on_steep_surface(b);
+        m.pen0 = sim->excused || sim->pen_before > SOAK_PEN_TOL;
     }
 
     char_body_move_and_slide_in(b, &sim->lvl->scene, f->dt);
     sim->frame++;
     sim->st.frames++;
     if (!check || sim->escaped) return SOAK_FAIL_NONE;
-    return soak_sim_check(sim, excuse, isfinite(f->dt) && f->dt > 0.0f);
+    bool stepped = isfinite(f->dt) && f->dt > 0.0f;
+    int k = soak_sim_check(sim, excuse, stepped);
+    if (k != SOAK_FAIL_NONE || !stepped || sim->escaped || sim->checks < SOAK_CHECKS_CURRENT) return k;
+    m.pos1 = sim->owner;
+    m.vel1 = char_body_get_velocity(b);
+    m.excuse = excuse;
+    return soak_sim_check_motion(sim, &m);
+}
+
+static double dlen3(const double a[3]) { return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
+{
+    char_body_t *b = &sim->body;
+    const char_body_settings_t *s = char_body_get_settings(b);
+    sim->last_fail = SOAK_FAIL_NONE;
+    sim->msg[0] = 0;
+    if (sim->checks < SOAK_CHECKS_CURRENT || !(m->dt > 0.0f) || !isfinite(m->dt)) return SOAK_FAIL_NONE;
+    double dt = m->dt < SOAK_BODY_MAX_DT ? m->dt : SOAK_BODY_MAX_DT;
+    double up[3] = {s->up.x, s->up.y, s->up.z}, d[3], dh[3], in[3], inh[3];
+    for (int k = 0; k < 3; k++) { d[k] = (double)m->pos1.v[k] - m->pos0.v[k]; in[k] = m->input.v[k]; }
+    double dup = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
+    double iup = in[0] * up[0] + in[1] * up[1] + in[2] * up[2];
+    for (int k = 0; k < 3; k++) { dh[k] = d[k] - up[k] * dup; inh[k] = in[k] - up[k] * iup; }
+    bool grounded1 = char_body_is_on_floor(b);
+    /* every excuse of the state checks, plus: started overlapping (the recover push-out
+     * moves the body without velocity), or ended in an excused overlap */
+    bool excused = m->excuse || m->pen0 || sim->excused;
+    double inl = dlen3(inh);
+    bool walking = !excused && m->grounded0 && !m->steep0 && isfinite(inl) && inl > 1e-6;
+    double along = 0;
+    if (walking) along = (dh[0] * inh[0] + dh[1] * inh[1] + dh[2] * inh[2]) / inl;
+
+#define ON(k) (sim->oracles & (1u << (k)))
+    /* (a) direction */
+    if (walking && ON(SOAK_FAIL_DIRECTION)) {
+        sim->st.oracle_frames[SOAK_FAIL_DIRECTION]++;
+        if (along < -SOAK_DIR_TOL)
+            FAIL(SOAK_FAIL_DIRECTION, "walking: moved %.2f mm against the input (%.3f %.3f %.3f m/s), from (%.4f %.4f %.4f)",
+                 -along * 1000.0, in[0], in[1], in[2], (double)m->pos0.x, (double)m->pos0.y, (double)m->pos0.z);
+    }
+    /* (b) progress */
+    if (walking && ON(SOAK_FAIL_PROGRESS)) {
+        double sp = inl < SOAK_BODY_MAX_SPEED ? inl : SOAK_BODY_MAX_SPEED, want = sp * dt;
+        fm_vec3_t D;
+        for (int k = 0; k < 3; k++) D.v[k] = (float)(inh[k] / inl * want);
+        if (want >= 1e-3 && soak_check_free_flat(sim->lvl, s, m->pos0, D)) {
+            sim->st.oracle_frames[SOAK_FAIL_PROGRESS]++;
+            if (along < SOAK_PROGRESS_MIN * want)
+                FAIL(SOAK_FAIL_PROGRESS, "walking on free flat floor: covered %.2f of %.2f mm (%.0f %%), from (%.4f %.4f %.4f)%s",
+                     along * 1000.0, want * 1000.0, 100.0 * along / want, (double)m->pos0.x, (double)m->pos0.y,
+                     (double)m->pos0.z, inl > 1.8e19 ? " (huge input: its square overflows a float)" : "");
+        }
+    }
+    /* (c) footing */
+    if (!excused && grounded1 && ON(SOAK_FAIL_FOOTING)) {
+        sim->st.oracle_frames[SOAK_FAIL_FOOTING]++;
+        double ex = soak_check_footing(sim->lvl, s, m->pos1);
+        if (ex > SOAK_FOOT_TOL)
+            FAIL(SOAK_FAIL_FOOTING, "grounded with the foot %.2f mm below the walkable surface under it, pos (%.4f %.4f %.4f)",
+                 ex * 1000.0, (double)m->pos1.x, (double)m->pos1.y, (double)m->pos1.z);
+    }
+    /* (e) velocity = displacement / dt: across up always, along up when airborne before
+     *     and after (a grounded body's along-up velocity is zeroed while the probe's snap
+     *     and stair lift move it) */
+    if (!excused && ON(SOAK_FAIL_VELOCITY)) {
+        double v[3] = {m->vel1.x, m->vel1.y, m->vel1.z}, e[3];
+        for (int k = 0; k < 3; k++) e[k] = d[k] / dt - v[k];
+        double eup = e[0] * up[0] + e[1] * up[1] + e[2] * up[2], eh[3];
+        for (int k = 0; k < 3; k++) eh[k] = e[k] - up[k] * eup;
+        double sp = dlen3(v), real = dlen3(d) / dt;
+        double tol = SOAK_VEL_TOL_POS / dt;
+        if (SOAK_VEL_TOL_REL * (sp > real ? sp : real) > tol) tol = SOAK_VEL_TOL_REL * (sp > real ? sp : real);
+        sim->st.oracle_frames[SOAK_FAIL_VELOCITY]++;
+        /* a tag for sorting the failures: [moved while still] the body moved but reports
+         * no velocity there (a push); [still while moving] the reverse (blocked, or a
+         * contact took the motion); [other] a different velocity (a mid-step slide) */
+        double vu = v[0] * up[0] + v[1] * up[1] + v[2] * up[2], vh[3], rh[3];
+        for (int k = 0; k < 3; k++) { vh[k] = v[k] - up[k] * vu; rh[k] = d[k] / dt - up[k] * (dup / dt); }
+        if (dlen3(eh) > tol)
+            FAIL(SOAK_FAIL_VELOCITY, "across up %s: velocity (%.3f %.3f %.3f) but moved %.3f m/s off it (displacement/dt %.3f %.3f %.3f, tol %.3f)",
+                 dlen3(vh) <= tol ? "[moved while still]" : dlen3(rh) <= tol ? "[still while moving]" : "[other]",
+                 v[0], v[1], v[2], dlen3(eh), d[0] / dt, d[1] / dt, d[2] / dt, tol);
+        if (!m->grounded0 && !grounded1 && fabs(eup) > tol)
+            FAIL(SOAK_FAIL_VELOCITY, "airborne, along up %s: velocity %.3f m/s but displacement/dt %.3f m/s (tol %.3f)",
+                 fabs(vu) <= tol ? "[moved while still]" : fabs(dup / dt) <= tol ? "[still while moving]" : "[other]", vu,
+                 dup / dt, tol);
+    }
+    /* (d) support */
+    if (!excused && dlen3(d) <= SOAK_REST_MOVE) sim->rest_frames++;
+    else sim->rest_frames = 0;
+    if (sim->rest_frames >= SOAK_REST_FRAMES && !grounded1 && ON(SOAK_FAIL_SUPPORT)) {
+        sim->st.oracle_frames[SOAK_FAIL_SUPPORT]++;
+        if (soak_check_touches_walkable(sim->lvl, s, m->pos1))
+            FAIL(SOAK_FAIL_SUPPORT, "at rest for %u frames touching walkable geometry, not grounded, pos (%.4f %.4f %.4f)",
+                 (unsigned)sim->rest_frames, (double)m->pos1.x, (double)m->pos1.y, (double)m->pos1.z);
+    }
+    return SOAK_FAIL_NONE;
 }
 
 int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
@@ -257,9 +379,20 @@ int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
     soak_body_capsules(b, &full, &sweep);
     double c[3];
     for (int k = 0; k < 3; k++) c[k] = (full.a[k] + full.b[k]) * 0.5;
+    if (sim->lvl->loaded) {
+        /* a real level has no room around it: falling out of its bounds (through a hole
+         * where only an invisible clip brush was) ends the checks of this body, reported */
+        const double m = 5.0;
+        for (int k = 0; k < 3; k++)
+            if (c[k] < sim->lvl->lo[k] - m || c[k] > sim->lvl->hi[k] + m) {
+                sim->st.left_level++;
+                sim->escaped = true;
+                return SOAK_FAIL_NONE;
+            }
+    }
     const double et = 0.01;
-    if (c[0] < -SOAK_ROOM_HALF - et || c[0] > SOAK_ROOM_HALF + et || c[1] < -et || c[1] > SOAK_ROOM_HEIGHT + et ||
-        c[2] < -SOAK_ROOM_HALF - et || c[2] > SOAK_ROOM_HALF + et)
+    if (!sim->lvl->loaded && (c[0] < -SOAK_ROOM_HALF - et || c[0] > SOAK_ROOM_HALF + et || c[1] < -et || c[1] > SOAK_ROOM_HEIGHT + et ||
+        c[2] < -SOAK_ROOM_HALF - et || c[2] > SOAK_ROOM_HALF + et))
     {
         if (excuse || sim->excused) {
             /* pushed out of an overlap it was put into (teleport, up change, mover) through
@@ -370,6 +503,10 @@ int soak_replay_write(const char *path, const soak_replay_t *rp)
     fprintf(f, "soak-replay 1\n");
     if (rp->note[0]) fprintf(f, "note %s\n", rp->note);
     fprintf(f, "level 0x%016llx\n", (unsigned long long)rp->level_seed);
+    if (rp->level_file[0]) fprintf(f, "levelfile %s\n", rp->level_file);
+    if (rp->gen > 1) fprintf(f, "gen %d\n", rp->gen);
+    if (rp->checks > 1) fprintf(f, "checks %d\n", rp->checks);
+    if (rp->checks > 1 && rp->oracles && rp->oracles != SOAK_ORACLES_ALL) fprintf(f, "oracles 0x%x\n", (unsigned)rp->oracles);
     fprintf(f, "settings %a %a %a %a %a %a %a %u %u %u %u\n", (double)s->radius, (double)s->height,
             (double)s->step_height, (double)s->floor_snap_distance, (double)s->floor_max_angle, (double)s->gravity,
             (double)s->max_fall_speed, (unsigned)s->max_slides, (unsigned)s->coll_types, (unsigned)s->read_mask,
@@ -457,6 +594,18 @@ int soak_replay_read(const char *path, soak_replay_t *rp, int *err_line)
         } else if (strcmp(kw, "level") == 0) {
             char *s = next_tok(&t);
             if (s) rp->level_seed = (uint64_t)strtoull(s, NULL, 0); else t.ok = 0;
+        } else if (strcmp(kw, "levelfile") == 0) {
+            char *s = next_tok(&t);
+            if (s && strlen(s) < sizeof rp->level_file) snprintf(rp->level_file, sizeof rp->level_file, "%s", s);
+            else t.ok = 0;
+        } else if (strcmp(kw, "gen") == 0) {
+            rp->gen = (int)tok_u(&t);
+            if (rp->gen < SOAK_GEN_V1 || rp->gen > SOAK_GEN_CURRENT) t.ok = 0;
+        } else if (strcmp(kw, "oracles") == 0) {
+            rp->oracles = (uint32_t)tok_u(&t);
+        } else if (strcmp(kw, "checks") == 0) {
+            rp->checks = (int)tok_u(&t);
+            if (rp->checks < SOAK_CHECKS_V1 || rp->checks > SOAK_CHECKS_CURRENT) t.ok = 0;
         } else if (strcmp(kw, "settings") == 0) {
             char_body_settings_t *s = &rp->settings;
             s->radius = tok_f(&t); s->height = tok_f(&t); s->step_height = tok_f(&t);
@@ -509,6 +658,8 @@ int soak_replay_read(const char *path, soak_replay_t *rp, int *err_line)
     }
     fclose(f);
     if (rc == 0 && !have_magic) rc = -5;
+    if (rp->gen == 0) rp->gen = SOAK_GEN_V1;          /* files from before the field */
+    if (rp->checks == 0) rp->checks = SOAK_CHECKS_V1;
     if (rc != 0 && err_line) *err_line = line_no;
     return rc;
 }
@@ -529,8 +680,22 @@ int soak_replay_run_explain(const soak_replay_t *rp, soak_level_t *lvl, soak_rep
 {
     static soak_sim_t sim; /* large-ish; one replay at a time */
     memset(res, 0, sizeof *res);
-    if (soak_level_generate(lvl, rp->level_seed) != 0) return -1;
+    if (rp->level_file[0]) {
+        /* a loaded level: keep it when it is already the one in lvl */
+        char raw[sizeof rp->level_file + 8], err[256];
+        size_t n = strlen(rp->level_file);
+        if (n > 5 && strcmp(rp->level_file + n - 5, ".coll") == 0) n -= 5;
+        snprintf(raw, sizeof raw, "%.*s.raw", (int)n, rp->level_file);
+        if (!lvl->loaded || strcmp(lvl->file, rp->level_file) != 0) {
+            if (soak_level_load(lvl, rp->level_file, raw, err, sizeof err) != 0) {
+                if (out) fprintf(out, "  %s\n", err);
+                return -1;
+            }
+        }
+    } else if (soak_level_generate_v(lvl, rp->level_seed, rp->gen ? rp->gen : SOAK_GEN_V1) != 0) return -1;
     soak_sim_begin(&sim, lvl, &rp->settings, rp->start);
+    sim.checks = rp->checks ? rp->checks : SOAK_CHECKS_V1;
+    sim.oracles = rp->oracles ? rp->oracles : SOAK_ORACLES_ALL;
     if (rp->t0 != 0.0) { sim.time = rp->t0; soak_level_animate(lvl, rp->t0); }
     if (rp->has_vel0) char_body_set_velocity(&sim.body, rp->vel0);
     if (rp->start_clear) sim.excused = false;
@@ -582,6 +747,20 @@ void soak_sim_explain(const soak_sim_t *sim, FILE *out)
         fprintf(out, "  deepest static triangle %d (checker depth %.3f mm): (%.5f %.5f %.5f) (%.5f %.5f %.5f) (%.5f %.5f %.5f)\n",
                 (int)sim->last_tri, sim->last_raw * 1000.0, w->v[0][0], w->v[0][1], w->v[0][2], w->v[1][0], w->v[1][1],
                 w->v[1][2], w->v[2][0], w->v[2][1], w->v[2][2]);
+    }
+    if (sim->checks >= SOAK_CHECKS_CURRENT) {
+        double ex = soak_check_footing(sim->lvl, s, sim->owner);
+        fm_vec3_t foot = char_body_foot_pos(b);
+        fprintf(out, "  footing: foot (%.5f %.5f %.5f) %.2f mm below the walkable surface under it", (double)foot.x,
+                (double)foot.y, (double)foot.z, ex * 1000.0);
+        if (soak_footing_tri >= 0) {
+            const soak_wtri_t *w = &sim->lvl->wtris[soak_footing_tri];
+            fprintf(out, " (triangle %d: (%.4f %.4f %.4f) (%.4f %.4f %.4f) (%.4f %.4f %.4f))", (int)soak_footing_tri,
+                    w->v[0][0], w->v[0][1], w->v[0][2], w->v[1][0], w->v[1][1], w->v[1][2], w->v[2][0], w->v[2][1],
+                    w->v[2][2]);
+        }
+        fprintf(out, "; at rest %u frames, touches walkable geometry %d\n", (unsigned)sim->rest_frames,
+                soak_check_touches_walkable(sim->lvl, s, sim->owner));
     }
     /* what the library itself says about the same capsule (diagnosis only) */
     fm_vec3_t c, up = s->up;

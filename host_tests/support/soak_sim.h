@@ -12,8 +12,10 @@
  *                    Generation uses double arithmetic and our own sin/cos only, so a seed
  *                    gives bit-identical levels on x86-64 and big-endian MIPS.
  *  - soak_play_*     random per-frame play (inputs, jumps, teleports, up changes, dt, NaN).
- *  - soak_check_*    independent double-precision brute-force property checker.
- *  - soak_sim_*      runs a body on a level frame by frame and classifies property failures.
+ *  - soak_check_*    independent double-precision brute-force property checker, and the
+ *                    geometry of the behaviour oracles (footing, free flat floor, support).
+ *  - soak_sim_*      runs a body on a level frame by frame and classifies property failures
+ *                    (state checks, then the behaviour oracles: soak_sim_check_motion).
  *  - soak_replay_*   text replay files (hex floats) with per-architecture expected states.
  *
  * Every non-static symbol starts with soak_ (this file's objects are linked into every
@@ -85,21 +87,41 @@ typedef struct {
     uint8_t mask;     ///< write mask of its piece
 } soak_wtri_t;
 
+/** Generator versions. 1: the original generator (replays without a `gen` line);
+ *  2: adds the real-world shapes of issue 12 (cracks, V-valley slots, modular tiles with
+ *  gaps and height mismatches, overhangs and acute wedges, regular staircases). */
+#define SOAK_GEN_V1      1
+#define SOAK_GEN_CURRENT 2
+
 typedef struct {
     uint64_t seed;
+    int gen;                            ///< generator version (SOAK_GEN_*), 0 for a loaded level
     uint32_t npieces, nbodies, nverts, ntris, nwtris;
     soak_piece_t pieces[SOAK_MAX_PIECES];
     soak_lbody_t bodies[SOAK_MAX_BODIES];
     float verts[SOAK_MAX_VERTS * 3];
     uint32_t idx[SOAK_MAX_TRIS * 3];
-    soak_wtri_t wtris[SOAK_MAX_TRIS];   ///< static pieces only, world space
+    soak_wtri_t *wtris;                 ///< static pieces only, world space (wtris_store or a loaded level's)
+    soak_wtri_t wtris_store[SOAK_MAX_TRIS];
+    /* A loaded (real) level instead of the generated room: bounds of its triangles; the
+     * room checks (escape) are replaced by "left the level's bounds" (reported). */
+    bool loaded;
+    double lo[3], hi[3];
+    char file[256];                     ///< loaded level: its blob path
     coll_scene_t scene;
     size_t pool_used;
     _Alignas(16) unsigned char pool[SOAK_POOL_BYTES];
 } soak_level_t;
 
-/** Generates and builds the level for seed (0 on success, else a negative code). */
+/** Generates and builds the level for seed with generator version 1 (the original one;
+ *  0 on success, else a negative code). */
 int  soak_level_generate(soak_level_t *lvl, uint64_t seed);
+/** The same with an explicit generator version (SOAK_GEN_V1 .. SOAK_GEN_CURRENT). */
+int  soak_level_generate_v(soak_level_t *lvl, uint64_t seed, int gen);
+/** Loads a baked level: blob (collbake .coll, for the library) and raw (collbake --dump-raw,
+ *  the checker's independent copy of the same triangles). The blob and the raw triangles
+ *  are malloc'd (host tool only). 0 on success, else a negative code with a message. */
+int  soak_level_load(soak_level_t *lvl, const char *blob_path, const char *raw_path, char *err, size_t errlen);
 /** Sets the transforms of moving pieces and bodies for time t (seconds). */
 void soak_level_animate(soak_level_t *lvl, double t);
 /** FNV-1a hash of the generated geometry, transforms and body data (cross-platform). */
@@ -132,9 +154,14 @@ typedef struct {
     fm_vec3_t input;
     float base_dt;
     uint32_t hold;        ///< frames left before the input changes
+    bool gentle;          ///< real levels: walking and jumping only (0.5-8 m/s, dt 1/60 or 1/30,
+                          ///< jumps, respawns at spawn points; no NaN, no up changes)
 } soak_play_t;
 
 void soak_play_init(soak_play_t *p, uint64_t seed);
+/** Spawn point of a loaded level: above a random upward-facing triangle (capsule centre
+ *  height/2 + 5 cm above it), as an owner position. */
+fm_vec3_t soak_level_spawn(soak_rng_t *r, const soak_level_t *lvl, const char_body_settings_t *s);
 /** Next frame's play; owner is the body's current origin (teleports and up changes keep
  *  the whole capsule inside the room so it can always get out without leaving it). */
 void soak_play_next(soak_play_t *p, const soak_level_t *lvl, const char_body_settings_t *s,
@@ -173,6 +200,12 @@ enum {
     SOAK_FAIL_ESCAPE,       ///< capsule centre left the room (below the lowest floor etc.)
     SOAK_FAIL_FLOOR,        ///< is_on_floor with no surface within snap reach
     SOAK_FAIL_STATE,        ///< inconsistent state (steep without floor, floor id, normal)
+    /* behaviour oracles (checks version 2; docs/RELIABILITY.md) */
+    SOAK_FAIL_DIRECTION,    ///< walking: the step moved against the input by more than 1 mm
+    SOAK_FAIL_PROGRESS,     ///< walking over verified free flat floor: < 90 % of the input distance
+    SOAK_FAIL_FOOTING,      ///< grounded foot > 1 mm below the walkable surface under it
+    SOAK_FAIL_SUPPORT,      ///< at rest 30 frames touching walkable geometry, not grounded
+    SOAK_FAIL_VELOCITY,     ///< reported velocity differs from displacement / dt
     SOAK_FAIL_COUNT
 };
 const char *soak_fail_name(int kind);
@@ -181,6 +214,22 @@ const char *soak_fail_name(int kind);
 #define SOAK_FLOOR_TOL   1e-2   ///< slack of the is_on_floor reach check, m
 #define SOAK_RECOVER_FRAMES 120 ///< excused penetration longer than this counts as "stuck"
 
+/** Checker versions. 1: the state checks only (replays without a `checks` line);
+ *  2: plus the behaviour oracles direction, progress, footing, support, velocity. */
+#define SOAK_CHECKS_V1      1
+#define SOAK_CHECKS_CURRENT 2
+
+#define SOAK_ORACLES_ALL  ((1u << SOAK_FAIL_DIRECTION) | (1u << SOAK_FAIL_PROGRESS) | (1u << SOAK_FAIL_FOOTING) | \
+                           (1u << SOAK_FAIL_SUPPORT) | (1u << SOAK_FAIL_VELOCITY))
+#define SOAK_DIR_TOL      1e-3  ///< direction: largest displacement against the input, m
+#define SOAK_PROGRESS_MIN 0.90  ///< progress: share of the input distance covered on free flat floor
+#define SOAK_FOOT_TOL     1e-3  ///< footing: foot below the surface under it, m
+#define SOAK_REST_FRAMES  30    ///< support: frames at rest before the body must be grounded
+#define SOAK_REST_MOVE    1e-4  ///< support: "at rest" = at most this displacement per frame, m
+#define SOAK_VEL_TOL_POS  1e-3  ///< velocity: tolerance, as a displacement over dt (m)
+#define SOAK_VEL_TOL_REL  0.02  ///< velocity: or this share of the speed, whichever is larger
+#define SOAK_BODY_MAX_DT  0.1f  ///< the body clamps dt to this (CB_MAX_DT)
+#define SOAK_BODY_MAX_SPEED 200.0 ///< the body clamps speeds to this (CB_MAX_SPEED)
 typedef struct {
     uint64_t frames, hard[SOAK_FAIL_COUNT];
     uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
@@ -190,7 +239,22 @@ typedef struct {
     uint64_t body_pen_frames;     ///< sweep capsule > 1 cm into a static collider body (reported)
     double max_body_pen;
     double max_soft_pen, max_hard_pen;
+    /* behaviour oracles: how often each applied (frames checked) */
+    uint64_t oracle_frames[SOAK_FAIL_COUNT];
+    uint64_t left_level;          ///< loaded levels: left the level's bounds (fell out; reported)
 } soak_stats_t;
+
+/** One step's motion as the behaviour oracles see it (soak_sim_step fills it; the tests
+ *  build bad ones by hand). Positions are owner positions. */
+typedef struct {
+    fm_vec3_t pos0, pos1;         ///< before / after the step
+    fm_vec3_t vel1;               ///< reported velocity after the step
+    fm_vec3_t input;              ///< input_velocity of the step
+    float dt;                     ///< the step's dt (valid)
+    bool grounded0, steep0;       ///< floor state before the step
+    bool excuse;                  ///< teleport, up change, mover near or carried this frame
+    bool pen0;                    ///< started overlapping (penetrating or in an excused state)
+} soak_motion_t;
 
 typedef struct {
     soak_level_t *lvl;
@@ -202,6 +266,9 @@ typedef struct {
     bool escaped;                 ///< left the room after an excused overlap: checks end
     uint32_t excused_frames;
     uint32_t last_teleport, last_up, last_mover; ///< frame numbers of the last excuse events (+1)
+    int checks;                   ///< SOAK_CHECKS_* (soak_sim_begin: current)
+    uint32_t oracles;             ///< enabled behaviour oracles: bit (1 << SOAK_FAIL_*) (default all)
+    uint32_t rest_frames;         ///< support oracle: consecutive frames at rest
     int last_fail;
     double last_pen, last_raw;
     double pen_before;          ///< checker penetration before the last step (diagnosis)
@@ -220,6 +287,21 @@ int  soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check);
  *  after the step). excuse: the frame teleported, changed up or had a mover near;
  *  stepped: the step ran (valid dt), so the floor state is fresh. */
 int  soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped);
+/** The behaviour oracles (checks version 2) on one step's motion and the body's current
+ *  state (the state after the step). Returns SOAK_FAIL_* (msg describes a failure). */
+int  soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m);
+/** Footing: how far (m) the foot is below the walkable surface under it beyond the
+ *  tolerated sag (0 when not below); the oracle fails above SOAK_FOOT_TOL. */
+double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
+extern int32_t soak_footing_tri; ///< triangle (lvl->wtris index) behind the last footing result, -1: none
+/** Progress: whether the checker verifies free, flat, walkable space for the capsule from
+ *  owner along disp (across up). */
+bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp);
+/** Support: whether the full capsule touches (within 1 mm) walkable geometry below its
+ *  bottom ball centre. */
+bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
+/** Full and sweep capsules of settings s at owner position owner. */
+void soak_capsules_at(const char_body_settings_t *s, fm_vec3_t owner, soak_capsule_t *full, soak_capsule_t *sweep);
 /** Prints the body state, the deepest triangle and the library's own overlap view (diagnosis). */
 void soak_sim_explain(const soak_sim_t *sim, FILE *out);
 
@@ -243,6 +325,10 @@ typedef struct {
     soak_frame_t *frames;           ///< caller-owned, cap entries
     int fail_kind;                  ///< failure recorded when written (informational)
     uint32_t fail_frame;
+    int gen;                        ///< generator version (`gen` line; 1 when absent)
+    int checks;                     ///< checker version (`checks` line; 1 when absent)
+    uint32_t oracles;               ///< `oracles` line: enabled oracle bits (0 / absent: all)
+    char level_file[256];           ///< `levelfile` line: a loaded level (.coll; its .raw beside it)
     uint32_t nexpect;
     soak_expect_t expect[SOAK_MAX_EXPECT];
     char note[160];

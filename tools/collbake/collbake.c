@@ -28,6 +28,7 @@
 
 #include "coll/mesh.h"
 #include "coll/mesh_format.h"
+#include "bsp.h"
 
 #define MAX_ONLY 32
 #define BIG_TRI_CELLS 64     /* warn about triangles referenced by more cells than this */
@@ -41,7 +42,8 @@ typedef struct {
     const char *only[MAX_ONLY];
     int nonly;
     float cell_size, scale, weld, max_quant_error;
-    int quantize, verbose;
+    double bsp_unit, min_kept;
+    int quantize, verbose, bsp_all_models;
 } opts_t;
 
 static const char *g_file = "collbake";
@@ -105,6 +107,11 @@ static void usage(FILE *f)
         "  --weld TOL          merge vertices closer than TOL meters (default 0.0001; 0: exact only)\n"
         "  --quantize          16-bit vertices when the worst-case error stays below --max-quant-error\n"
         "  --max-quant-error M largest acceptable quantization error (default 0.005 m)\n"
+        "  --bsp-unit M        Quake III .bsp input: metres per Quake unit (default 0.032); Quake's\n"
+        "                      Z up becomes Y up\n"
+        "  --bsp-all-models    .bsp: also the brush entities' surfaces (doors, platforms; default: world only)\n"
+        "  --min-kept F        refuse the bake when fewer than F of the input triangles survive\n"
+        "                      welding and the degenerate/duplicate filter (default 0.5; 0: never)\n"
         "  --dump-raw FILE     also write the welded triangles: little-endian \"CRAW\", u32 version 1,\n"
         "                      u32 nverts, u32 ntris, nverts*3 f32, ntris*3 u32\n"
         "  --report FILE       also write the summary as 'key value' lines\n"
@@ -128,6 +135,8 @@ static void parse_args(int argc, char **argv, opts_t *o)
     o->scale = 1.0f;
     o->weld = 1e-4f;
     o->max_quant_error = 0.005f;
+    o->bsp_unit = 0.032;
+    o->min_kept = 0.5;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *next = i + 1 < argc ? argv[i + 1] : NULL;
@@ -143,6 +152,15 @@ static void parse_args(int argc, char **argv, opts_t *o)
             if (!(o->scale > 0.0f)) die("--scale must be > 0");
         }
         else if (!strcmp(a, "--weld")) { o->weld = parse_float(a, next, 0.0f); i++; }
+        else if (!strcmp(a, "--bsp-unit")) {
+            o->bsp_unit = parse_float(a, next, 0.0f); i++;
+            if (!(o->bsp_unit > 0.0)) die("--bsp-unit must be > 0");
+        }
+        else if (!strcmp(a, "--bsp-all-models")) o->bsp_all_models = 1;
+        else if (!strcmp(a, "--min-kept")) {
+            o->min_kept = parse_float(a, next, 0.0f); i++;
+            if (o->min_kept > 1.0) die("--min-kept is a share, 0..1");
+        }
         else if (!strcmp(a, "--max-quant-error")) { o->max_quant_error = parse_float(a, next, 0.0f); i++; }
         else if (!strcmp(a, "--only") && next) {
             if (o->nonly == MAX_ONLY) die("more than %d --only patterns", MAX_ONLY);
@@ -163,6 +181,9 @@ typedef struct {
     double *p;        /* 9 doubles per triangle, world space, scaled */
     size_t n, cap;    /* triangles */
     unsigned nodes, meshes_taken, meshes_skipped, nontri_faces, bad_faces, nonfinite;
+    int is_bsp;
+    bsp_stats_t bsp;
+    double scale;     /* the BSP reader's triangles get --scale here */
 } soup_t;
 
 static void soup_push(soup_t *s, const double t[9])
@@ -240,11 +261,47 @@ static void walk(const struct aiScene *sc, const struct aiNode *nd, const xform_
         if (nd->mChildren && nd->mChildren[c]) walk(sc, nd->mChildren[c], &world, sel && o->nonly > 0, o, s, depth + 1);
 }
 
-static void import(const opts_t *o, soup_t *s)
+static void bsp_tri(void *user, const double t[9])
+{
+    soup_t *s = user;
+    double u[9];
+    for (int k = 0; k < 9; k++) {
+        u[k] = t[k] * s->scale;
+        if (!isfinite(u[k])) { s->nonfinite++; return; }
+    }
+    soup_push(s, u);
+}
+
+/* A Quake III .bsp (IBSP magic): our own reader (assimp's leaves face indices unset). */
+static int import_bsp(const opts_t *o, soup_t *s)
 {
     FILE *f = fopen(o->input, "rb");
     if (!f) die("cannot open: %s", strerror(errno));
+    unsigned char magic[4];
+    size_t got = fread(magic, 1, 4, f);
+    if (got < 4 || !bsp_is_bsp(magic, 4)) { fclose(f); return 0; }
+    if (fseek(f, 0, SEEK_END) != 0) die("cannot seek: %s", strerror(errno));
+    long len = ftell(f);
+    if (len < 0 || len > 0x7FFFFFFFL) die("cannot size the file");
+    rewind(f);
+    unsigned char *d = xmalloc((size_t)len);
+    if (fread(d, 1, (size_t)len, f) != (size_t)len) die("cannot read: %s", strerror(errno));
     fclose(f);
+    memset(s, 0, sizeof *s);
+    s->is_bsp = 1;
+    s->scale = o->scale;
+    const char *err = bsp_read(d, (size_t)len, o->bsp_unit, o->bsp_all_models, bsp_tri, s, &s->bsp);
+    free(d);
+    if (err) die("Quake III BSP: %s", err);
+    if (s->n == 0)
+        die("no triangles: the BSP has %u surfaces in the %s, none solid with geometry (%u non-solid, %u other)",
+            s->bsp.surfaces, o->bsp_all_models ? "file" : "world model", s->bsp.nonsolid, s->bsp.other);
+    return 1;
+}
+
+static void import(const opts_t *o, soup_t *s)
+{
+    if (import_bsp(o, s)) return;
     const struct aiScene *sc = aiImportFile(o->input, aiProcess_Triangulate | aiProcess_SortByPType);
     if (!sc) {
         const char *msg = aiGetErrorString();
@@ -588,6 +645,15 @@ int main(int argc, char **argv)
         die("no triangles left: all %u were degenerate (%u collapsed by welding at %g m, %u zero-area)",
             w.in_tris, w.collapsed, (double)o.weld, w.degenerate);
 
+    /* A bake that loses most of its input is an importer failure, not a level: assimp's
+     * Quake III BSP importer, for one, leaves face indices unset and 4090 triangles collapse
+     * into 1. Refuse it loudly rather than write a level with nothing in it. */
+    if ((double)w.nt < o.min_kept * (double)w.in_tris)
+        die("only %u of %u input triangles survive (%.1f %%; %u collapsed by welding at %g m, %u degenerate, "
+            "%u duplicate): the importer or the options lost the level (at least %.0f %% must survive; "
+            "--min-kept 0 bakes it anyway)", w.nt, w.in_tris, 100.0 * w.nt / (double)w.in_tris, w.collapsed,
+            (double)o.weld, w.degenerate, w.duplicate, 100.0 * o.min_kept);
+
     void *fblock = NULL, *qblock = NULL;
     const coll_mesh_t *fm = build(&w, &o, 0, &fblock);
     const coll_mesh_t *m = fm;
@@ -639,12 +705,18 @@ int main(int argc, char **argv)
     coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, gs.ncells, m->nrefs);
 
     printf("collbake: %s -> %s\n", o.input, o.output);
+    if (soup.is_bsp)
+        printf("  input      Quake III BSP, %g m per unit: %u surfaces (%u planar, %u meshes, %u patches taken; "
+               "%u non-solid, %u without geometry skipped); %u triangles\n", o.bsp_unit, soup.bsp.surfaces,
+               soup.bsp.planar, soup.bsp.soups, soup.bsp.patches, soup.bsp.nonsolid, soup.bsp.other, w.in_tris);
+    else {
     printf("  input      %u nodes, %u meshes baked, %u skipped", soup.nodes, soup.meshes_taken, soup.meshes_skipped);
     for (int i = 0; i < o.nonly; i++) printf("%s%s", i ? " " : " (--only ", o.only[i]);
     printf("%s; %u triangles", o.nonly ? ")" : "", w.in_tris);
     if (soup.nontri_faces) printf(", %u point/line faces ignored", soup.nontri_faces);
     if (soup.bad_faces || soup.nonfinite) printf(", %u bad indices, %u non-finite vertices dropped", soup.bad_faces, soup.nonfinite);
     printf("\n");
+    }
     if (o.scale != 1.0f) printf("  scale      %g\n", (double)o.scale);
     printf("  welding    %u -> %u vertices (tolerance %g m)\n", w.in_verts, w.nv, (double)o.weld);
     printf("  triangles  %u in, %u out (%u collapsed by welding, %u degenerate, %u duplicate)\n",
