@@ -425,16 +425,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     if (!walking) cb_foot_guard(&c, &pos, old_foot, &body->velocity);
 
     /* Honest velocity: where the step's motion fell short of the velocity (a wall, a
-     * wedge, a crack's edges stopped it) the velocity is the one the body moved with, so no
-     * fall speed accumulates at rest; except that a ceiling which stopped a rise keeps the
-     * clipped rate along up (no rising speed is reported into a ceiling). Unobstructed, the
-     * velocity stays exact. The floor probe then drops the part along up on a floor. */
+     * ceiling, a wedge, a crack's edges stopped it) the velocity is the one the body moved
+     * with, so no fall speed accumulates at rest, and a rise stopped by a ceiling shows on
+     * the next step (it moves no further up). Unobstructed, the velocity stays exact. The
+     * floor probe then drops the part along up on a walkable floor. */
     fm_vec3_t moved = cb_scale(cb_sub(pos, start), 1.0f / dt);
-    if (cb_finite(moved) && cb_len(cb_sub(moved, body->velocity)) * dt > 1e-4f * c.radius) {
-        float mu = cb_dot(moved, up), vcu = cb_dot(body->velocity, up);
-        if (mu > 0.0f && vcu < mu) moved = cb_madd(moved, up, vcu - mu);
-        body->velocity = moved;
-    }
+    if (cb_finite(moved) && cb_len(cb_sub(moved, body->velocity)) * dt > 1e-4f * c.radius) body->velocity = moved;
 
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */

@@ -250,6 +250,10 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
                 if (s.gap < -1e-3f && done * -s.gap < -s.gap - 1e-3f) fits = false;
             }
             if (c->ev) c->ev->step += cb_dot(cb_sub(*pos, before), up);
+            /* sliding off a nosing on the way down moved the body across up too: that is
+             * motion, and the velocity says so */
+            fm_vec3_t across = cb_reject(cb_sub(*pos, before), up);
+            if (cb_dot(across, across) > 0.0f) b->velocity = cb_madd(b->velocity, across, 1.0f / c->dt);
         }
     }
 
@@ -264,13 +268,9 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
     if (s.steep) b->flags |= CB_FLAG_STEEP;
     b->floor_normal = s.normal;
     b->floor_id = s.id;
-    if (!s.steep) {
-        /* Floor contact ends any motion along up: no creep, no bounce. */
-        b->velocity = cb_reject(b->velocity, up);
-    } else {
-        float into = cb_dot(b->velocity, s.normal);
-        if (into < 0.0f) b->velocity = cb_madd(b->velocity, s.normal, -into);
-    }
+    /* A walkable floor ends any motion along up: no creep, no bounce. On a steep surface
+     * the velocity stays the one the body moved with (the slide took what went into it). */
+    if (!s.steep) b->velocity = cb_reject(b->velocity, up);
     if (s.instance && b->settings.follow_floor) {
         fm_vec3_t anchor = s.steep ? s.point : cb_foot(c, *pos);
         fm_vec3_t local;
