@@ -113,8 +113,10 @@ typedef struct {
  * (across a crack too narrow for the ball to dip into; not down a ledge onto a lower floor). At a ledge the roll meets nothing, or
  * nothing it can stand on, and the foot-as-a-point rule stands: the body falls.
  */
-static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, support_t *out)
+static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
+                      support_t *out)
 {
+    const bool over_floor = floor_gap < 1e29f;
     const char_body_t *b = c->body;
     const fm_vec3_t up = c->up;
     const float r = c->radius, len = c->step + reach + 0.5f * r;
@@ -133,6 +135,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
+    float c1 = contact;
     float gap = d1 - c->step; /* resting on the first contact (the body is not moved sideways) */
     fm_vec3_t normal = h1.normal;
     fm_vec3_t tangent = cb_madd(cb_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
@@ -149,6 +152,9 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         float c2 = cb_dot(cb_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
         fm_vec3_t side1 = cb_norm(cb_reject(h1.normal, up)), side2 = cb_norm(cb_reject(h2.normal, up));
+        /* Over a floor the foot could step down to, only a gap between surfaces at one
+         * level holds the ball (tiles, a slab beside a slab), not a stair's nosings. */
+        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - CB_CONTACT_EPS)) return false;
         if (cb_dot(side1, side2) < -0.05f) {
             normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
             if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
@@ -225,8 +231,16 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
                 /* A one-way platform is a floor within a step of the foot, not one the
                  * body fell back into after jumping up through it short of its top. */
                 bool one_way_deep = hit.instance && (hit.instance->flags & COLL_INSTANCE_ONE_WAY) && gap < -c->step;
-                if (gap <= reach && !one_way_deep)
+                if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
+                    /* Stepping down into a gap between two surfaces at one level narrower
+                     * than the capsule (modular tiles over a base floor): the capsule rests
+                     * on their edges instead; a stair's next tread stays a step down. */
+                    support_t w = {0};
+                    if (was_grounded && gap > CB_CONTACT_EPS && ball_held(c, *pos, reach, NULL, gap, &w) &&
+                        w.gap < gap - 1e-3f)
+                        s = w;
+                }
             } else if (nu > 0.0f) {
                 /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
                  * which puts the plane r / cos - (r + step) below the foot along up. Only
@@ -236,7 +250,7 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
         }
-        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, &s);
+        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
