@@ -144,8 +144,16 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
-        if (!cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2) ||
-            !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
+        bool met = cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2);
+        if (!met && n1u > 0.995f) {
+            /* Resting on an edge almost under its centre the tangent barely descends: the
+             * ball would drop off it, so roll once more at 45 degrees down (the far side of
+             * a gap a few millimetres lower than this one, a tile beside a tile). */
+            downhill = cb_norm(cb_madd(cb_norm(cb_reject(downhill, up)), up, -1.0f));
+            met = cb_len(downhill) > 0.5f && cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2) &&
+                  (h2.instance != h1.instance || h2.triangle != h1.triangle || h2.body != h1.body);
+        }
+        if (!met || !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
             return false; /* rolls off (a ledge), or into a ceiling */
         float descent = (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up);
         if (descent > 0.5f * r) return false;
