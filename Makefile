@@ -86,7 +86,7 @@ n64_OBJDUMP := $(n64_TOOLS)objdump
 n64_ARCH := $(N64_ARCH)
 n64_CFLAGS := $(n64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno
 ifeq ($(COLL_USE_LIBDRAGON_FMATH),1)
-n64_CFLAGS += -DCOLL_USE_LIBDRAGON_FMATH
+n64_CFLAGS += -DCOLL_USE_LIBDRAGON_FMATH $(if $(N64_INST),-isystem $(N64_INST)/mips64-elf/include)
 endif
 
 # obj dir per variant
