@@ -168,11 +168,11 @@ n64-check: $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a
 	    $(n64_TOOLS) $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a
 	bash tools/test_check_n64_lib.sh $(n64_CC) $(n64_TOOLS) "$(N64_ARCH)"
 
-# All three runs, one summary line at the end.
-test: $(host_TESTS) $(qemu_TESTS) $(asan_TESTS) $(TEST_PREREQS)
+# All runs (host, qemu, asan, and the emulated console: mk/n64rom.mk), one summary line at the end.
+test: $(host_TESTS) $(qemu_TESTS) $(asan_TESTS) $(TEST_PREREQS) $(N64ROM_ROMS)
 	bash tools/run_tests.sh host "$(host_RUN)" $(host_TESTS) -- \
 	                        qemu "$(qemu_RUN)" $(qemu_TESTS) -- \
-	                        asan "$(asan_RUN)" $(asan_TESTS)
+	                        asan "$(asan_RUN)" $(asan_TESTS) $(N64ROM_TEST_ARGS)
 
 # One run only (quicker while developing): make test-host [SUITES="test_math test_mesh"]
 SUITES ?= $(TEST_NAMES)
