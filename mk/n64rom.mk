@@ -74,8 +74,18 @@ $(N64ROM_DIR)/%.z64: $(N64ROM_DIR)/%.elf $(N64ROM_DIR)/boot.bin tools/n64rom.py
 .PHONY: n64-roms test-n64
 n64-roms: $(N64ROM_ROMS)
 N64ROM_RUN := bash tools/run_n64.sh
+N64ROM_PICKED = $(addprefix $(N64ROM_DIR)/,$(addsuffix .z64,$(filter $(N64ROM_SUITES),$(SUITES))))
 test-n64: $(TEST_PREREQS)
-	$(MAKE) --no-print-directory $(addprefix $(N64ROM_DIR)/,$(addsuffix .z64,$(filter $(N64ROM_SUITES),$(SUITES))))
-	bash tools/run_tests.sh n64 "$(N64ROM_RUN)" $(addprefix $(N64ROM_DIR)/,$(addsuffix .z64,$(filter $(N64ROM_SUITES),$(SUITES))))
+	$(MAKE) --no-print-directory $(N64ROM_PICKED) $(N64ROM_SELFTEST_ROMS)
+	bash tools/run_tests.sh n64 "$(N64ROM_RUN)" $(N64ROM_PICKED) -- n64-runner bash tools/test_run_n64.sh
+
+# ROMs that must fail (and one that must pass): tools/test_run_n64.sh, counted in the n64 run
+N64ROM_SELFTESTS := ok status exception reserved hang
+N64ROM_SELFTEST_ROMS := $(patsubst %,$(N64ROM_DIR)/selftest_%.z64,$(N64ROM_SELFTESTS))
+$(N64ROM_DIR)/suite/selftest_%.o: host_tests/n64/rom_selftest.c $(BUILD)/n64/.flags | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(n64_CC) $(STD) $(WARN) $(N64ROM_CFLAGS) $(N64ROM_INC) -DSELFTEST_$* -c $< -o $@
+N64ROM_ROMS += $(N64ROM_SELFTEST_ROMS)
 # make test runs the ROMs after the host, qemu and asan runs, into the same summary line
-N64ROM_TEST_ARGS = -- n64 "$(N64ROM_RUN)" $(N64ROM_ROMS)
+N64ROM_TEST_ARGS = -- n64 "$(N64ROM_RUN)" $(filter-out $(N64ROM_SELFTEST_ROMS),$(N64ROM_ROMS)) \
+                   -- n64-runner bash tools/test_run_n64.sh
