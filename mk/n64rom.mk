@@ -9,11 +9,13 @@
 # (rom_libc.c; the regression replays are embedded), Unity, one host_tests suite unchanged,
 # and the console archives exactly as `make n64` builds them (o64, VR4300). The suites that
 # read no files outside the ROM and fit the console's 8 MiB run; the others
-# (N64ROM_SKIPPED) need the bake tool's files or more RAM than the console has.
+# (N64ROM_SKIPPED) need the bake tool's files or more RAM than the console has. The
+# char_body suites run with a 4 MiB level arena (host: 8 MiB), which their levels fit.
 
 N64ROM_DIR    := $(BUILD)/n64rom
 N64ROM_SUITES := test_smoke test_math test_mesh_load test_prim_body test_prim_triangle test_scene_query \
-                 test_stability test_replays
+                 test_stability test_replays test_char_body_basic test_char_body_motion \
+                 test_char_body_robust test_char_body_terrain
 N64ROM_SKIPPED := $(filter-out $(N64ROM_SUITES),$(TEST_NAMES))
 N64ROM_CFLAGS := $(N64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno -g
 N64ROM_INC    := -Ihost_tests/n64/include -Ihost_tests/n64 $(INC) $(CCD_INC) $(UNITY_INC)
@@ -52,8 +54,10 @@ $(N64ROM_DIR)/boot.bin: host_tests/n64/boot.S
 # library sources for the replay expectations too)
 $(N64ROM_DIR)/support/%.o: host_tests/support/%.c $(BUILD)/n64/.flags | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(n64_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(N64ROM_CFLAGS) $(N64ROM_SUPPORT_FP) $(N64ROM_INC) -MMD -MP -c $< -o $@
-$(N64ROM_DIR)/support/soak_sim.o: N64ROM_SUPPORT_FP = -DSOAK_LIB_FP=lib$(SOAK_LIB_FP)
+	$(n64_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(N64ROM_CFLAGS) $(N64ROM_SUPPORT_DEFS) $(N64ROM_INC) -MMD -MP -c $< -o $@
+$(N64ROM_DIR)/support/soak_sim.o: N64ROM_SUPPORT_DEFS = -DSOAK_LIB_FP=lib$(SOAK_LIB_FP)
+# the char_body suites' level arena and triangle soup, cut to fit the console's RAM
+$(N64ROM_DIR)/support/cb_levels.o: N64ROM_SUPPORT_DEFS = '-DCB_ARENA_BYTES=(4u << 20)' -DCB_GEO_MAX_V=40960 -DCB_GEO_MAX_T=16384
 $(N64ROM_DIR)/support/soak_sim.o: $(SOAK_LIB_DEPS)
 $(N64ROM_DIR)/suite/%.o: host_tests/%.c $(BUILD)/n64/.flags | $(DEPS_STAMP)
 	@mkdir -p $(@D)
