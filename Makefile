@@ -181,4 +181,4 @@ test-host test-qemu test-asan: test-%: $(TEST_PREREQS)
 	bash tools/run_tests.sh $* "$($*_RUN)" $(addprefix $(BUILD)/$*/tests/,$(SUITES))
 
 clean:
-	rm -rf $(BUILD)/host $(BUILD)/qemu $(BUILD)/asan $(BUILD)/n64 $(BUILD)/n64ld $(BUILD)/n64rom
+	rm -rf $(BUILD)/host $(BUILD)/qemu $(BUILD)/asan $(BUILD)/n64 $(BUILD)/n64ld $(BUILD)/n64rom $(BUILD)/n64bench

@@ -93,3 +93,4 @@ N64ROM_ROMS += $(N64ROM_SELFTEST_ROMS)
 # make test runs the ROMs after the host, qemu and asan runs, into the same summary line
 N64ROM_TEST_ARGS = -- n64 "$(N64ROM_RUN)" $(filter-out $(N64ROM_SELFTEST_ROMS),$(N64ROM_ROMS)) \
                    -- n64-runner bash tools/test_run_n64.sh
+.PRECIOUS: $(N64ROM_DIR)/suite/selftest_%.o
