@@ -1,11 +1,12 @@
 # charbody64: character-movement and collision runtime for N64 homebrew.
 #
 #   make / make lib   host static library            build/host/libcoll.a
-#   make n64          console library (VR4300)       build/n64/libcoll.a (+ symbol check)
-#   make test         every suite: native, big-endian MIPS under qemu, ASan+UBSan
+#   make n64          console library (VR4300, o64)  build/n64/libcoll.a, libccd.a (+ checks)
+#   make test         every suite: native, big-endian MIPS under qemu, ASan+UBSan, and the
+#                     emulated console (mupen64plus; make test-n64, mk/n64rom.mk)
 #   make deps         install toolchains and Debian sources (run automatically)
 #   make demo         the example on a bundled level (mk/demo.mk)
-#   make bench        benchmarks (mk/bench.mk)
+#   make bench        benchmarks (mk/bench.mk; console counts: make bench-n64)
 #
 # Feature fragments live in mk/*.mk and may add to TEST_PREREQS, N64_EXTRA, ALL_EXTRA.
 
@@ -147,7 +148,7 @@ $(1)_TESTS := $$(addprefix $(BUILD)/$(1)/tests/,$(TEST_NAMES))
 endef
 $(foreach v,$(VARIANTS),$(eval $(call test_rules,$(v))))
 
-# ---- feature fragments (bake tool, demo, bench, fuzz, soak) ----
+# ---- feature fragments (bake tool, demo, bench, fuzz, soak, libdragon API check, test ROM) ----
 -include $(sort $(wildcard mk/*.mk))
 
 .PHONY: FORCE
