@@ -1,11 +1,12 @@
 # charbody64: character-movement and collision runtime for N64 homebrew.
 #
 #   make / make lib   host static library            build/host/libcoll.a
-#   make n64          console library (VR4300)       build/n64/libcoll.a (+ symbol check)
-#   make test         every suite: native, big-endian MIPS under qemu, ASan+UBSan
+#   make n64          console library (VR4300, o64)  build/n64/libcoll.a, libccd.a (+ checks)
+#   make test         every suite: native, big-endian MIPS under qemu, ASan+UBSan, and the
+#                     emulated console (mupen64plus; make test-n64, mk/n64rom.mk)
 #   make deps         install toolchains and Debian sources (run automatically)
 #   make demo         the example on a bundled level (mk/demo.mk)
-#   make bench        benchmarks (mk/bench.mk)
+#   make bench        benchmarks (mk/bench.mk; console counts: make bench-n64)
 #
 # Feature fragments live in mk/*.mk and may add to TEST_PREREQS, N64_EXTRA, ALL_EXTRA.
 
@@ -24,6 +25,10 @@ UNITY_INC := -I$(DEPS)/unity/src -Ihost_tests/support
 LIB_SRCS   := $(sort $(wildcard src/math/*.c src/coll/*.c))
 CCD_NAMES  := ccd mpr support vec3 polytope
 CCD_SRCS   := $(addprefix $(DEPS)/libccd/src/,$(addsuffix .c,$(CCD_NAMES)))
+# The console gets only what src/coll calls: ccdMPRIntersect/ccdMPRPenetration (mpr.c) and
+# their helpers. ccd.c and polytope.c (GJK/EPA, used by the host benchmarks only) call
+# realloc, free, qsort and stdio.
+n64_CCD_SRCS := $(addprefix $(DEPS)/libccd/src/,mpr.c support.c vec3.c)
 SUPPORT_SRCS := $(sort $(wildcard host_tests/support/*.c))
 TEST_SRCS  := $(sort $(wildcard host_tests/test_*.c))
 TEST_NAMES := $(patsubst host_tests/%.c,%,$(TEST_SRCS))
@@ -61,31 +66,47 @@ asan_RUN     :=
 VARIANTS := host qemu asan
 
 # ---- console (VR4300): Debian's cross compiler, or libdragon's when N64_INST is set ----
+# Always the o64 ABI libdragon uses (GNU ld refuses to link o32 objects into an o64 game).
+# COLL_USE_LIBDRAGON_FMATH=1 builds the library against libdragon's fgeom.h instead of our
+# header-inline math (the default when N64_INST has an fgeom.h); the archive exports no fm_
+# symbol either way.
+N64_ARCH := -march=vr4300 -mtune=vr4300 -mfix4300 -mabi=o64
 ifdef N64_INST
 n64_CC := $(N64_INST)/bin/mips64-elf-gcc
-n64_AR := $(N64_INST)/bin/mips64-elf-ar
-n64_NM := $(N64_INST)/bin/mips64-elf-nm
-n64_READELF := $(N64_INST)/bin/mips64-elf-readelf
-n64_ARCH := -march=vr4300 -mtune=vr4300 -mfix4300 -mabi=o64
+n64_TOOLS := $(N64_INST)/bin/mips64-elf-
+COLL_USE_LIBDRAGON_FMATH ?= $(if $(wildcard $(N64_INST)/mips64-elf/include/fgeom.h),1,0)
 else
 n64_CC := mips-linux-gnu-gcc
-n64_AR := mips-linux-gnu-ar
-n64_NM := mips-linux-gnu-nm
-n64_READELF := mips-linux-gnu-readelf
-n64_ARCH := -march=vr4300 -mtune=vr4300 -mfix4300
+n64_TOOLS := mips-linux-gnu-
+COLL_USE_LIBDRAGON_FMATH ?= 0
 endif
+n64_AR := $(n64_TOOLS)ar
+n64_NM := $(n64_TOOLS)nm
+n64_READELF := $(n64_TOOLS)readelf
+n64_OBJDUMP := $(n64_TOOLS)objdump
+n64_ARCH := $(N64_ARCH)
 n64_CFLAGS := $(n64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno
+ifeq ($(COLL_USE_LIBDRAGON_FMATH),1)
+n64_CFLAGS += -DCOLL_USE_LIBDRAGON_FMATH $(if $(N64_INST),-isystem $(N64_INST)/mips64-elf/include)
+endif
 
 # obj dir per variant
 define variant_rules
 $(1)_OBJS := $$(patsubst %.c,$(BUILD)/$(1)/obj/%.o,$$(LIB_SRCS))
-$(1)_CCD_OBJS := $$(patsubst $(DEPS)/libccd/src/%.c,$(BUILD)/$(1)/ccd/%.o,$$(CCD_SRCS))
+$(1)_CCD_OBJS := $$(patsubst $(DEPS)/libccd/src/%.c,$(BUILD)/$(1)/ccd/%.o,$$(or $$($(1)_CCD_SRCS),$$(CCD_SRCS)))
+$(1)_FLAGS_STAMP := $(BUILD)/$(1)/.flags
 
-$(BUILD)/$(1)/obj/%.o: %.c | $(DEPS_STAMP)
+# Rewritten only when the compiler or its flags change, so every object depending on it
+# is rebuilt then (switching N64_INST, COLL_USE_LIBDRAGON_FMATH, ...) and only then.
+$(BUILD)/$(1)/.flags: FORCE
+	@mkdir -p $$(@D)
+	@echo '$$($(1)_CC) $$($(1)_CFLAGS)' | cmp -s - $$@ || echo '$$($(1)_CC) $$($(1)_CFLAGS)' > $$@
+
+$(BUILD)/$(1)/obj/%.o: %.c $(BUILD)/$(1)/.flags | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	$$($(1)_CC) $(STD) $(WARN) $$($(1)_CFLAGS) $(INC) $(CCD_INC) -MMD -MP -c $$< -o $$@
 
-$(BUILD)/$(1)/ccd/%.o: $(DEPS)/libccd/src/%.c | $(DEPS_STAMP)
+$(BUILD)/$(1)/ccd/%.o: $(DEPS)/libccd/src/%.c $(BUILD)/$(1)/.flags | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	$$($(1)_CC) -std=gnu11 -w $$($(1)_CFLAGS) $(CCD_INC) -c $$< -o $$@
 
@@ -127,8 +148,11 @@ $(1)_TESTS := $$(addprefix $(BUILD)/$(1)/tests/,$(TEST_NAMES))
 endef
 $(foreach v,$(VARIANTS),$(eval $(call test_rules,$(v))))
 
-# ---- feature fragments (bake tool, demo, bench, fuzz, soak) ----
+# ---- feature fragments (bake tool, demo, bench, fuzz, soak, libdragon API check, test ROM) ----
 -include $(sort $(wildcard mk/*.mk))
+
+.PHONY: FORCE
+FORCE:
 
 .PHONY: all lib n64 n64-check test test-host test-qemu test-asan deps clean
 all: lib $(ALL_EXTRA)
@@ -141,13 +165,15 @@ $(DEPS_STAMP): tools/deps.sh tools/deps-packages.txt
 
 n64: $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a n64-check $(N64_EXTRA)
 n64-check: $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a
-	bash tools/check_n64_lib.sh $< $(n64_NM) $(n64_READELF) $(BUILD)/n64/libccd.a
+	bash tools/check_n64_lib.sh $(if $(filter 1,$(COLL_USE_LIBDRAGON_FMATH)),--libdragon-fmath) \
+	    $(n64_TOOLS) $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a
+	bash tools/test_check_n64_lib.sh $(n64_CC) $(n64_TOOLS) "$(N64_ARCH)"
 
-# All three runs, one summary line at the end.
-test: $(host_TESTS) $(qemu_TESTS) $(asan_TESTS) $(TEST_PREREQS)
+# All runs (host, qemu, asan, and the emulated console: mk/n64rom.mk), one summary line at the end.
+test: $(host_TESTS) $(qemu_TESTS) $(asan_TESTS) $(TEST_PREREQS) $(N64ROM_ROMS)
 	bash tools/run_tests.sh host "$(host_RUN)" $(host_TESTS) -- \
 	                        qemu "$(qemu_RUN)" $(qemu_TESTS) -- \
-	                        asan "$(asan_RUN)" $(asan_TESTS)
+	                        asan "$(asan_RUN)" $(asan_TESTS) $(N64ROM_TEST_ARGS)
 
 # One run only (quicker while developing): make test-host [SUITES="test_math test_mesh"]
 SUITES ?= $(TEST_NAMES)
@@ -156,4 +182,4 @@ test-host test-qemu test-asan: test-%: $(TEST_PREREQS)
 	bash tools/run_tests.sh $* "$($*_RUN)" $(addprefix $(BUILD)/$*/tests/,$(SUITES))
 
 clean:
-	rm -rf $(BUILD)/host $(BUILD)/qemu $(BUILD)/asan $(BUILD)/n64
+	rm -rf $(BUILD)/host $(BUILD)/qemu $(BUILD)/asan $(BUILD)/n64 $(BUILD)/n64ld $(BUILD)/n64rom $(BUILD)/n64bench

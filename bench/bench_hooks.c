@@ -1,9 +1,17 @@
 /* Measured-call wrappers and trace markers. See bench_hooks.h. */
 #include "bench_hooks.h"
 
-/* The asm keeps the compiler from treating the markers as pure (and removing the calls). */
-__attribute__((noinline)) void bench_mark_begin(void) { __asm__ volatile("" ::: "memory"); }
-__attribute__((noinline)) void bench_mark_end(void) { __asm__ volatile("" ::: "memory"); }
+/* The asm keeps the compiler from treating the markers as pure (and removing the calls).
+ * The console test ROM (mk/n64bench.mk) builds this file with BENCH_MARK_HOOK naming a
+ * function that reads COP0 Count at each marker. */
+#ifdef BENCH_MARK_HOOK
+void BENCH_MARK_HOOK(int end);
+#define BENCH_MARK(end) BENCH_MARK_HOOK(end)
+#else
+#define BENCH_MARK(end) __asm__ volatile("" ::: "memory")
+#endif
+__attribute__((noinline)) void bench_mark_begin(void) { BENCH_MARK(0); }
+__attribute__((noinline)) void bench_mark_end(void) { BENCH_MARK(1); }
 
 __attribute__((noinline)) void bench_step(char_body_t *b, const coll_scene_t *s, float dt)
 {

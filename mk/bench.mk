@@ -1,6 +1,7 @@
 # Benchmarks (docs/BENCHMARKS.md): speed against accuracy of the capsule-triangle sweep
 # methods, the stability suite for every method, scaling with level size and grid cell,
-# and console instruction counts (big-endian MIPS, VR4300 code, counted under qemu).
+# and console instruction counts (big-endian MIPS, VR4300 code, counted under qemu, then on
+# the emulated console: make bench-n64, mk/n64rom_bench.mk).
 #
 #   make bench          everything; results in $(BUILD)/bench/, charts and tables copied
 #                       into docs/img/ and docs/BENCHMARKS.md (generated sections)
@@ -54,3 +55,4 @@ BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/test_course.
 bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
 bench: bench-bin $(BENCH_ASSETS) $(COLLBAKE)
 	bash bench/run.sh $(BENCH_OUT) $(ASSET_DIR) $(qemu_RUN) $(n64_NM) $(COLLBAKE)
+	$(MAKE) --no-print-directory bench-n64

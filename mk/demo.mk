@@ -61,22 +61,24 @@ preview-shot: $(PREVIEW_BIN) $(DEMO_ASSETS)
 
 # ---- console: the game logic must build unchanged with the VR4300 flags ----
 DEMO_N64_OBJS := $(patsubst $(DEMO_DIR)/%.c,$(BUILD)/n64/example/%.o,$(DEMO_GAME))
-$(BUILD)/n64/example/%.o: $(DEMO_DIR)/%.c | $(DEPS_STAMP)
+$(BUILD)/n64/example/%.o: $(DEMO_DIR)/%.c $(BUILD)/n64/.flags | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(n64_CC) $(STD) $(WARN) $(n64_CFLAGS) $(INC) -MMD -MP -c $< -o $@
 -include $(DEMO_N64_OBJS:.o=.d)
-# Besides our own API, the game logic may only use float math and mem* from libc.
+# Besides our own API, the game logic may only use float math and mem* from libc (and
+# libdragon's fm_ functions when built against its fgeom.h; ours are header-inline).
 DEMO_N64_LIBC := memcpy|memset|memmove|sqrtf|fabsf|floorf|ceilf|sinf|cosf|acosf|atan2f|tanf|fmodf
 n64-example: $(DEMO_N64_OBJS)
 	@bad=$$($(n64_NM) -u $(DEMO_N64_OBJS) | awk 'NF>=2{print $$2}' | sort -u | \
-	      grep -vE '^(game_|char_body_|coll_|fm_)' | grep -vxE '$(DEMO_N64_LIBC)' | tr '\n' ' '); \
+	      grep -vE '^(game_|char_body_|coll_$(if $(filter 1,$(COLL_USE_LIBDRAGON_FMATH)),|fm_))' | grep -vxE '$(DEMO_N64_LIBC)' | tr '\n' ' '); \
 	if [ -n "$$bad" ]; then echo "n64-example: the game logic uses $$bad(not on the console allow-list)"; exit 1; fi; \
 	echo "n64-example: game logic built for the VR4300, libc use: math and mem* only"
 N64_EXTRA += n64-example
 
-# With libdragon (N64_INST set) this builds a ROM through libdragon's n64.mk; this machine
-# has no libdragon, so the rule is here for users who do.
-n64-rom: $(DEMO_ASSETS)
+# With libdragon (N64_INST set) this builds a ROM through libdragon's n64.mk, after the
+# checked console archives it links; this machine has no libdragon, so the rule is here for
+# users who do.
+n64-rom: $(DEMO_ASSETS) $(BUILD)/n64/libcoll.a $(BUILD)/n64/libccd.a n64-check
 ifdef N64_INST
 	$(MAKE) -C $(DEMO_DIR)/n64 ASSETS=$(abspath $(BUILD)/assets) N64_INST=$(N64_INST)
 else

@@ -3,9 +3,16 @@
 #include <math.h>
 #include <string.h>
 
+/* The console test ROM (mk/n64rom.mk) builds this with smaller limits: 8 MiB of RAM. */
+#ifndef CB_GEO_MAX_V
 #define CB_GEO_MAX_V 65536
+#endif
+#ifndef CB_GEO_MAX_T
 #define CB_GEO_MAX_T 32768
+#endif
+#ifndef CB_ARENA_BYTES
 #define CB_ARENA_BYTES (8u << 20)
+#endif
 
 static float geo_v[CB_GEO_MAX_V * 3];
 static uint32_t geo_i[CB_GEO_MAX_T * 3];

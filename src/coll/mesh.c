@@ -252,11 +252,13 @@ typedef struct {
     uint32_t nbuckets; /* 0: dense grid; else hashed (power of two) */
 } grid_t;
 
+/* Grid indices and counts are converted as (float)(int32_t): they fit in an int32, and a
+ * uint32_t converts through double-precision code on MIPS (cvt.d.w, add.d, cvt.s.d). */
 static uint32_t cell_coord(float x, float origin, float inv, uint32_t dim)
 {
     float f = (x - origin) * inv;
     if (!(f > 0.0f)) return 0;
-    if (f >= (float)dim) return dim - 1u;
+    if (f >= (float)(int32_t)dim) return dim - 1u;
     uint32_t c = (uint32_t)f;
     return c < dim ? c : dim - 1u;
 }
@@ -287,9 +289,9 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
         for (uint32_t y = lo[1]; y <= hi[1]; y++) {
             for (uint32_t x = lo[0]; x <= hi[0]; x++) {
                 if (!single) {
-                    float c[3] = { g->origin[0] + ((float)x + 0.5f) * g->cell,
-                                   g->origin[1] + ((float)y + 0.5f) * g->cell,
-                                   g->origin[2] + ((float)z + 0.5f) * g->cell };
+                    float c[3] = { g->origin[0] + ((float)(int32_t)x + 0.5f) * g->cell,
+                                   g->origin[1] + ((float)(int32_t)y + 0.5f) * g->cell,
+                                   g->origin[2] + ((float)(int32_t)z + 0.5f) * g->cell };
                     if (!tri_box_overlap(tri, c, h)) continue;
                 }
                 uint32_t e;
@@ -546,7 +548,7 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
 
     /* Grid. */
     grid_t g;
-    choose_grid(m, opts ? opts->cell_size : 0.0f, nt ? extent_sum / (float)nt : 1.0f, &g);
+    choose_grid(m, opts ? opts->cell_size : 0.0f, nt ? extent_sum / (float)(int32_t)nt : 1.0f, &g);
     uint64_t ncells = (uint64_t)g.dims[0] * g.dims[1] * g.dims[2];
     if (g.nbuckets) {
         ncells = g.nbuckets;

@@ -462,7 +462,9 @@ static void center_capsule(const void *obj, ccd_vec3_t *out)
 
 static void ccd_setup(ccd_t *ccd)
 {
-    CCD_INIT(ccd);
+    /* CCD_INIT without first_dir: ccdFirstDirDefault lives in libccd's GJK/EPA file (ccd.c),
+     * which the console build leaves out; MPR starts from the centres and never reads it. */
+    *ccd = (ccd_t){ .epa_tolerance = CCD_REAL(0.0001), .dist_tolerance = CCD_REAL(1E-6) };
     ccd->support1 = support_body;
     ccd->support2 = support_capsule;
     ccd->center1 = center_body;

@@ -178,11 +178,13 @@ static float mesh_margin(const coll_mesh_t *m)
     return m->cell_size * 1e-3f + maxabs * 2e-6f;
 }
 
+/* Grid indices and counts are converted as (float)(int32_t): they fit in an int32, and a
+ * uint32_t converts through double-precision code on MIPS (cvt.d.w, add.d, cvt.s.d). */
 static uint32_t cell_of(float x, float origin, float inv, uint32_t dim)
 {
     float f = (x - origin) * inv;
     if (!(f > 0.0f)) return 0;
-    if (f >= (float)dim) return dim - 1u;
+    if (f >= (float)(int32_t)dim) return dim - 1u;
     uint32_t c = (uint32_t)f;
     return c < dim ? c : dim - 1u;
 }
@@ -466,7 +468,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
         int axis = -1;
         for (int a = 0; a < 3; a++) {
             if (!step[a]) continue;
-            float bound = m->grid_origin[a] + (float)(c[a] + (step[a] > 0 ? 1u : 0u)) * cs;
+            float bound = m->grid_origin[a] + (float)(int32_t)(c[a] + (step[a] > 0 ? 1u : 0u)) * cs;
             float s = (bound - o_l.v[a]) * inv_d[a];
             if (s < s_exit) { s_exit = s; axis = a; }
         }
@@ -652,7 +654,7 @@ static bool cell_misses(const coll_mesh_t *m, uint32_t cx, uint32_t cy, uint32_t
 {
     const uint32_t c[3] = { cx, cy, cz };
     for (int a = 0; a < 3; a++) {
-        float lo = m->grid_origin[a] + (float)c[a] * m->cell_size;
+        float lo = m->grid_origin[a] + (float)(int32_t)c[a] * m->cell_size;
         float hi = lo + m->cell_size;
         if (c[a] > 0u && lhi->v[a] < lo) return true;
         if (c[a] + 1u < m->dims[a] && llo->v[a] > hi) return true;

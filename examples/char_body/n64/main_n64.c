@@ -10,6 +10,9 @@
  * Levels come from the ROM filesystem (rom:/<name>.coll, baked on the PC, used in place).
  * Built by examples/char_body/n64/Makefile with libdragon's n64.mk; not built in CI.
  */
+#ifndef COLL_USE_LIBDRAGON_FMATH
+#define COLL_USE_LIBDRAGON_FMATH /* fm_vec3_t & co. from libdragon's fgeom.h (the Makefile sets it too) */
+#endif
 #include <libdragon.h>
 #include <math.h>
 #include <stdio.h>
