@@ -372,7 +372,7 @@ void game_step(game_t *g, const game_input_t *in, float dt)
         g->cam_step -= ev->step;
         g->stats.camera_steps++;
     }
-    g->cam_step *= expf(-12.0f * dt);
+    g->cam_step -= g->cam_step * game_clampf(12.0f * dt, 0.0f, 1.0f); /* eases back at 12 /s */
     if (ev->flags & CHAR_BODY_EVENT_LANDED) {
         int32_t f = char_body_floor_id(&g->body);
         if (f == GAME_ONE_WAY_ID) g->stats.one_way_landings++;

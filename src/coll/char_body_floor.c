@@ -46,7 +46,7 @@ static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur)
     fm_vec3_t v = cur;
     if (s > 1e-7f) {
         axis = cb_scale(axis, 1.0f / (s * lp * lc));
-        float ch = sqrtf(fmaxf(0.0f, 0.5f * (1.0f + co))), sh = sqrtf(fmaxf(0.0f, 0.5f * (1.0f - co)));
+        float ch = sqrtf(0.5f * (1.0f + co) > 0.0f ? 0.5f * (1.0f + co) : 0.0f), sh = sqrtf(0.5f * (1.0f - co) > 0.0f ? 0.5f * (1.0f - co) : 0.0f);
         /* Rodrigues, by half the angle; axis is perpendicular to cur */
         v = cb_add(cb_scale(cur, ch), cb_scale(cb_cross(axis, cur), sh));
     }

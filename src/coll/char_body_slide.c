@@ -424,7 +424,7 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
     float len = cb_len(d);
     if (!(len > 1e-6f)) return true;
     fm_vec3_t dir = cb_scale(d, 1.0f / len);
-    float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(fmaxf(0.0f, 1.0f - axial * axial));
+    float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(axial < 1.0f ? 1.0f - axial * axial : 0.0f);
     float reach = axial > 0.999f ? c->sweep_ihh : 0.0f;
     if (deep) {
         /* where the ray leaves the capsule: through the cylinder or through a cap */
