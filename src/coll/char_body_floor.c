@@ -145,17 +145,22 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
         bool met = cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2);
-        if (!met && n1u > 0.995f) {
+        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up) : 0.0f;
+        fm_vec3_t across = cb_norm(cb_reject(downhill, up));
+        if (!met && n1u > 0.995f && cb_len(across) > 0.5f) {
             /* Resting on an edge almost under its centre the tangent barely descends: the
-             * ball would drop off it, so roll once more at 45 degrees down (the far side of
-             * a gap a few millimetres lower than this one, a tile beside a tile). */
-            downhill = cb_norm(cb_madd(cb_norm(cb_reject(downhill, up)), up, -1.0f));
-            met = cb_len(downhill) > 0.5f && cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2) &&
-                  (h2.instance != h1.instance || h2.triangle != h1.triangle || h2.body != h1.body);
+             * ball would roll off it and drop. Move it off across up by a radius, then down
+             * by half a radius: the far side of a gap a few millimetres lower than this edge
+             * (a tile beside a tile) is met on the way. */
+            fm_vec3_t off = cb_scale(across, r);
+            met = cb_sweep(c, b1, r, 0.0f, off, &h2);
+            if (!met && cb_sweep(c, cb_add(b1, off), r, 0.0f, cb_scale(up, -0.5f * r), &h2)) {
+                met = true;
+                descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
+            }
         }
         if (!met || !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
             return false; /* rolls off (a ledge), or into a ceiling */
-        float descent = (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up);
         if (descent > 0.5f * r) return false;
         float c2 = cb_dot(cb_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
