@@ -98,8 +98,14 @@ static void test_bad_dt(void)
 
 static void test_bad_velocities_and_walls(void)
 {
+    /* A closed room: huge finite inputs ask for the fastest motion (200 m/s), so the body
+     * crosses it in one step and must stop at every wall, never pass one. */
     cb_level_floor(20.0f);
-    cb_geo_box(cb_vec(3.0f, 2.0f, 0.0f), cb_vec(0.5f, 2.0f, 20.0f), 0.0f); /* face x = 2.5 */
+    cb_geo_box(cb_vec(3.0f, 20.0f, 0.0f), cb_vec(0.5f, 20.0f, 20.0f), 0.0f);  /* face x = 2.5 */
+    cb_geo_box(cb_vec(-8.0f, 20.0f, 0.0f), cb_vec(0.5f, 20.0f, 20.0f), 0.0f); /* face x = -7.5 */
+    cb_geo_box(cb_vec(0.0f, 20.0f, 8.0f), cb_vec(20.0f, 20.0f, 0.5f), 0.0f);  /* face z = 7.5 */
+    cb_geo_box(cb_vec(0.0f, 20.0f, -8.0f), cb_vec(20.0f, 20.0f, 0.5f), 0.0f); /* face z = -7.5 */
+    cb_geo_box(cb_vec(0.0f, 40.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);  /* ceiling at 40 */
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);
@@ -111,6 +117,7 @@ static void test_bad_velocities_and_walls(void)
             body.velocity = cb_vec(vals[j], vals[i], -vals[j]);
             CB_STEP(&body, i == j ? 10.0f : DT);
             TEST_ASSERT_TRUE(cb_body_finite(&body));
+            TEST_ASSERT_TRUE(pos.x >= -7.0f - 1e-4f && fabsf(pos.z) <= 7.0f + 1e-4f);
             if (pos.x > max_x) max_x = pos.x;
             if (pos.y < min_y) min_y = pos.y;
         }

@@ -350,6 +350,13 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     fm_vec3_t pos = owner_position(body);
     body->velocity = clamp_speed(body->velocity);
     fm_vec3_t input = cb_finite(body->input_velocity) ? body->input_velocity : cb_v(0.0f, 0.0f, 0.0f);
+    /* Only the part across up is used. A huge one (its square overflows a float) is
+     * scaled down first, keeping its direction: it asks for the fastest motion, not none. */
+    input = cb_reject(input, s->up);
+    float big = fabsf(input.x) > fabsf(input.y) ? fabsf(input.x) : fabsf(input.y);
+    if (fabsf(input.z) > big) big = fabsf(input.z);
+    if (big > CB_MAX_SPEED) input = cb_scale(input, CB_MAX_SPEED / big);
+    if (!cb_finite(input)) input = cb_v(0.0f, 0.0f, 0.0f);
 
     bool was_grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
     bool was_steep = (body->flags & CB_FLAG_STEEP) != 0;
