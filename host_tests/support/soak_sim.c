@@ -258,6 +258,7 @@ int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
         m.grounded0 = char_body_is_on_floor(b);
         m.steep0 = char_body_is_on_steep_surface(b);
         m.pen0 = sim->excused || sim->pen_before > SOAK_PEN_TOL;
+        m.launched = sim->vel_before.x * s->up.x + sim->vel_before.y * s->up.y + sim->vel_before.z * s->up.z > 1e-6f;
     }
 
     char_body_move_and_slide_in(b, &sim->lvl->scene, f->dt);
@@ -293,7 +294,8 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
      * moves the body without velocity), or ended in an excused overlap */
     bool excused = m->excuse || m->pen0 || sim->excused;
     double inl = dlen3(inh);
-    bool walking = !excused && m->grounded0 && !m->steep0 && isfinite(inl) && inl > 1e-6;
+    /* walking: on a walkable floor and not launched off it by the game this step (a jump) */
+    bool walking = !excused && m->grounded0 && !m->steep0 && !m->launched && isfinite(inl) && inl > 1e-6;
     double along = 0;
     if (walking) along = (dh[0] * inh[0] + dh[1] * inh[1] + dh[2] * inh[2]) / inl;
 

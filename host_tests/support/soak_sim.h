@@ -254,6 +254,7 @@ typedef struct {
     bool grounded0, steep0;       ///< floor state before the step
     bool excuse;                  ///< teleport, up change, mover near or carried this frame
     bool pen0;                    ///< started overlapping (penetrating or in an excused state)
+    bool launched;                ///< the velocity along up before the step rose: a jump, not a walk
 } soak_motion_t;
 
 typedef struct {
