@@ -30,7 +30,8 @@ if os.path.exists(qcsv):
 else:
     text = open(doc).read()
     sect = text.split("### Console cost", 1)[-1].split("<!--", 1)[0]
-    names = {"32 bodies, one frame (per frame)": "crowd32"}
+    names = {"32 bodies, one frame (per frame)": "crowd32",
+             "32 bodies with own colliders, one frame (per frame)": "crowd32_col"}
     for m in re.finditer(r"^\| ([^|]+) \| (as baked|rebaked), ([0-9.]+) m \| [0-9,]+ \| ([0-9,]+) \| ([0-9,]+) \|", sect, re.M):
         scn = names.get(m.group(1).strip(), m.group(1).strip())
         cell = "0" if m.group(2) == "as baked" else "1"
@@ -47,7 +48,7 @@ P("Instructions per call counted by the console itself: the bench ROM (o64, `-mn
   "call.\n" % ("2.5.9 (cached interpreter)", overhead, source))
 P("| scenario | grid cell | console instr / call (mean) | console max | qemu mean | qemu max | console vs qemu, mean | max |")
 P("|---|---|---:|---:|---:|---:|---:|---:|")
-order = ["walk", "stairs", "vcorner", "platform", "crowd32"]
+order = ["walk", "stairs", "vcorner", "platform", "crowd32", "stairs_real", "crack", "crowd32_col"]
 for scn in order:
     for cell in ("0", "1"):
         w = runs.get((scn, cell))
@@ -56,7 +57,8 @@ for scn in order:
         v = [x - overhead for x in w]
         mean, mx = sum(v) / len(v), max(v)
         q = qemu.get((scn, cell))
-        label = "32 bodies, one frame (per frame)" if scn == "crowd32" else scn
+        label = {"crowd32": "32 bodies, one frame (per frame)",
+                 "crowd32_col": "32 bodies with own colliders, one frame (per frame)"}.get(scn, scn)
         c = ("as baked" if cell == "0" else "rebaked") + (", %s m" % q[2] if q else "")
         if q:
             P("| %s | %s | %s | %s | %s | %s | %+.1f %% | %+.1f %% |" % (

@@ -59,6 +59,7 @@ mips_one() {   # scenario cell-label asset-dir cell
 echo "bench: console instruction counts under qemu (slow: every instruction is logged; started first)"
 job mips_one empty 0 "$assets" 0
 for s in crowd32 platform vcorner stairs walk; do job mips_one $s 0 "$assets" 0; job mips_one $s 1 $C1; done
+for s in crowd32_col stairs_real crack; do job mips_one $s 0 "$assets" 0; done   # procedural scenes: one cell
 
 # ---------------------------------------------------------------- accuracy
 METHODS="exact disc:1 disc:2 disc:4 disc:8 disc:16 disc:32 \
@@ -117,13 +118,14 @@ for c in 0 0.5 1 2 4 8; do job cell_one $c; done
 host_one() {   # scenario cell-label asset-dir cell
     local s=$1 c=$2 name="host_${1}_$2"
     callgrind "$name" cost exact "$s" "$3" "$4"
-    local fn=bench_step; [ "$s" = crowd32 ] && fn=bench_frame
+    local fn=bench_step; case "$s" in crowd32*) fn=bench_frame ;; esac
     local ir calls; ir=$(cg_incl "$out/cg/$name.out" $fn)
     calls=$(sed -n 's/^calls=\([0-9]*\).*/\1/p' "$out/logs/$name.txt")
     local eff; eff=$(sed -n 's/.* cell=\([0-9.e+-]*\).*/\1/p' "$out/logs/$name.txt")
     echo "$s,$c,$((ir / calls)),$eff" > "$out/rows/host_${s}_$c.csv"
 }
 for s in walk stairs vcorner platform crowd32; do job host_one $s 0 "$assets" 0; job host_one $s 1 $C1; done
+for s in stairs_real crack crowd32_col; do job host_one $s 0 "$assets" 0; done
 
 wait
 
@@ -144,8 +146,9 @@ cat "$out/rows/cellwalk_0.csv" > "$out/cellwalk_auto.csv"
 
 overhead=$(sort -n "$out/logs/mips_empty_0.counts" | head -n 1)
 echo "scenario,cell,host_instr_per_move,mips_windows,mips_mean,mips_max,cell_eff" > "$out/console.csv"
-for s in walk stairs vcorner platform crowd32; do
+for s in walk stairs vcorner platform crowd32 stairs_real crack crowd32_col; do
     for c in 0 1; do
+        [ -f "$out/rows/host_${s}_$c.csv" ] || continue
         h=$(cut -d, -f3 "$out/rows/host_${s}_$c.csv")
         e=$(cut -d, -f4 "$out/rows/host_${s}_$c.csv")
         awk -v o="$overhead" -v s="$s" -v c="$c" -v h="$h" -v e="$e" \

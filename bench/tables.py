@@ -101,8 +101,9 @@ for r in rows("console.csv"):
     c = ("as baked, " if float(r["cell"]) == 0 else "rebaked, ") + f"{float(r['cell_eff']):.3g} m"
     mean, mx = float(r["mips_mean"]), float(r["mips_max"])
     label = r["scenario"]
-    if r["scenario"] == "crowd32":
-        label = "32 bodies, one frame (per frame)"
+    if r["scenario"] in ("crowd32", "crowd32_col"):
+        label = "32 bodies, one frame (per frame)" if r["scenario"] == "crowd32" else \
+            "32 bodies with own colliders, one frame (per frame)"
         h = int(r["host_instr_per_move"]) * 32
     else:
         h = int(r["host_instr_per_move"])

@@ -34,6 +34,8 @@ int main(void)
         {"vcorner", "0", "build/assets"},   {"vcorner", "1", "assets_c1"},
         {"platform", "0", "build/assets"},  {"platform", "1", "assets_c1"},
         {"crowd32", "0", "build/assets"},   {"crowd32", "1", "assets_c1"},
+        {"stairs_real", "0", "build/assets"}, {"crack", "0", "build/assets"},
+        {"crowd32_col", "0", "build/assets"},
     };
     int bad = 0;
     for (unsigned i = 0; i < sizeof runs / sizeof runs[0]; i++) {
