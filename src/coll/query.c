@@ -394,27 +394,36 @@ static void ray_local_box(const fm_vec3_t *o_l, const fm_vec3_t *d_l, float s0, 
     }
 }
 
-static void ray_test_tri(const coll_mesh_instance_t *inst, const coll_mesh_view_t *mv, const xf3_t *x,
-                         const fm_vec3_t *o_l, const fm_vec3_t *dir, const fm_vec3_t *llo, const fm_vec3_t *lhi,
-                         uint32_t t, ray_best_t *rb)
+/* One candidate triangle t of inst against the ray: first vertex w0 relative to the ray's
+ * origin, shape with shape[0] = 0 (the scene walk and the gathered scan both end here). */
+static void ray_tri(const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0, const fm_vec3_t shape[3],
+                    const fm_vec3_t *dir, ray_best_t *rb)
 {
-    fm_vec3_t v[3], tri[3], w0, o;
+    fm_vec3_t o;
     coll_prim_hit_t ph;
-    coll_mesh_view_tri(mv, t, v);
-    if (tri_box_reject(v, llo, lhi)) return; /* cheap local reject first */
-    tri_rel_of(v, x, o_l, &w0, tri);
-    fm_vec3_negate(&o, &w0);
+    fm_vec3_negate(&o, w0);
     fm_vec3_t u = one_way_up(inst);
-    if (!one_way_ray(&u, tri, &o, dir)) return;
-    if (coll_ray_triangle(&o, dir, tri, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
-        fm_vec3_add(&ph.point, &ph.point, &w0);
+    if (!one_way_ray(&u, shape, &o, dir)) return;
+    if (coll_ray_triangle(&o, dir, shape, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
+        fm_vec3_add(&ph.point, &ph.point, w0);
         rb->have = true;
         rb->best = ph.t;
         rb->ph = ph;
         rb->inst = inst;
         rb->body = NULL;
-        rb->tri = (int32_t)t;
+        rb->tri = t;
     }
+}
+
+static void ray_test_tri(const coll_mesh_instance_t *inst, const coll_mesh_view_t *mv, const xf3_t *x,
+                         const fm_vec3_t *o_l, const fm_vec3_t *dir, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+                         uint32_t t, ray_best_t *rb)
+{
+    fm_vec3_t v[3], tri[3], w0;
+    coll_mesh_view_tri(mv, t, v);
+    if (tri_box_reject(v, llo, lhi)) return; /* cheap local reject first */
+    tri_rel_of(v, x, o_l, &w0, tri);
+    ray_tri(inst, (int32_t)t, &w0, tri, dir, rb);
 }
 
 static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *origin,
@@ -678,6 +687,27 @@ static bool sweep_better(const coll_prim_hit_t *h, const sweep_best_t *sb)
     return h->t == sb->ph.t && h->t == 0.0f && h->depth > sb->ph.depth;
 }
 
+/* One candidate triangle t of inst (w0, shape as for ray_tri; u: the one-way up, zero for
+ * an ordinary instance) against the capsule sweep; true when it is the new best hit. */
+static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
+                      const fm_vec3_t shape[3], const fm_vec3_t *u, sweep_best_t *sb)
+{
+    fm_vec3_t seg[2];
+    fm_vec3_sub(&seg[0], &q->seg[0], w0);
+    fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    if (!one_way_capsule(u, shape, seg, q->r)) return false;
+    coll_prim_hit_t ph;
+    if (!coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best_t, &ph) || !sweep_better(&ph, sb)) return false;
+    fm_vec3_add(&ph.point, &ph.point, w0);
+    sb->have = true;
+    sb->best_t = ph.t;
+    sb->ph = ph;
+    sb->inst = inst;
+    sb->body = NULL;
+    sb->tri = t;
+    return true;
+}
+
 static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *center,
                            const capsule_q_t *q, seen_t *seen, sweep_best_t *sb)
 {
@@ -706,25 +736,13 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
                 for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
                     if (dedup && !seen_first(seen, t)) continue;
-                    fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
+                    fm_vec3_t v[3], shape[3], w0, tri[3];
                     coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue; /* cheap local reject first */
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
-                    fm_vec3_sub(&seg[0], &q->seg[0], &w0);
-                    fm_vec3_sub(&seg[1], &q->seg[1], &w0);
-                    if (!one_way_capsule(&up1, shape, seg, q->r)) continue;
-                    coll_prim_hit_t ph;
-                    if (coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best_t, &ph) &&
-                        sweep_better(&ph, sb)) {
-                        fm_vec3_add(&ph.point, &ph.point, &w0);
-                        sb->have = true;
-                        sb->best_t = ph.t;
-                        sb->ph = ph;
-                        sb->inst = inst;
-                        sb->body = NULL;
-                        sb->tri = (int32_t)t;
+                    if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &up1, sb)) {
                         swept_box(q, sb->best_t, &lo, &hi); /* shrink the sweep */
                         local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
                     }
@@ -872,6 +890,22 @@ static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape
     return mn > rr * rr * fm_vec3_len2(&n);
 }
 
+/* One candidate triangle t of inst (w0, shape, u as for sweep_tri) against the overlap query. */
+static void overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
+                        const fm_vec3_t shape[3], const fm_vec3_t *u, contacts_t *c)
+{
+    fm_vec3_t seg[2];
+    fm_vec3_sub(&seg[0], &q->seg[0], w0);
+    fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    if (plane_rejects(q->r, seg, shape)) return;
+    if (!one_way_capsule(u, shape, seg, q->r)) return;
+    coll_prim_hit_t ph;
+    if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
+        fm_vec3_add(&ph.point, &ph.point, w0);
+        contact_add(c, &ph, inst, NULL, t);
+    }
+}
+
 static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const capsule_q_t *q,
                              seen_t *seen, contacts_t *c)
 {
@@ -905,21 +939,13 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
                     int sc = dedup ? seen_check(seen, t) : SEEN_NEW;
                     if (sc == SEEN_BEFORE) continue;
                     if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
-                    fm_vec3_t v[3], shape[3], w0, tri[3], seg[2];
+                    fm_vec3_t v[3], shape[3], w0, tri[3];
                     coll_mesh_view_tri(&mv, t, v);
                     if (tri_box_reject(v, &llo, &lhi)) continue;
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
-                    fm_vec3_sub(&seg[0], &q->seg[0], &w0);
-                    fm_vec3_sub(&seg[1], &q->seg[1], &w0);
-                    if (plane_rejects(q->r, seg, shape)) continue;
-                    if (!one_way_capsule(&up1, shape, seg, q->r)) continue;
-                    coll_prim_hit_t ph;
-                    if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
-                        fm_vec3_add(&ph.point, &ph.point, &w0);
-                        contact_add(c, &ph, inst, NULL, (int32_t)t);
-                    }
+                    overlap_tri(q, inst, (int32_t)t, &w0, shape, &up1, c);
                 }
             }
     seen_clear(seen);
@@ -1083,24 +1109,8 @@ bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir
     rb.best = max_dist;
     rb.tri = -1;
     for (uint16_t k = 0; k < g->ntris; k++) {
-        fm_vec3_t w0, shape[3], o;
-        if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
-        fm_vec3_negate(&o, &w0);
-        const coll_mesh_instance_t *inst = g->tris[k].inst;
-        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
-            fm_vec3_t u = one_way_up(inst);
-            if (!one_way_ray(&u, shape, &o, &dir)) continue;
-        }
-        coll_prim_hit_t ph;
-        if (coll_ray_triangle(&o, &dir, shape, rb.best, &ph) && (!rb.have || ph.t < rb.best)) {
-            fm_vec3_add(&ph.point, &ph.point, &w0);
-            rb.have = true;
-            rb.best = ph.t;
-            rb.ph = ph;
-            rb.inst = inst;
-            rb.body = NULL;
-            rb.tri = g->tris[k].tri;
-        }
+        fm_vec3_t w0, shape[3];
+        if (gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) ray_tri(g->tris[k].inst, g->tris[k].tri, &w0, shape, &dir, &rb);
     }
     if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
     return ray_result(&rb, &origin, hit);
@@ -1124,26 +1134,11 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
     sb.best_t = 1.0f;
     sb.tri = -1;
     for (uint16_t k = 0; k < g->ntris; k++) {
-        fm_vec3_t w0, shape[3], seg[2];
+        fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
-        fm_vec3_sub(&seg[0], &q.seg[0], &w0);
-        fm_vec3_sub(&seg[1], &q.seg[1], &w0);
-        const coll_mesh_instance_t *inst = g->tris[k].inst;
-        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
-            fm_vec3_t u = one_way_up(inst);
-            if (!one_way_capsule(&u, shape, seg, q.r)) continue;
-        }
-        coll_prim_hit_t ph;
-        if (coll_tri_sweep(seg, q.r, &q.disp, shape, sb.best_t, &ph) && sweep_better(&ph, &sb)) {
-            fm_vec3_add(&ph.point, &ph.point, &w0);
-            sb.have = true;
-            sb.best_t = ph.t;
-            sb.ph = ph;
-            sb.inst = inst;
-            sb.body = NULL;
-            sb.tri = g->tris[k].tri;
+        fm_vec3_t u = one_way_up(g->tris[k].inst);
+        if (sweep_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &sb))
             swept_box(&q, sb.best_t, &lo, &hi); /* shrink the sweep */
-        }
     }
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
@@ -1165,21 +1160,10 @@ uint32_t coll_gather_capsule_overlaps(const coll_gather_t *g, fm_vec3_t center, 
                                      max_out);
     contacts_t c = { out, max_out, 0, 0, center };
     for (uint16_t k = 0; k < g->ntris; k++) {
-        fm_vec3_t w0, shape[3], seg[2];
+        fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &lo, &hi, &w0, shape)) continue;
-        fm_vec3_sub(&seg[0], &q.seg[0], &w0);
-        fm_vec3_sub(&seg[1], &q.seg[1], &w0);
-        if (plane_rejects(q.r, seg, shape)) continue;
-        const coll_mesh_instance_t *inst = g->tris[k].inst;
-        if (inst->flags & COLL_INSTANCE_ONE_WAY) {
-            fm_vec3_t u = one_way_up(inst);
-            if (!one_way_capsule(&u, shape, seg, q.r)) continue;
-        }
-        coll_prim_hit_t ph;
-        if (coll_capsule_triangle_overlap(seg, q.r, shape, &ph) && ph.depth > 0.0f) {
-            fm_vec3_add(&ph.point, &ph.point, &w0);
-            contact_add(&c, &ph, inst, NULL, g->tris[k].tri);
-        }
+        fm_vec3_t u = one_way_up(g->tris[k].inst);
+        overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &c);
     }
     if (g->types & COLL_TYPE_BODY) overlap_bodies(g->scene, &q, g->read_mask, &c);
     return c.total;
