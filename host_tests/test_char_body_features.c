@@ -15,11 +15,6 @@ static fm_vec3_t pos;
 void setUp(void) { cb_world_reset(); }
 void tearDown(void) {}
 
-static void report(const char *what, double value, const char *unit)
-{
-    printf("MEASURED %s = %.6g %s\n", what, value, unit);
-}
-
 /* ---- 1. ground velocity and momentum on leaving ---- */
 
 typedef enum { PLAT_STATIC, PLAT_TRANSLATE, PLAT_TURN, PLAT_LIFT } plat_kind_t;
@@ -107,7 +102,7 @@ static void momentum_case(plat_kind_t kind, float hz, const char *name)
     char label[96];
     snprintf(label, sizeof label, "jump off a %s platform at %.0f Hz: worst distance from the ballistic path", name,
              (double)hz);
-    report(label, worst, "m");
+    cb_report(label, worst, "m");
     TEST_ASSERT_TRUE(worst < 0.01f);
     float gl = sqrtf(gv.x * gv.x + gv.y * gv.y + gv.z * gv.z);
     TEST_ASSERT_TRUE(kind == PLAT_STATIC || gl > 1.0f);
@@ -221,7 +216,7 @@ static void test_bodies_block_head_on(void)
             head_on(speeds[i], rates[k], 0.0f, &worst, &passed);
             TEST_ASSERT_TRUE(passed < 0.0f); /* still facing each other: nobody went through */
         }
-    report("two bodies head-on, 1-10 m/s, 30-240 Hz: deepest overlap", worst, "m");
+    cb_report("two bodies head-on, 1-10 m/s, 30-240 Hz: deepest overlap", worst, "m");
     TEST_ASSERT_TRUE(worst <= 0.001f);
 }
 
@@ -229,7 +224,7 @@ static void test_bodies_slide_past(void)
 {
     float worst = 0.0f, passed;
     head_on(3.0f, 60.0f, 0.3f, &worst, &passed); /* offset by less than the sum of radii */
-    report("two bodies offset 0.3 m: deepest overlap", worst, "m");
+    cb_report("two bodies offset 0.3 m: deepest overlap", worst, "m");
     TEST_ASSERT_TRUE(worst <= 0.001f);
     TEST_ASSERT_TRUE(passed > 1.0f); /* slid past each other */
 }
@@ -279,7 +274,7 @@ static void test_32_bodies_milling(void)
             }
         }
     }
-    report("32 bodies milling 10000 frames: deepest overlap between bodies", worst, "m");
+    cb_report("32 bodies milling 10000 frames: deepest overlap between bodies", worst, "m");
     TEST_ASSERT_TRUE(worst <= 0.001f);
 }
 
@@ -299,7 +294,7 @@ static void test_events_landed_and_left(void)
         if (char_body_events(&body)->flags & CHAR_BODY_EVENT_LANDED) { landed++; speed = char_body_events(&body)->landing_speed; }
     }
     TEST_ASSERT_EQUAL_INT(1, landed);
-    report("landing speed after a 1.25 m fall (sqrt(2 g h) = 8.66)", speed, "m/s");
+    cb_report("landing speed after a 1.25 m fall (sqrt(2 g h) = 8.66)", speed, "m/s");
     TEST_ASSERT_FLOAT_WITHIN(0.6f, 8.66f, speed);
     TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
     /* jump: left the floor, jumped */
@@ -346,8 +341,8 @@ static void test_events_stepped(void)
         const char_body_events_t *e = char_body_events(&body);
         if (e->flags & CHAR_BODY_EVENT_STEPPED) { down_sum += e->step; downs++; }
     }
-    report("stepped up: sum of step events (0.4 m of risers)", up_sum, "m");
-    report("stepped down: sum of step events", down_sum, "m");
+    cb_report("stepped up: sum of step events (0.4 m of risers)", up_sum, "m");
+    cb_report("stepped down: sum of step events", down_sum, "m");
     TEST_ASSERT_EQUAL_INT(2, ups);
     TEST_ASSERT_EQUAL_INT(2, downs);
     TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.4f, up_sum);

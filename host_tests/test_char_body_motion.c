@@ -15,11 +15,6 @@ static fm_vec3_t pos;
 void setUp(void) { cb_world_reset(); }
 void tearDown(void) {}
 
-static void report(const char *what, double value, const char *unit)
-{
-    printf("MEASURED %s = %.6g %s\n", what, value, unit);
-}
-
 static fm_vec3_t cb_norm_test(fm_vec3_t a)
 {
     float l = sqrtf(a.x * a.x + a.y * a.y + a.z * a.z);
@@ -65,7 +60,7 @@ static void test_platform_translate(void)
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     }
     fm_vec3_t expect = cb_vec(9.0f, 1.0f, 0.0f);
-    report("platform translate: error after 3 s", dist3(pos, expect), "m");
+    cb_report("platform translate: error after 3 s", dist3(pos, expect), "m");
     TEST_ASSERT_TRUE(dist3(pos, expect) < 0.001f);
 }
 
@@ -89,9 +84,9 @@ static void test_platform_rotate(void)
         float e = dist3(pos, expect);
         if (e > worst) worst = e;
     }
-    report("platform rotate: worst error over 3 s (270 deg)", worst, "m");
-    report("platform rotate: final x (expect 0)", pos.x, "m");
-    report("platform rotate: final z (expect 2)", pos.z, "m");
+    cb_report("platform rotate: worst error over 3 s (270 deg)", worst, "m");
+    cb_report("platform rotate: final x (expect 0)", pos.x, "m");
+    cb_report("platform rotate: final z (expect 2)", pos.z, "m");
     TEST_ASSERT_TRUE(worst < 0.001f);
 }
 
@@ -110,7 +105,7 @@ static void test_platform_scale(void)
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     }
     fm_vec3_t expect = cb_vec(3.0f, 1.0f, 2.0f);
-    report("platform scale: error after 3 s", dist3(pos, expect), "m");
+    cb_report("platform scale: error after 3 s", dist3(pos, expect), "m");
     TEST_ASSERT_TRUE(dist3(pos, expect) < 0.001f);
 }
 
@@ -129,7 +124,7 @@ static void test_platform_elevator(void)
         float e = fabsf(pos.y - in->xf.pos.y);
         if (e > worst) worst = e;
     }
-    report("elevator: worst foot-platform gap", worst, "m");
+    cb_report("elevator: worst foot-platform gap", worst, "m");
     TEST_ASSERT_TRUE(worst < 0.001f);
 }
 
@@ -147,7 +142,7 @@ static void test_platform_no_follow(void)
         CB_STEP(&body, DT);
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     }
-    report("follow_floor off: body moved", dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)), "m");
+    cb_report("follow_floor off: body moved", dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)), "m");
     TEST_ASSERT_TRUE(dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)) < 0.001f);
 }
 
@@ -171,7 +166,7 @@ static void test_collider_body_not_carried(void)
         CB_STEP(&body, DT);
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     }
-    report("collider body: body moved (expect 0)", dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)), "m");
+    cb_report("collider body: body moved (expect 0)", dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)), "m");
     TEST_ASSERT_TRUE(dist3(pos, cb_vec(0.0f, 1.0f, 0.0f)) < 0.001f);
 }
 
@@ -197,8 +192,8 @@ static void test_moving_wall_pushes(void)
         if (pen > worst) worst = pen;
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     }
-    report("moving wall: worst penetration after a step (1.5 m/s push)", worst, "m");
-    report("moving wall: body pushed to x", pos.x, "m");
+    cb_report("moving wall: worst penetration after a step (1.5 m/s push)", worst, "m");
+    cb_report("moving wall: body pushed to x", pos.x, "m");
     TEST_ASSERT_TRUE(worst < 0.001f);
     TEST_ASSERT_FLOAT_WITHIN(0.01f, -3.0f + 1.5f * 2.0f + 1.0f, pos.x);
     /* removed from the scene: a platform no longer carries */
@@ -217,7 +212,7 @@ static void test_removed_platform_does_not_carry(void)
     TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_remove_mesh(&cb_world.scene, in));
     in->xf.pos.x = 100.0f; /* would carry the body 100 m */
     CB_STEP(&body, DT);
-    report("removed platform: x after its instance moved 100 m", pos.x, "m");
+    cb_report("removed platform: x after its instance moved 100 m", pos.x, "m");
     TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.x);
     for (int i = 0; i < 30; i++) CB_STEP(&body, DT);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
@@ -268,12 +263,12 @@ static void test_planet_walk_around(void)
             closest = dist3(cb_vec(prev.x + d.x * t, prev.y + d.y * t, prev.z + d.z * t), start);
         }
     }
-    report("planet: frames for one lap", frames, "");
-    report("planet: airborne frames", air, "");
-    report("planet: distance from the start when the lap closes", closest, "m");
-    report("planet: largest sideways deviation", max_lat, "m");
-    report("planet: foot radius min", min_r, "m");
-    report("planet: foot radius max", max_r, "m");
+    cb_report("planet: frames for one lap", frames, "");
+    cb_report("planet: airborne frames", air, "");
+    cb_report("planet: distance from the start when the lap closes", closest, "m");
+    cb_report("planet: largest sideways deviation", max_lat, "m");
+    cb_report("planet: foot radius min", min_r, "m");
+    cb_report("planet: foot radius max", max_r, "m");
     TEST_ASSERT_TRUE(around);
     TEST_ASSERT_EQUAL_INT(0, air);
     TEST_ASSERT_TRUE(closest < 0.05f);
@@ -295,8 +290,8 @@ static void test_up_change_midair(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, char_body_get_settings(&body)->up.x);
     for (int i = 0; i < 10; i++) CB_STEP(&body, DT);
     fm_vec3_t v = char_body_get_velocity(&body);
-    report("up change: x travelled after up = +x (falls towards -x)", pos.x - before.x, "m");
-    report("up change: y travelled", pos.y - before.y, "m");
+    cb_report("up change: x travelled after up = +x (falls towards -x)", pos.x - before.x, "m");
+    cb_report("up change: y travelled", pos.y - before.y, "m");
     TEST_ASSERT_TRUE(pos.x < before.x - 1.0f);
     TEST_ASSERT_TRUE(v.x < -5.0f);
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.0f, v.y);
@@ -334,10 +329,10 @@ static void test_far_from_origin(void)
         CB_STEP(&body, DT);
         if (pos.z > max_z) max_z = pos.z;
     }
-    report("5 km: standing drift over 3 s", drift, "m");
-    report("5 km: walking height error max", fmaxf(fabsf(hmax - o.y), fabsf(hmin - o.y)), "m");
-    report("5 km: walked in 3 s (expect 12)", walked, "m");
-    report("5 km: wall penetration (negative = gap)", max_z + 0.5f - 10.0f, "m");
+    cb_report("5 km: standing drift over 3 s", drift, "m");
+    cb_report("5 km: walking height error max", fmaxf(fabsf(hmax - o.y), fabsf(hmin - o.y)), "m");
+    cb_report("5 km: walked in 3 s (expect 12)", walked, "m");
+    cb_report("5 km: wall penetration (negative = gap)", max_z + 0.5f - 10.0f, "m");
     TEST_ASSERT_TRUE(drift < 0.001f);
     TEST_ASSERT_FLOAT_WITHIN(0.001f, o.y, hmin);
     TEST_ASSERT_FLOAT_WITHIN(0.001f, o.y, hmax);

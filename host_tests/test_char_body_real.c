@@ -17,11 +17,6 @@ static fm_vec3_t pos;
 void setUp(void) { cb_world_reset(); }
 void tearDown(void) {}
 
-static void report(const char *what, double value, const char *unit)
-{
-    printf("MEASURED %s = %.6g %s\n", what, value, unit);
-}
-
 static void body_with_radius(fm_vec3_t start, float radius, float height)
 {
     pos = start;
@@ -115,9 +110,9 @@ static void stairs_at(float hz)
             }
     char name[96];
     snprintf(name, sizeof name, "18 staircases at %.0f Hz: worst climb time / ideal", (double)hz);
-    report(name, worst_up, "");
+    cb_report(name, worst_up, "");
     snprintf(name, sizeof name, "18 staircases at %.0f Hz: worst descent time / ideal", (double)hz);
-    report(name, worst_down, "");
+    cb_report(name, worst_down, "");
     TEST_ASSERT_EQUAL_INT(0, failures);
 }
 static void test_staircases_30hz(void) { stairs_at(30.0f); }
@@ -337,7 +332,7 @@ static void overhang_push(float low, float hz)
     }
     char name[96];
     snprintf(name, sizeof name, "overhang low edge %.2f m at %.0f Hz: lowest grounded foot", (double)low, (double)hz);
-    report(name, lowest, "m");
+    cb_report(name, lowest, "m");
     TEST_ASSERT_TRUE(lowest > -0.001f);
 }
 
@@ -368,8 +363,8 @@ static void test_low_ledge_blocks(void)
             if (pos.y < lowest) lowest = pos.y;
             if (pos.x > max_x) max_x = pos.x;
         }
-        report("low ledge: lowest foot", lowest, "m");
-        report("low ledge: furthest x (ledge face at 1, capsule radius 0.4)", max_x, "m");
+        cb_report("low ledge: lowest foot", lowest, "m");
+        cb_report("low ledge: furthest x (ledge face at 1, capsule radius 0.4)", max_x, "m");
         TEST_ASSERT_TRUE(lowest > -0.001f);
         TEST_ASSERT_TRUE(max_x < 1.0f);
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));

@@ -15,11 +15,6 @@ static fm_vec3_t pos;
 void setUp(void) { cb_world_reset(); }
 void tearDown(void) {}
 
-static void report(const char *what, double value, const char *unit)
-{
-    printf("MEASURED %s = %.6g %s\n", what, value, unit);
-}
-
 /* 14. Terminal speed with dt = 1/20 onto a single triangle and onto a 1 cm slab. */
 static void test_fall_onto_single_triangle(void)
 {
@@ -33,7 +28,7 @@ static void test_fall_onto_single_triangle(void)
             CB_STEP(&body, 1.0f / 20.0f);
             if (pos.y < min_y) min_y = pos.y;
         }
-        if (k == 0) report("single triangle: lowest foot after a 55 m/s fall", min_y, "m");
+        if (k == 0) cb_report("single triangle: lowest foot after a 55 m/s fall", min_y, "m");
         TEST_ASSERT_TRUE(min_y > -0.26f); /* the foot may dip into the step zone for one frame, never through */
         TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
         TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
@@ -52,7 +47,7 @@ static void test_fall_onto_thin_slab_and_wall(void)
         CB_STEP(&body, 1.0f / 20.0f);
         if (pos.y < min_y) min_y = pos.y;
     }
-    report("1 cm slab: lowest foot after a 55 m/s fall (top 0)", min_y, "m");
+    cb_report("1 cm slab: lowest foot after a 55 m/s fall (top 0)", min_y, "m");
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
     /* into the wall at the speed limit, grounded and airborne */
@@ -68,7 +63,7 @@ static void test_fall_onto_thin_slab_and_wall(void)
         CB_STEP(&body, 1.0f / 20.0f);
         if (pos.x > max_x) max_x = pos.x;
     }
-    report("1 cm wall: closest capsule surface to the wall face 4.995 (negative = gap)", max_x + 0.5f - 4.995f, "m");
+    cb_report("1 cm wall: closest capsule surface to the wall face 4.995 (negative = gap)", max_x + 0.5f - 4.995f, "m");
     TEST_ASSERT_TRUE(max_x + 0.5f <= 4.995f + 1e-4f);
     TEST_ASSERT_TRUE(pos.y > -0.001f);
 }
@@ -90,7 +85,7 @@ static void test_bad_dt(void)
     /* 10 s steps are clamped to 0.1 s: the body moves 0.4 m per call and stays on the floor */
     fm_vec3_t before = pos;
     CB_STEP(&body, 10.0f);
-    report("dt = 10 s: distance moved in one call", pos.x - before.x, "m");
+    cb_report("dt = 10 s: distance moved in one call", pos.x - before.x, "m");
     TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.4f, pos.x - before.x);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_FLOAT_WITHIN(0.0001f, 0.0f, pos.y);
@@ -131,9 +126,9 @@ static void test_bad_velocities_and_walls(void)
         if (pos.y < min_y) min_y = pos.y;
     }
     fm_vec3_t v = char_body_get_velocity(&body);
-    report("bad velocities: furthest capsule surface past the wall face (negative = gap)", max_x + 0.5f - 2.5f, "m");
-    report("bad velocities: lowest foot", min_y, "m");
-    report("bad velocities: speed after huge input", sqrtf(v.x * v.x + v.y * v.y + v.z * v.z), "m/s");
+    cb_report("bad velocities: furthest capsule surface past the wall face (negative = gap)", max_x + 0.5f - 2.5f, "m");
+    cb_report("bad velocities: lowest foot", min_y, "m");
+    cb_report("bad velocities: speed after huge input", sqrtf(v.x * v.x + v.y * v.y + v.z * v.z), "m/s");
     TEST_ASSERT_TRUE(max_x + 0.5f <= 2.5f + 1e-4f);
     TEST_ASSERT_TRUE(min_y > -0.26f);
     TEST_ASSERT_TRUE(sqrtf(v.x * v.x + v.y * v.y + v.z * v.z) <= 200.0f + 1e-3f);
@@ -147,7 +142,7 @@ static void test_bad_velocities_and_walls(void)
     body.velocity = cb_vec(-1e6f, 3e5f, 1e6f);
     CB_STEP(&body, DT);
     v = char_body_get_velocity(&body);
-    report("bad velocities: speed after a 1.4e6 m/s velocity", sqrtf(v.x * v.x + v.y * v.y + v.z * v.z), "m/s");
+    cb_report("bad velocities: speed after a 1.4e6 m/s velocity", sqrtf(v.x * v.x + v.y * v.y + v.z * v.z), "m/s");
     TEST_ASSERT_TRUE(sqrtf(v.x * v.x + v.y * v.y + v.z * v.z) <= 200.0f + 1e-3f);
     TEST_ASSERT_TRUE(cb_body_finite(&body));
     char_body_teleport(&body, cb_vec(0.0f, 0.0f, 0.0f), true);
@@ -180,7 +175,7 @@ static void test_settings_clamped(void)
     TEST_ASSERT_TRUE(g->max_slides >= 1 && g->max_slides <= 8);
     TEST_ASSERT_TRUE(g->floor_max_angle <= 1.5708f);
     for (int i = 0; i < 20; i++) { CB_STEP(&body, DT); TEST_ASSERT_TRUE(cb_body_finite(&body)); }
-    report("zero-size body: foot height after 20 frames (floor 0)", char_body_foot_pos(&body).y, "m");
+    cb_report("zero-size body: foot height after 20 frames (floor 0)", char_body_foot_pos(&body).y, "m");
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_FLOAT_WITHIN(0.0001f, 0.0f, char_body_foot_pos(&body).y);
     s = CHAR_BODY_SETTINGS_DEFAULT;
@@ -252,7 +247,7 @@ static void size_into_wall(float r, float h, float step, float snap, float wall_
     float err = (wall_x - r - pos.x) / r;
     char name[96];
     snprintf(name, sizeof name, "radius %.2f m into a wall: rest gap relative to r", r);
-    report(name, err, "");
+    cb_report(name, err, "");
     TEST_ASSERT_TRUE(err >= 0.0f && err < 0.02f);
     TEST_ASSERT_TRUE(max_x <= wall_x - r);
 }
@@ -304,7 +299,7 @@ static void test_debug_draw_colours(void)
     CB_STEP(&body, DT);
     draw();
     int full = count(CHAR_BODY_COLOR_FULL);
-    report("debug draw: lines per frame", nlines, "");
+    cb_report("debug draw: lines per frame", nlines, "");
     TEST_ASSERT_TRUE(count(CHAR_BODY_COLOR_AIRBORNE) > 8);
     TEST_ASSERT_EQUAL_INT(full, count(CHAR_BODY_COLOR_AIRBORNE)); /* same wireframe, state colour */
     TEST_ASSERT_EQUAL_INT(0, count(CHAR_BODY_COLOR_FLOOR));
@@ -354,8 +349,8 @@ static void test_debug_draw_follows_up(void)
             checked++;
         }
     }
-    report("debug draw (up = (1,1,0)/sqrt2): full capsule line end off its surface", worst_full, "m");
-    report("debug draw (up = (1,1,0)/sqrt2): sweep capsule line end off its surface", worst_sweep, "m");
+    cb_report("debug draw (up = (1,1,0)/sqrt2): full capsule line end off its surface", worst_full, "m");
+    cb_report("debug draw (up = (1,1,0)/sqrt2): sweep capsule line end off its surface", worst_sweep, "m");
     TEST_ASSERT_TRUE(checked > 20);
     TEST_ASSERT_TRUE(worst_full < 1e-5f);
     TEST_ASSERT_TRUE(worst_sweep < 1e-5f);

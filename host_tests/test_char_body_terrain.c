@@ -15,11 +15,6 @@ static fm_vec3_t pos;
 void setUp(void) { cb_world_reset(); }
 void tearDown(void) {}
 
-static void report(const char *what, double value, const char *unit)
-{
-    printf("MEASURED %s = %.6g %s\n", what, value, unit);
-}
-
 /* 5. Ramps: up and down at 4 m/s, on floor every frame, ground speed within 5 %. */
 static void ramp(float deg)
 {
@@ -55,11 +50,11 @@ static void ramp(float deg)
     }
     char name[96];
     snprintf(name, sizeof name, "ramp %.0f deg: worst ground speed error up", deg);
-    report(name, worst_up * 100.0f, "%");
+    cb_report(name, worst_up * 100.0f, "%");
     snprintf(name, sizeof name, "ramp %.0f deg: worst ground speed error down", deg);
-    report(name, worst_down * 100.0f, "%");
+    cb_report(name, worst_down * 100.0f, "%");
     snprintf(name, sizeof name, "ramp %.0f deg: worst foot-surface gap", deg);
-    report(name, max_gap, "m");
+    cb_report(name, max_gap, "m");
     TEST_ASSERT_TRUE(worst_up < 0.05f);
     TEST_ASSERT_TRUE(worst_down < 0.05f);
     TEST_ASSERT_TRUE(max_gap < 0.001f);
@@ -93,8 +88,8 @@ static void test_drop_large_falls(void)
 {
     float min_y;
     int air = walk_off_drop(0.5f, &min_y);
-    report("drop 0.5 m: airborne frames", air, "");
-    report("drop 0.5 m: lowest foot (floor -0.5)", min_y, "m");
+    cb_report("drop 0.5 m: airborne frames", air, "");
+    cb_report("drop 0.5 m: lowest foot (floor -0.5)", min_y, "m");
     TEST_ASSERT_TRUE(air >= 2);
     TEST_ASSERT_TRUE(min_y > -0.501f);
 }
@@ -102,7 +97,7 @@ static void test_drop_small_snaps(void)
 {
     float min_y;
     int air = walk_off_drop(0.2f, &min_y);
-    report("drop 0.2 m: airborne frames", air, "");
+    cb_report("drop 0.2 m: airborne frames", air, "");
     TEST_ASSERT_EQUAL_INT(0, air);
     TEST_ASSERT_TRUE(min_y > -0.201f);
 }
@@ -144,11 +139,11 @@ static void stairs(float riser)
     }
     char name[96];
     snprintf(name, sizeof name, "stairs %.2f m: frames slower than 90%% of 4 m/s", riser);
-    report(name, slow_frames, "");
+    cb_report(name, slow_frames, "");
     snprintf(name, sizeof name, "stairs %.2f m: airborne frames", riser);
-    report(name, air_frames, "");
+    cb_report(name, air_frames, "");
     snprintf(name, sizeof name, "stairs %.2f m: worst foot-tread error", riser);
-    report(name, worst_tread_err, "m");
+    cb_report(name, worst_tread_err, "m");
     TEST_ASSERT_EQUAL_INT(0, slow_frames);
     TEST_ASSERT_EQUAL_INT(0, air_frames);
     TEST_ASSERT_TRUE(worst_tread_err < 0.001f);
@@ -173,8 +168,8 @@ static void test_riser_035_blocks(void)
         if (pos.y > max_y) max_y = pos.y;
     }
     /* The sweep capsule's bottom ball (centre 0.75 m up) meets the riser's top edge 0.3 m out. */
-    report("riser 0.35 m: furthest x (contact at -0.3)", max_x, "m");
-    report("riser 0.35 m: highest foot", max_y, "m");
+    cb_report("riser 0.35 m: furthest x (contact at -0.3)", max_x, "m");
+    cb_report("riser 0.35 m: highest foot", max_y, "m");
     TEST_ASSERT_TRUE(max_x < -0.3f);
     TEST_ASSERT_TRUE(max_x > -0.31f);
     TEST_ASSERT_TRUE(max_y < 0.001f);
@@ -204,8 +199,8 @@ static void test_slope_44_no_drift(void)
     }
     float dx = pos.x - start.x, dy = pos.y - start.y, dz = pos.z - start.z;
     float drift = sqrtf(dx * dx + dy * dy + dz * dz);
-    report("slope 44 deg: drift over 10 s", drift, "m");
-    report("slope 44 deg: foot-surface gap", pos.y - pos.x * tanf(44.0f * DEG), "m");
+    cb_report("slope 44 deg: drift over 10 s", drift, "m");
+    cb_report("slope 44 deg: foot-surface gap", pos.y - pos.x * tanf(44.0f * DEG), "m");
     TEST_ASSERT_TRUE(drift < 0.001f);
     TEST_ASSERT_FLOAT_WITHIN(0.001f, pos.x * tanf(44.0f * DEG), pos.y);
 }
@@ -232,15 +227,15 @@ static void slope_50_slides(float dt, int frames)
     float expect = 30.0f * s50 * dt * (float)(frames - first_steep); /* g sin(slope) t */
     char name[96];
     snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): frames to steep contact", 1.0f / dt);
-    report(name, first_steep, "");
+    cb_report(name, first_steep, "");
     snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): steep frames after contact (of %d)", 1.0f / dt, frames - first_steep);
-    report(name, steep_frames, "");
+    cb_report(name, steep_frames, "");
     snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): slide speed vs g sin(50) t", 1.0f / dt);
-    report(name, speed / expect, "");
+    cb_report(name, speed / expect, "");
     snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): drop", 1.0f / dt);
-    report(name, -pos.y, "m");
+    cb_report(name, -pos.y, "m");
     snprintf(name, sizeof name, "slope 50 deg (dt 1/%.0f): sweep capsule penetration", 1.0f / dt);
-    report(name, max_pen, "m");
+    cb_report(name, max_pen, "m");
     TEST_ASSERT_TRUE(first_steep >= 0 && first_steep < frames / 4);
     TEST_ASSERT_EQUAL_INT(frames - first_steep, steep_frames);
     TEST_ASSERT_FLOAT_WITHIN(0.05f * expect, expect, speed);
@@ -269,8 +264,8 @@ static void test_slope_50_no_climbing(void)
         CB_STEP(&body, DT);
         if (pos.y > max_y) max_y = pos.y;
     }
-    report("slope 50 deg pushing uphill: highest rise", max_y - y0, "m");
-    report("slope 50 deg pushing uphill: height change after 2 s", pos.y - y0, "m");
+    cb_report("slope 50 deg pushing uphill: highest rise", max_y - y0, "m");
+    cb_report("slope 50 deg pushing uphill: height change after 2 s", pos.y - y0, "m");
     TEST_ASSERT_TRUE(max_y - y0 < 0.001f);
     TEST_ASSERT_TRUE(pos.y < y0 - 0.5f);
     TEST_ASSERT_TRUE(pos.z > 1.0f); /* the sideways part still moves */
@@ -299,10 +294,10 @@ static void airborne_push(float dt, float speed, float jump)
     char name[96];
     snprintf(name, sizeof name, "slope 50 deg airborne push %.0f m/s jump %.0f (dt 1/%.0f): highest foot over the apex",
              speed, jump, 1.0f / dt);
-    report(name, max_over, "m");
+    cb_report(name, max_over, "m");
     snprintf(name, sizeof name, "slope 50 deg airborne push %.0f m/s jump %.0f (dt 1/%.0f): height after 2 s",
              speed, jump, 1.0f / dt);
-    report(name, pos.y, "m");
+    cb_report(name, pos.y, "m");
     TEST_ASSERT_TRUE(max_y <= apex + 0.001f);
     TEST_ASSERT_TRUE(pos.y < -0.5f);  /* slid down, not up */
     TEST_ASSERT_TRUE(pos.x < -1.0f);
@@ -333,7 +328,7 @@ static void test_ledge(void)
         if (past >= 0 && !char_body_is_on_floor(&body)) left_floor = i;
     }
     TEST_ASSERT_TRUE(past >= 0 && left_floor >= 0);
-    report("ledge: frames on floor with the centre past the edge", grounded_past, "");
+    cb_report("ledge: frames on floor with the centre past the edge", grounded_past, "");
     TEST_ASSERT_TRUE(grounded_past <= 2);
     /* keeps falling: never stalls on the edge */
     int stalled = 0;
@@ -344,8 +339,8 @@ static void test_ledge(void)
         if (pos.y >= prev_y - 1e-4f) stalled++;
         prev_y = pos.y;
     }
-    report("ledge: frames without descending in the first 12 of the fall", stalled, "");
-    report("ledge: sideways push while falling off", pos.x - x_fall, "m");
+    cb_report("ledge: frames without descending in the first 12 of the fall", stalled, "");
+    cb_report("ledge: sideways push while falling off", pos.x - x_fall, "m");
     TEST_ASSERT_TRUE(stalled <= 2);
     TEST_ASSERT_TRUE(pos.y < -0.8f);
     /* walking back towards the ledge while falling never gets back onto it */
@@ -356,7 +351,7 @@ static void test_ledge(void)
         if (pos.y > max_y_back) max_y_back = pos.y;
         TEST_ASSERT_TRUE(pos.x > -0.001f || pos.y > -0.001f); /* foot never inside the block */
     }
-    report("ledge: highest foot while pushing back (ledge top 0)", max_y_back, "m");
+    cb_report("ledge: highest foot while pushing back (ledge top 0)", max_y_back, "m");
     TEST_ASSERT_TRUE(max_y_back < -0.5f);
     TEST_ASSERT_FLOAT_WITHIN(0.001f, -5.0f, pos.y);
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
@@ -396,8 +391,8 @@ static void test_ledge_no_walk_back_early(void)
         if (pos.y > max_y) max_y = pos.y;
         if (char_body_is_on_floor(&body) && pos.y > -1.0f) on_ledge++;
     }
-    report("ledge early turn-back: foot height when turning (ledge top 0)", turn_y, "m");
-    report("ledge early turn-back: highest foot afterwards", max_y, "m");
+    cb_report("ledge early turn-back: foot height when turning (ledge top 0)", turn_y, "m");
+    cb_report("ledge early turn-back: highest foot afterwards", max_y, "m");
     TEST_ASSERT_TRUE(turn_y < 0.0f && turn_y > -0.25f);
     TEST_ASSERT_EQUAL_INT(0, on_ledge);
     TEST_ASSERT_TRUE(max_y < 0.0f);
@@ -423,9 +418,9 @@ static void test_coplanar_seams(void)
     }
     float dx = pos.x + 10.0f, dz = pos.z + 10.0f;
     float dist = sqrtf(dx * dx + dz * dz), expect = sp * DT * (float)frames;
-    report("seams: height variation", max_y - min_y, "m");
-    report("seams: distance error", (dist / expect - 1.0f) * 100.0f, "%");
-    report("seams: lateral error", dx - dz, "m");
+    cb_report("seams: height variation", max_y - min_y, "m");
+    cb_report("seams: distance error", (dist / expect - 1.0f) * 100.0f, "%");
+    cb_report("seams: lateral error", dx - dz, "m");
     TEST_ASSERT_TRUE(max_y - min_y < 0.0001f);
     TEST_ASSERT_FLOAT_WITHIN(0.001f * expect, expect, dist);
 }
@@ -458,9 +453,9 @@ static void test_tessellated_wall_slide(void)
         if (pos.x > max_x) max_x = pos.x;
         if (fabsf(pos.y) > max_bump) max_bump = fabsf(pos.y);
     }
-    report("tessellated wall: worst per-frame speed loss", worst_loss * 100.0f, "%");
-    report("tessellated wall: penetration (negative = gap)", max_x + 0.5f - 3.0f, "m");
-    report("tessellated wall: bump", max_bump, "m");
+    cb_report("tessellated wall: worst per-frame speed loss", worst_loss * 100.0f, "%");
+    cb_report("tessellated wall: penetration (negative = gap)", max_x + 0.5f - 3.0f, "m");
+    cb_report("tessellated wall: bump", max_bump, "m");
     TEST_ASSERT_TRUE(worst_loss < 0.01f);
     TEST_ASSERT_TRUE(max_x + 0.5f - 3.0f < 0.0f);
     TEST_ASSERT_TRUE(max_bump < 0.0001f);

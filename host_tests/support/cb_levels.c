@@ -1,6 +1,7 @@
 /* Procedural test geometry for the character-body suites (see cb_levels.h). */
 #include "cb_levels.h"
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* The console test ROM (mk/n64rom.mk) builds this with smaller limits: 8 MiB of RAM. */
@@ -179,4 +180,9 @@ bool cb_body_finite(const char_body_t *body)
 {
     fm_vec3_t p = char_body_foot_pos(body), v = char_body_get_velocity(body);
     return isfinite(p.x) && isfinite(p.y) && isfinite(p.z) && isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+void cb_report(const char *what, double value, const char *unit)
+{
+    printf("MEASURED %s = %.6g %s\n", what, value, unit);
 }

@@ -54,6 +54,8 @@ static inline fm_vec3_t cb_vec(float x, float y, float z) { fm_vec3_t v = {{x, y
 char_body_settings_t cb_foot_settings(void);
 /** Inits body on *pos with cb_foot_settings(). */
 void cb_body_init(char_body_t *body, fm_vec3_t *pos, fm_vec3_t start);
+/** Prints a measured figure as "MEASURED what = value unit" (the suites' result lines). */
+void cb_report(const char *what, double value, const char *unit);
 /** True when position and velocity are finite. */
 bool cb_body_finite(const char_body_t *body);
 
