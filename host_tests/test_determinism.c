@@ -61,21 +61,6 @@ static void assert_same_bits(const fm_vec3_t *a, const fm_vec3_t *b, const char 
             TEST_FAIL_MESSAGE(msg);
         }
     }
-    /* generator version 2 (cracks, slots, tiles, overhangs, staircases); version 1 above
-     * must stay as it is: replays without a `gen` line regenerate their level with it */
-    static const struct { uint64_t seed, hash; } ref2[] = {
-        {1, 0x1cf74c5cc5811629ull}, {2, 0x82540a32be551c5eull}, {0xDEADBEEFull, 0x98fa62cb41e44f05ull},
-    };
-    for (unsigned i = 0; i < sizeof ref2 / sizeof ref2[0]; i++) {
-        TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl_a, ref2[i].seed, SOAK_GEN_CURRENT));
-        uint64_t h = soak_level_hash(&lvl_a);
-        if (h != ref2[i].hash) {
-            char msg[120];
-            snprintf(msg, sizeof msg, "gen 2 seed %llu: level hash 0x%016llxull", (unsigned long long)ref2[i].seed,
-                     (unsigned long long)h);
-            TEST_FAIL_MESSAGE(msg);
-        }
-    }
 }
 
 static void test_prng_is_splitmix64(void)
@@ -101,23 +86,37 @@ static void test_own_trig_matches_libm(void)
     }
 }
 
+typedef struct { uint64_t seed, hash; } level_hash_t;
+
+/* Every reference seed of generator version `gen` builds the level with the recorded hash. */
+static void check_level_hashes(int gen, const level_hash_t *ref, unsigned n)
+{
+    for (unsigned i = 0; i < n; i++) {
+        TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl_a, ref[i].seed, gen));
+        uint64_t h = soak_level_hash(&lvl_a);
+        if (h != ref[i].hash) {
+            char msg[120];
+            snprintf(msg, sizeof msg, "gen %d seed %llu: level hash 0x%016llxull", gen,
+                     (unsigned long long)ref[i].seed, (unsigned long long)h);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    }
+}
+
 /* Hashes recorded on x86-64; big-endian MIPS under qemu must produce the same levels, or
  * replay files (which store only the level seed) would not reproduce across platforms. */
 static void test_level_generation_is_platform_independent(void)
 {
-    static const struct { uint64_t seed, hash; } ref[] = {
+    static const level_hash_t ref1[] = {
         {1, 0xb8788e1298f95662ull}, {2, 0x43c55ba4119d0bf2ull}, {0xDEADBEEFull, 0x687431ff67e92df6ull},
     };
-    for (unsigned i = 0; i < sizeof ref / sizeof ref[0]; i++) {
-        TEST_ASSERT_EQUAL_INT(0, soak_level_generate(&lvl_a, ref[i].seed));
-        uint64_t h = soak_level_hash(&lvl_a);
-        if (h != ref[i].hash) {
-            char msg[120];
-            snprintf(msg, sizeof msg, "seed %llu: level hash 0x%016llxull", (unsigned long long)ref[i].seed,
-                     (unsigned long long)h);
-            TEST_FAIL_MESSAGE(msg);
-        }
-    }
+    check_level_hashes(SOAK_GEN_V1, ref1, sizeof ref1 / sizeof ref1[0]);
+    /* generator version 2 (cracks, slots, tiles, overhangs, staircases); version 1 above
+     * must stay as it is: replays without a `gen` line regenerate their level with it */
+    static const level_hash_t ref2[] = {
+        {1, 0x1cf74c5cc5811629ull}, {2, 0x82540a32be551c5eull}, {0xDEADBEEFull, 0x98fa62cb41e44f05ull},
+    };
+    check_level_hashes(SOAK_GEN_CURRENT, ref2, sizeof ref2 / sizeof ref2[0]);
 }
 
 static void test_level_has_every_piece_kind_somewhere(void)
