@@ -33,15 +33,7 @@ static void body_with_radius(fm_vec3_t start, float radius, float height)
 /* Ten steps rising along +x from x = 0, a landing beyond; the owner position is the foot. */
 static void build_stairs(float tread, float riser, int steps)
 {
-    float xs[2 * 16 + 4], ys[2 * 16 + 4];
-    int n = 0;
-    xs[n] = -30.0f; ys[n++] = 0.0f;
-    for (int k = 0; k < steps; k++) {
-        xs[n] = (float)k * tread; ys[n++] = (float)k * riser;
-        xs[n] = (float)k * tread; ys[n++] = (float)(k + 1) * riser;
-    }
-    xs[n] = 30.0f; ys[n++] = (float)steps * riser;
-    cb_geo_profile(xs, ys, n, -5.0f, 5.0f);
+    cb_geo_stairs(tread, riser, steps, -5.0f, 5.0f);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
 }
 

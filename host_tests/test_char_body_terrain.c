@@ -108,15 +108,7 @@ static void stairs(float riser)
     cb_world_reset();
     const int steps = 8;
     const float tread = 0.5f;
-    float xs[2 * 8 + 4], ys[2 * 8 + 4];
-    int n = 0;
-    xs[n] = -30.0f; ys[n++] = 0.0f;
-    for (int k = 0; k < steps; k++) {
-        xs[n] = (float)k * tread; ys[n++] = (float)k * riser;
-        xs[n] = (float)k * tread; ys[n++] = (float)(k + 1) * riser;
-    }
-    xs[n] = 30.0f; ys[n++] = (float)steps * riser;
-    cb_geo_profile(xs, ys, n, -5.0f, 5.0f);
+    cb_geo_stairs(tread, riser, steps, -5.0f, 5.0f);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
     CB_STEP(&body, DT);

@@ -74,6 +74,20 @@ void cb_geo_profile(const float *xs, const float *ys, int n, float z0, float z1)
                     cb_vec(xs[i + 1], ys[i + 1], z0));
 }
 
+void cb_geo_stairs(float tread, float riser, int steps, float z0, float z1)
+{
+    float xs[2 * CB_GEO_MAX_STAIRS + 2], ys[2 * CB_GEO_MAX_STAIRS + 2];
+    if (steps > CB_GEO_MAX_STAIRS) steps = CB_GEO_MAX_STAIRS;
+    int n = 0;
+    xs[n] = -30.0f; ys[n++] = 0.0f;
+    for (int k = 0; k < steps; k++) {
+        xs[n] = (float)k * tread; ys[n++] = (float)k * riser;
+        xs[n] = (float)k * tread; ys[n++] = (float)(k + 1) * riser;
+    }
+    xs[n] = 30.0f; ys[n++] = (float)steps * riser;
+    cb_geo_profile(xs, ys, n, z0, z1);
+}
+
 void cb_geo_grid(float half, int n, float height)
 {
     float cell = 2.0f * half / (float)n;

@@ -20,6 +20,10 @@ void cb_geo_quad(fm_vec3_t a, fm_vec3_t b, fm_vec3_t c, fm_vec3_t d);
 void cb_geo_box(fm_vec3_t center, fm_vec3_t half, float yaw);
 /** A profile polyline in the X-Y plane (xs[i], ys[i]) extruded from z0 to z1. */
 void cb_geo_profile(const float *xs, const float *ys, int n, float z0, float z1);
+/** A staircase profile extruded from z0 to z1: flat ground from x = -30, `steps` (at most
+ *  CB_GEO_MAX_STAIRS) risers rising along +x from x = 0, a landing to x = 30. */
+#define CB_GEO_MAX_STAIRS 16
+void cb_geo_stairs(float tread, float riser, int steps, float z0, float z1);
 /** Flat grid of (n x n) cells, each two triangles, on y = height, x and z in [-half, half]. */
 void cb_geo_grid(float half, int n, float height);
 /** Latitude-longitude sphere (outward faces). */
