@@ -123,21 +123,7 @@ static double pt_seg_dist(const double p[3], const double a[3], const double b[3
 
 void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule_t *sweep)
 {
-    const char_body_settings_t *s = &b->settings;
-    const fm_vec3_t *o = b->owner_pos;
-    double c[3] = {(double)o->x + s->center_offset.x, (double)o->y + s->center_offset.y,
-                   (double)o->z + s->center_offset.z};
-    double up[3] = {s->up.x, s->up.y, s->up.z};
-    double h = (double)s->height * 0.5 - s->radius;
-    if (h < 0) h = 0;
-    double step = s->step_height;
-    for (int k = 0; k < 3; k++) {
-        full->a[k] = c[k] - up[k] * h;
-        full->b[k] = c[k] + up[k] * h;
-        sweep->a[k] = c[k] - up[k] * (h - step);
-        sweep->b[k] = full->b[k];
-    }
-    full->r = sweep->r = s->radius;
+    soak_capsules_at(&b->settings, *b->owner_pos, full, sweep);
 }
 
 static bool tri_seen(uint8_t mask, const char_body_settings_t *s)

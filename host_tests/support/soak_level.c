@@ -406,6 +406,20 @@ static int build_mesh(soak_level_t *l, soak_piece_t *p)
     return 0;
 }
 
+/* A world triangle's bounding sphere: centroid and the farthest corner from it. */
+static void wtri_bound(soak_wtri_t *w)
+{
+    double c[3], rad = 0;
+    for (int k = 0; k < 3; k++) c[k] = (w->v[0][k] + w->v[1][k] + w->v[2][k]) / 3.0;
+    for (int j = 0; j < 3; j++) {
+        double d = sqrt((w->v[j][0] - c[0]) * (w->v[j][0] - c[0]) + (w->v[j][1] - c[1]) * (w->v[j][1] - c[1]) +
+                        (w->v[j][2] - c[2]) * (w->v[j][2] - c[2]));
+        if (d > rad) rad = d;
+    }
+    memcpy(w->c, c, sizeof c);
+    w->rad = rad;
+}
+
 /* World-space double copy of a static piece's triangles (the checker's data). */
 static void world_tris(soak_level_t *l, const soak_piece_t *p)
 {
@@ -420,15 +434,7 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
             dv3 wv = v_add(pos, q_rot(q, lv));
             w->v[j][0] = wv.x; w->v[j][1] = wv.y; w->v[j][2] = wv.z;
         }
-        double c[3], rad = 0;
-        for (int k = 0; k < 3; k++) c[k] = (w->v[0][k] + w->v[1][k] + w->v[2][k]) / 3.0;
-        for (int j = 0; j < 3; j++) {
-            double d = sqrt((w->v[j][0] - c[0]) * (w->v[j][0] - c[0]) + (w->v[j][1] - c[1]) * (w->v[j][1] - c[1]) +
-                            (w->v[j][2] - c[2]) * (w->v[j][2] - c[2]));
-            if (d > rad) rad = d;
-        }
-        memcpy(w->c, c, sizeof c);
-        w->rad = rad;
+        wtri_bound(w);
         w->mask = p->inst.write_mask;
     }
 }
@@ -764,15 +770,7 @@ int soak_level_load(soak_level_t *l, const char *blob_path, const char *raw_path
                 if (f > l->hi[k]) l->hi[k] = f;
             }
         }
-        double c[3], rad = 0;
-        for (int k = 0; k < 3; k++) c[k] = (w->v[0][k] + w->v[1][k] + w->v[2][k]) / 3.0;
-        for (int j = 0; j < 3; j++) {
-            double d = sqrt((w->v[j][0] - c[0]) * (w->v[j][0] - c[0]) + (w->v[j][1] - c[1]) * (w->v[j][1] - c[1]) +
-                            (w->v[j][2] - c[2]) * (w->v[j][2] - c[2]));
-            if (d > rad) rad = d;
-        }
-        memcpy(w->c, c, sizeof c);
-        w->rad = rad;
+        wtri_bound(w);
         w->mask = 0x01;
     }
     free(raw);
