@@ -66,6 +66,18 @@ static void *read_file(const char *path, size_t *size)
     return buf;
 }
 
+/* Whole file as a NUL-terminated string, or NULL. */
+static char *read_text(const char *path)
+{
+    size_t size = 0;
+    char *txt = read_file(path, &size);
+    if (!txt) return NULL;
+    char *t = realloc(txt, size + 1);
+    if (!t) { free(txt); return NULL; }
+    t[size] = 0;
+    return t;
+}
+
 static void *read_asset(const char *name, const char *suffix, size_t *size)
 {
     char path[512];
@@ -95,12 +107,8 @@ static const coll_mesh_t *load_asset(const char *name, const char *suffix, void 
 /* "key value..." line of a small text file; returns how many floats were parsed. */
 static int find_key(const char *path, const char *key, double *vals, int maxvals)
 {
-    size_t size = 0;
-    char *txt = read_file(path, &size);
-    if (!txt) return -1;
-    char *t = realloc(txt, size + 1);
-    if (!t) { free(txt); return -1; }
-    t[size] = 0;
+    char *t = read_text(path);
+    if (!t) return -1;
     int n = 0;
     size_t klen = strlen(key);
     for (char *line = t; line && *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
@@ -473,20 +481,24 @@ static void test_quantized_blobs_stay_within_the_reported_error(void)
     }
 }
 
+/* A tool test's results.tsv (assets/<sub>/results.tsv) as text; fails the test naming
+ * the make target that writes it when it is missing. */
+static char *read_results(const char *sub, const char *missing)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s/results.tsv", asset_dir(), sub);
+    char *t = read_text(path);
+    TEST_ASSERT_NOT_NULL_MESSAGE(t, missing);
+    return t;
+}
+
 /* collbake's Quake III BSP reader and loss rule (tools/collbake/test_bsp.sh, ASan build):
  * the tiny generated BSP bakes to the expected triangles and bounds, every broken copy is
  * refused with an ERROR line naming the file, random corruption never crashes, and a bake
  * keeping under half its input triangles is refused. */
 static void test_bsp_reader_and_loss_rule(void)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/bsp/results.tsv", asset_dir());
-    size_t size = 0;
-    char *txt = read_file(path, &size);
-    TEST_ASSERT_NOT_NULL_MESSAGE(txt, "no BSP test results (make bsp-test)");
-    char *t = realloc(txt, size + 1);
-    TEST_ASSERT_NOT_NULL(t);
-    t[size] = 0;
+    char *t = read_results("bsp", "no BSP test results (make bsp-test)");
     int ok = 0, bad = 0, refused = 0;
     bool good = false, loss = false;
     char *save = NULL;
@@ -512,14 +524,7 @@ static void test_bsp_reader_and_loss_rule(void)
 /* assimp-testmodels and the must-refuse inputs: no crash, every baked blob loads. */
 static void test_testmodels_bake_and_load_or_are_refused(void)
 {
-    char path[512];
-    snprintf(path, sizeof path, "%s/testmodels/results.tsv", asset_dir());
-    size_t size = 0;
-    char *txt = read_file(path, &size);
-    TEST_ASSERT_NOT_NULL_MESSAGE(txt, "no testmodels results (make bake-testmodels)");
-    char *t = realloc(txt, size + 1);
-    TEST_ASSERT_NOT_NULL(t);
-    t[size] = 0;
+    char *t = read_results("testmodels", "no testmodels results (make bake-testmodels)");
     int baked = 0, refused = 0, crashed = 0, must_refuse = 0, must_weld = 0, loaded = 0;
     uint64_t tris = 0;
     char *save = NULL;
