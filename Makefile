@@ -18,7 +18,10 @@ DEPS_STAMP := $(DEPS)/.stamp
 
 WARN := -Wall -Wextra -Werror -pedantic -Wdouble-promotion -Wshadow
 STD  := -std=c11
-INC  := -Iinclude -Isrc
+INC  := -Iinclude
+# Private headers (src/coll/*.h) are reachable only by name, and only where asked for:
+# the library includes them from its own directory; tests, bench, fuzz and tools add this.
+PRIV_INC := -Isrc/coll
 CCD_INC := -I$(DEPS)/libccd/src
 UNITY_INC := -I$(DEPS)/unity/src -Ihost_tests/support
 
@@ -135,7 +138,7 @@ $(BUILD)/$(1)/unity/unity.o: $(DEPS)/unity/src/unity.c | $(DEPS_STAMP)
 
 $(BUILD)/$(1)/obj/host_tests/%.o: host_tests/%.c | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	$$($(1)_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $$($(1)_CFLAGS) $(INC) $(CCD_INC) $(UNITY_INC) -MMD -MP -c $$< -o $$@
+	$$($(1)_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $$($(1)_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) $(UNITY_INC) -MMD -MP -c $$< -o $$@
 
 $(BUILD)/$(1)/tests/%: $(BUILD)/$(1)/obj/host_tests/%.o $$($(1)_SUPPORT_OBJS) $$($(1)_UNITY_OBJ) $(BUILD)/$(1)/libcoll.a $(BUILD)/$(1)/libccd.a
 	@mkdir -p $$(@D)

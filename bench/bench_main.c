@@ -21,7 +21,7 @@
 #include "bench_methods.h"
 #include "bench_scn.h"
 #include "coll/mesh.h"
-#include "coll/mesh_format.h"   /* the effective grid cell (builders may coarsen a request) */
+#include "mesh_format.h"   /* the effective grid cell (builders may coarsen a request) */
 
 /* Callgrind runs with --instr-atstart=no: instrumentation starts just before the measured
  * part, so building a 1M-triangle level is not simulated at callgrind's full cost. */

@@ -7,7 +7,7 @@
 #ifndef BENCH_METHODS_H
 #define BENCH_METHODS_H
 
-#include "coll/prim.h"
+#include "prim.h"
 
 /** libccd sweep: bisection on the swept-hull intersection test (GJK or MPR). */
 typedef struct {

@@ -113,12 +113,12 @@ md=$out/jolt_scene.md
     echo "update; the three query columns exclude each other, as do the three char body phase"
     echo "columns (cb_*); each phase includes the queries it makes):"
     echo
-    echo "| grid cell | steps | total | move_and_slide | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | cb_slide | cb_probe_floor | cb_recover |"
+    echo "| grid cell | steps | total | move_and_slide | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | coll_cb_slide | coll_cb_probe_floor | coll_cb_recover |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
     for c in $CELLS; do for s in $STEPS; do
         n="c${c}_s$s"; u=$((s * 100))
         row="| $(cellname "$c") | $s | $(k "$(total "$n")" $u)"
-        for f in char_body_move_and_slide_in coll_capsule_sweep coll_raycast coll_capsule_overlaps cb_slide cb_probe_floor cb_recover; do
+        for f in char_body_move_and_slide_in coll_capsule_sweep coll_raycast coll_capsule_overlaps coll_cb_slide coll_cb_probe_floor coll_cb_recover; do
             row="$row | $(k "$(incl "$n" "$f")" $u)"
         done
         echo "$row |"

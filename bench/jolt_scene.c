@@ -27,7 +27,7 @@
 
 #include "coll/char_body.h"
 #include "coll/mesh.h"
-#include "coll/mesh_format.h" /* the effective grid cell (the builder may coarsen a request) */
+#include "mesh_format.h" /* the effective grid cell (the builder may coarsen a request) */
 #include "coll/scene.h"
 #include "soak_sim.h"         /* soak_seg_tri_dist, soak_body_capsules (independent checker) */
 

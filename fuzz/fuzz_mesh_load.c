@@ -18,7 +18,7 @@
 #include <math.h>
 
 #include "coll/mesh.h"
-#include "coll/mesh_format.h"
+#include "mesh_format.h"
 #include "coll/scene.h"
 
 static uint32_t be32(const uint8_t *p)

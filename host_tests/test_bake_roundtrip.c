@@ -18,7 +18,7 @@
 #include "unity.h"
 #include "coll/mesh.h"
 #include "coll/scene.h"
-#include "coll/prim.h"
+#include "prim.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

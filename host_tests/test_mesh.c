@@ -4,7 +4,7 @@
 #include "alloc_guard.h"
 #include "core_gen.h"
 #include "coll/mesh.h"
-#include "coll/mesh_format.h"
+#include "mesh_format.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

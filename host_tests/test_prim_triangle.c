@@ -4,7 +4,7 @@
 #include "unity.h"
 #include "alloc_guard.h"
 #include "prim_ref.h"
-#include "coll/prim.h"
+#include "prim.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdint.h>

@@ -7,7 +7,7 @@
 #define _FILE_OFFSET_BITS 64 /* 32-bit MIPS under qemu: readdir with 64-bit directory offsets */
 #include "unity.h"
 #include "soak_sim.h"
-#include "coll/char_body_internal.h" /* CB_FLAG_*: to fake states a buggy step could leave */
+#include "char_body_internal.h" /* CB_FLAG_*: to fake states a buggy step could leave */
 #include <dirent.h>
 #include <math.h>
 #include <stdlib.h>

@@ -8,8 +8,8 @@
 #include "core_gen.h"
 #include "core_ref.h"
 #include "coll/scene.h"
-#include "coll/mesh_format.h"
-#include "coll/prim.h"
+#include "mesh_format.h"
+#include "prim.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

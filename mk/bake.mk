@@ -19,12 +19,12 @@ export COLL_ASSET_DIR := $(ASSET_DIR)
 
 $(COLLBAKE): $(COLLBAKE_SRCS) tools/collbake/bsp.h $(BUILD)/host/libcoll.a src/coll/mesh_format.h
 	@mkdir -p $(@D)
-	$(host_CC) $(STD) $(WARN) -Wno-double-promotion $(host_CFLAGS) $(INC) $(COLLBAKE_SRCS) \
+	$(host_CC) $(STD) $(WARN) -Wno-double-promotion $(host_CFLAGS) $(INC) $(PRIV_INC) $(COLLBAKE_SRCS) \
 	    -L$(BUILD)/host -lcoll $(ASSIMP_LIBS) -lm -o $@
 
 $(COLLBAKE_ASAN): $(COLLBAKE_SRCS) tools/collbake/bsp.h $(BUILD)/asan/libcoll.a src/coll/mesh_format.h
 	@mkdir -p $(@D)
-	$(asan_CC) $(STD) $(WARN) -Wno-double-promotion $(asan_CFLAGS) $(INC) $(COLLBAKE_SRCS) \
+	$(asan_CC) $(STD) $(WARN) -Wno-double-promotion $(asan_CFLAGS) $(INC) $(PRIV_INC) $(COLLBAKE_SRCS) \
 	    -L$(BUILD)/asan -lcoll $(ASSIMP_LIBS) $(asan_LDFLAGS) -o $@
 
 # ---- sample levels ----

@@ -15,7 +15,7 @@ BENCH_HDRS  := $(wildcard bench/*.h) host_tests/support/bench_scn.h
 BENCH_HOST  := $(BENCH_OUT)/bin/bench_run
 BENCH_MIPS  := $(BENCH_OUT)/bin/bench_run_mips
 BENCH_COUNT := $(BENCH_OUT)/bin/mipscount
-BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) $(CCD_INC) -Ibench -Ihost_tests/support
+BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) $(PRIV_INC) $(CCD_INC) -Ibench -Ihost_tests/support
 
 $(BENCH_HOST): $(BENCH_SRCS) $(BENCH_HDRS) $(BUILD)/host/libcoll.a $(BUILD)/host/libccd.a
 	@mkdir -p $(@D)
@@ -32,7 +32,7 @@ BENCH_VR_OBJS   := $(patsubst %.c,$(BENCH_OUT)/vr4300/%.o,$(LIB_SRCS))
 # instructions are the VR4300 code's own; the assembler rejects any that MIPS32r2 lacks.
 $(BENCH_OUT)/vr4300/%.o: %.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(qemu_CC) $(STD) $(WARN) $(BENCH_VR_CFLAGS) $(INC) $(CCD_INC) -S $< -o $(@:.o=.s)
+	$(qemu_CC) $(STD) $(WARN) $(BENCH_VR_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) -S $< -o $(@:.o=.s)
 	sed -i '/^[[:space:]]*\.module[[:space:]]*arch=/d' $(@:.o=.s)
 	$(qemu_CC) -march=mips32r2 -c $(@:.o=.s) -o $@
 

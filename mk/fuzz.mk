@@ -19,7 +19,7 @@ FUZZ_CCD_OBJS := $(patsubst $(DEPS)/libccd/src/%.c,$(FUZZ_DIR)/ccd/%.o,$(CCD_SRC
 
 $(FUZZ_DIR)/obj/%.o: %.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) $(INC) $(CCD_INC) -c $< -o $@
+	$(FUZZ_CC) $(FUZZ_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) -c $< -o $@
 
 $(FUZZ_DIR)/ccd/%.o: $(DEPS)/libccd/src/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
@@ -29,7 +29,7 @@ $(FUZZ_DIR)/libcoll.a: $(FUZZ_LIB_OBJS) $(FUZZ_CCD_OBJS)
 	rm -f $@ && ar rcs $@ $^
 
 $(FUZZ_BIN): fuzz/fuzz_mesh_load.c $(FUZZ_DIR)/libcoll.a
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -Wall -Wextra -Werror $(INC) $(CCD_INC) -fsanitize=fuzzer $< $(FUZZ_DIR)/libcoll.a -lm -o $@
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -Wall -Wextra -Werror $(INC) $(PRIV_INC) $(CCD_INC) -fsanitize=fuzzer $< $(FUZZ_DIR)/libcoll.a -lm -o $@
 
 .PHONY: fuzz
 fuzz: $(FUZZ_BIN) $(BAKED_LEVELS)

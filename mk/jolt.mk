@@ -10,7 +10,7 @@ JOLT_OUT    := $(BUILD)/bench
 JOLT_BIN    := $(JOLT_OUT)/bin/jolt_scene
 JOLT_SRCS   := bench/jolt_scene.c host_tests/support/soak_check.c
 JOLT_HDRS   := $(wildcard include/coll/*.h) src/coll/mesh_format.h host_tests/support/soak_sim.h
-JOLT_CFLAGS  = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) -Ihost_tests/support
+JOLT_CFLAGS  = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) $(PRIV_INC) -Ihost_tests/support
 
 $(JOLT_BIN): $(JOLT_SRCS) $(JOLT_HDRS) $(BUILD)/host/libcoll.a $(BUILD)/host/libccd.a
 	@mkdir -p $(@D)

@@ -18,7 +18,7 @@ N64ROM_SUITES := test_smoke test_math test_mesh_load test_prim_body test_prim_tr
                  test_char_body_robust test_char_body_terrain
 N64ROM_SKIPPED := $(filter-out $(N64ROM_SUITES),$(TEST_NAMES))
 N64ROM_CFLAGS := $(N64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno -g
-N64ROM_INC    := -Ihost_tests/n64/include -Ihost_tests/n64 $(INC) $(CCD_INC) $(UNITY_INC)
+N64ROM_INC    := -Ihost_tests/n64/include -Ihost_tests/n64 $(INC) $(PRIV_INC) $(CCD_INC) $(UNITY_INC)
 # Replays whose input holds NaN or infinity are left out: mupen64plus stops on an ordered
 # compare of a NaN (see host_tests/n64/rom_main.c); the ROM prints which at start.
 N64ROM_ALL_FILES := $(sort $(wildcard host_tests/replays/*.replay host_tests/replays/open/*.replay))

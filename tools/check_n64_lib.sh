@@ -11,8 +11,8 @@
 # Across the archives together:
 #   - undefined symbols are on a short libc/libm allow-list (with --libdragon-fmath also
 #     libdragon's own fm_ functions, which then come from libdragon);
-#   - defined external symbols carry the archive's own prefixes: coll_, char_body_ and the
-#     internal cb_, prim_ for libcoll; ccd, __ccd for libccd. Nothing in libdragon's fm_
+#   - defined external symbols carry the archive's own prefixes: coll_ and char_body_ for
+#     libcoll (its internals too: coll_cb_, coll_prim_); ccd, __ccd for libccd. Nothing in libdragon's fm_
 #     namespace, nothing that could clash with the game or libdragon.
 set -eu
 ldfm=0
@@ -25,7 +25,7 @@ allow='^(memcpy|memmove|memset|sqrtf|fabsf|ceilf|sinf|cosf|acosf|fminf)$'
 prefixes_for() {   # allowed prefixes of defined external symbols, by archive
     case "$(basename "$1")" in
         libccd*) echo '^(ccd|__ccd)' ;;
-        *)       echo '^(coll_|char_body_|cb_|prim_)' ;;
+        *)       echo '^(coll_|char_body_)' ;;
     esac
 }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

@@ -18,7 +18,7 @@
 #include "coll/mesh.h"
 #include "coll/scene.h"
 #include "coll/char_body.h"
-#include "coll/prim.h"
+#include "prim.h"
 
 /* ------------------------------------------------------------------ geometry */
 

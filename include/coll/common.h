@@ -48,6 +48,16 @@ typedef struct {
 /** Identity transform initializer. */
 #define COLL_TRANSFORM_IDENTITY {{{0.0f, 0.0f, 0.0f}}, {{0.0f, 0.0f, 0.0f, 1.0f}}, {{1.0f, 1.0f, 1.0f}}}
 
+/** World position of the local point `local` under `xf` (scale, rotate, translate). */
+fm_vec3_t coll_transform_point(const coll_transform_t *xf, fm_vec3_t local);
+
+/**
+ * Local position of the world point `world` under `xf` (the inverse of coll_transform_point).
+ * Returns false, leaving *local untouched, when a scale component is zero or the result
+ * is not finite.
+ */
+bool coll_transform_point_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local);
+
 #ifdef __cplusplus
 }
 #endif

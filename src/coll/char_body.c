@@ -368,18 +368,18 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
      * lift above and the floor probe below. Queries beyond it (the crack rule's ball, an
      * unstick) go to the scene. */
     fm_vec3_t carry = cb_v(0.0f, 0.0f, 0.0f);
-    bool carried = was_grounded && s->follow_floor && cb_carry_delta(&c, &carry);
+    bool carried = was_grounded && s->follow_floor && coll_cb_carry_delta(&c, &carry);
     coll_gather_t gather;
     gather_step(&c, &gather, pos, input, cb_len(carry), dt);
     c.gather = &gather;
 
     /* 1. carry */
     fm_vec3_t ground_v = cb_v(0.0f, 0.0f, 0.0f);
-    if (carried) ground_v = cb_carry(&c, &pos, carry);
+    if (carried) ground_v = coll_cb_carry(&c, &pos, carry);
     else body->flags &= (uint8_t)~CB_FLAG_CARRIED;
 
     /* 2. recover */
-    cb_recover(&c, &pos, &body->velocity);
+    coll_cb_recover(&c, &pos, &body->velocity);
 
     /* 3. velocity: input across up, the along-up part from the resolved velocity */
     fm_vec3_t in_h = cb_reject(input, up);
@@ -420,7 +420,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.ev = &body->events;
     const fm_vec3_t start = pos;
     fm_vec3_t old_foot = cb_foot(&c, pos);
-    cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
+    coll_cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
     if (body->slide_speed > 0.0f) {
         /* Whatever blocked the slide down the slope also took its speed. */
         fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), body->floor_normal));
@@ -429,7 +429,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     }
 
     /* 5. foot guard */
-    if (!walking) cb_foot_guard(&c, &pos, old_foot, &body->velocity);
+    if (!walking) coll_cb_foot_guard(&c, &pos, old_foot, &body->velocity);
 
     /* Honest velocity: where the step's motion fell short of the velocity (a wall, a
      * ceiling, a wedge, a crack's edges stopped it) the velocity is the one the body moved
@@ -441,10 +441,10 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */
-    if (!cb_probe_floor(&c, &pos, was_grounded, jumping)) {
+    if (!coll_cb_probe_floor(&c, &pos, was_grounded, jumping)) {
         pos = start;
         body->velocity = cb_v(0.0f, 0.0f, 0.0f);
-        cb_probe_floor(&c, &pos, was_grounded, jumping);
+        coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
     }
 
     /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as

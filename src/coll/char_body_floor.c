@@ -9,28 +9,6 @@
  */
 #include "char_body_internal.h"
 
-fm_vec3_t cb_xf_apply(const coll_transform_t *xf, fm_vec3_t local)
-{
-    fm_vec3_t s = cb_v(local.x * xf->scale.x, local.y * xf->scale.y, local.z * xf->scale.z);
-    fm_vec3_t r;
-    fm_quat_rotate_vec3(&r, &xf->rot, &s);
-    return cb_add(r, xf->pos);
-}
-
-bool cb_xf_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local)
-{
-    const fm_vec3_t *sc = &xf->scale;
-    if (!(fabsf(sc->x) > 1e-12f) || !(fabsf(sc->y) > 1e-12f) || !(fabsf(sc->z) > 1e-12f)) return false;
-    fm_quat_t inv;
-    fm_quat_inverse(&inv, &xf->rot);
-    fm_quat_norm(&inv, &inv);
-    fm_vec3_t d = cb_sub(world, xf->pos);
-    fm_vec3_t r;
-    fm_quat_rotate_vec3(&r, &inv, &d);
-    *local = cb_v(r.x / sc->x, r.y / sc->y, r.z / sc->z);
-    return cb_finite(*local);
-}
-
 /**
  * The velocity half a step after the chord velocity `cur`, given the chord `prev` of the
  * step before: turned on by half the turn from prev to cur (about their common normal),
@@ -54,7 +32,7 @@ static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur)
     return cb_scale(v, (grow > 0.0f ? grow : 0.0f) / lc);
 }
 
-bool cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
+bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
 {
     char_body_t *b = c->body;
     if (!(b->flags & CB_FLAG_CARRY) || !b->floor_instance) return false;
@@ -63,16 +41,16 @@ bool cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
     for (uint16_t i = 0; i < c->scene->mesh_count && i < COLL_SCENE_MAX_MESHES; i++)
         if (c->scene->meshes[i] == b->floor_instance) present = true;
     if (!present) return false;
-    fm_vec3_t now = cb_xf_apply(&b->floor_instance->xf, b->floor_local_point);
+    fm_vec3_t now = coll_transform_point(&b->floor_instance->xf, b->floor_local_point);
     *delta = cb_sub(now, b->floor_world_point);
     return cb_finite(*delta);
 }
 
-fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
+fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     char_body_t *b = c->body;
     /* Swept, so a platform cannot carry the body through a wall. */
-    cb_slide(c, pos, delta, NULL, false);
+    coll_cb_slide(c, pos, delta, NULL, false);
     /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
      * velocity over the step (at mid-step); extrapolated by half a step from the previous
      * chord, a turning platform's tangent at take-off is right to second order (a jump off
@@ -224,7 +202,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
     }
 }
 
-bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
+bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
     fm_vec3_t up = c->up;
@@ -273,7 +251,7 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
             if (s.gap > 0.0f) {
                 snap_down(c, pos, s.gap);
             } else {
-                float done = cb_move_swept(c, pos, cb_scale(up, -s.gap));
+                float done = coll_cb_move_swept(c, pos, cb_scale(up, -s.gap));
                 if (s.gap < -1e-3f && done * -s.gap < -s.gap - 1e-3f) fits = false;
             }
             if (c->ev) c->ev->step += cb_dot(cb_sub(*pos, before), up);
@@ -301,7 +279,7 @@ bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool j
     if (s.instance && b->settings.follow_floor) {
         fm_vec3_t anchor = s.steep ? s.point : cb_foot(c, *pos);
         fm_vec3_t local;
-        if (cb_xf_inverse(&s.instance->xf, anchor, &local)) {
+        if (coll_transform_point_inverse(&s.instance->xf, anchor, &local)) {
             b->floor_instance = s.instance;
             b->floor_local_point = local;
             b->floor_world_point = anchor;

@@ -8,7 +8,7 @@
 
 #include <math.h>
 #include "coll/char_body.h"
-#include "coll/gather.h"
+#include "gather.h"
 
 /** Private bits of char_body_t.flags. */
 enum {
@@ -112,35 +112,31 @@ static inline fm_vec3_t cb_sweep_center(const cb_ctx_t *c, fm_vec3_t pos)
     return cb_madd(cb_center(c, pos), c->up, c->sweep_lift);
 }
 
-/** World point of a mesh-local point (scale, rotate, translate). */
-fm_vec3_t cb_xf_apply(const coll_transform_t *xf, fm_vec3_t local);
-/** Mesh-local point of a world point; false when the transform is not invertible. */
-bool cb_xf_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local);
 
 /** Moves by disp with up to max_slides sweep-and-slide iterations, clipping *vel (may be NULL)
  *  by the same planes. grounded: walls only (hits above the step zone act as vertical). */
-void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded);
+void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded);
 /** Swept positional change: moves the sweep capsule by d, stopping skin short of the first
  *  contact (a contact within skin of the end of d counts as the end: the target itself).
  *  Returns the fraction of d travelled (1 when unblocked). */
-float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
+float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
 /** Unswept push by delta, kept only when the sweep capsule then overlaps nothing new or
  *  deeper than before (coll_capsule_overlaps before and after); false: not moved. */
-bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
+bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
 /** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts),
  *  keeping the result only when it overlaps nothing new or deeper than the start did. */
-void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
+void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot. */
-void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
+void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
 /** How far the mesh instance stood on last step moved the floor point: false when there is
  *  nothing to carry (not on an instance, or it left the scene). */
-bool cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta);
+bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta);
 /** Moves the body by the carry delta (swept); returns the velocity of the floor point stood
  *  on at the end of that motion. */
-fm_vec3_t cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
+fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
 /** Floor probe after the slide: grounding, steep state, snapping, stair lift, cracks, carry
  *  anchor. Returns false when the body needs a lift onto the floor that the capsule has no
  *  room for (it cannot stand where it is). */
-bool cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
+bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
 
 #endif

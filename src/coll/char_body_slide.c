@@ -96,7 +96,7 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
     return cb_len(nh) > 0.5f ? nh : hit->normal;
 }
 
-float cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
     float len = cb_len(d);
     if (!(len > 1e-6f) || !isfinite(len)) {
@@ -198,9 +198,9 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     float base;
     if (!floor_height(c, foot0, above, c->snap, foot0, &base)) return false;
     fm_vec3_t p = *pos;
-    float lift = c->step * cb_move_swept(c, &p, cb_scale(c->up, c->step));
+    float lift = c->step * coll_cb_move_swept(c, &p, cb_scale(c->up, c->step));
     if (!(lift > 1e-4f)) return false;
-    float f = cb_move_swept(c, &p, h);
+    float f = coll_cb_move_swept(c, &p, h);
     if (!(f * hl > 1e-4f)) return false;
     /* down by the lift, keeping the contact that stops it */
     fm_vec3_t down = cb_scale(c->up, -lift);
@@ -224,7 +224,7 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
             return false;
         tread -= base;
         if (!(tread > eps) || tread > c->step + eps) return false;
-    } else if (floor_h > rise && cb_move_swept(c, &p, cb_scale(c->up, floor_h - rise)) < 1.0f) {
+    } else if (floor_h > rise && coll_cb_move_swept(c, &p, cb_scale(c->up, floor_h - rise)) < 1.0f) {
         return false;
     }
     if (c->ev) c->ev->step += cb_dot(cb_sub(p, *pos), c->up);
@@ -271,7 +271,7 @@ static void record_hit(const cb_ctx_t *c, fm_vec3_t motion, fm_vec3_t plane, fm_
     }
 }
 
-void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
+void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
 {
     int step_ups = 0;
     const char_body_t *b = c->body;
@@ -300,7 +300,7 @@ void cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel,
              * (not swept: a sweep from inside stops at once); a push that would end
              * inside something else ends the slide here instead. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
-            if (!cb_push_verified(c, pos, cb_scale(hit.normal, d + c->skin * 0.5f))) break;
+            if (!coll_cb_push_verified(c, pos, cb_scale(hit.normal, d + c->skin * 0.5f))) break;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -377,7 +377,7 @@ static bool no_worse(const coll_contact_t *ct, uint32_t n, const coll_contact_t 
     return true;
 }
 
-bool cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
+bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
     uint32_t n0 = overlaps_at(c, *pos, ct0);
@@ -506,7 +506,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     }
 }
 
-void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
+void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
     uint32_t n0 = overlaps_at(c, *pos, ct0);
@@ -559,7 +559,7 @@ void cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     if (stuck) unstick(c, pos, vel);
 }
 
-void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
+void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
@@ -577,6 +577,6 @@ void cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec
     fm_vec3_t target = cb_add(cb_madd(hit.point, n, c->skin), clip_plane(after, n));
     /* Swept, like every positional change: the push must not put the capsule into
      * something else (a slope or wall on the other side). */
-    cb_move_swept(c, pos, cb_sub(target, foot));
+    coll_cb_move_swept(c, pos, cb_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
 }

@@ -4,7 +4,7 @@
  *        in one caller-owned block), hostile-input-safe loader of baked big-endian blobs,
  *        and the blob writer used by the bake tool. Layout: mesh_format.h.
  */
-#include "coll/mesh_format.h"
+#include "mesh_format.h"
 #include <math.h>
 #include <string.h>
 

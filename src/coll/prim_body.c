@@ -185,12 +185,12 @@ bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *bo
     bool got;
     switch (f.shape) {
     case COLL_SHAPE_SPHERE:
-        got = prim_ray_sphere(*o, *d, f.pos, f.he.x, s_max, &h);
+        got = coll_prim_ray_sphere(*o, *d, f.pos, f.he.x, s_max, &h);
         break;
     case COLL_SHAPE_CAPSULE: {
         fm_vec3_t ax[3];
         capsule_axis(&f, ax);
-        got = prim_ray_capsule(*o, *d, ax[0], ax[1], f.he.x, s_max, &h);
+        got = coll_prim_ray_capsule(*o, *d, ax[0], ax[1], f.he.x, s_max, &h);
         break;
     }
     case COLL_SHAPE_BOX:
@@ -283,7 +283,7 @@ static bool box_overlap_local(const fm_vec3_t seg[2], float r, fm_vec3_t he, flo
         fm_vec3_t tri[3] = { box_corner(he, box_tris[k][0]), box_corner(he, box_tris[k][1]),
                              box_corner(he, box_tris[k][2]) };
         fm_vec3_t ps, pt;
-        float d2 = prim_seg_tri_closest(tri, seg[0], seg[1], &ps, &pt);
+        float d2 = coll_prim_seg_tri_closest(tri, seg[0], seg[1], &ps, &pt);
         if (d2 < best) { best = d2; bps = ps; bpt = pt; }
     }
     float rin = r - tol;
@@ -322,7 +322,7 @@ static bool box_sweep_local(const fm_vec3_t seg[2], float r, fm_vec3_t d, fm_vec
         fm_vec3_t tri[3] = { box_corner(he, box_tris[k][0]), box_corner(he, box_tris[k][1]),
                              box_corner(he, box_tris[k][2]) };
         coll_prim_hit_t h;
-        if (prim_tri_sweep_ex(seg, r, &d, tri, any ? hit->t : t_max, false, &h) && (!any || h.t < hit->t)) {
+        if (coll_prim_tri_sweep_ex(seg, r, &d, tri, any ? hit->t : t_max, false, &h) && (!any || h.t < hit->t)) {
             *hit = h;
             any = true;
         }
@@ -335,7 +335,7 @@ static bool box_sweep_local(const fm_vec3_t seg[2], float r, fm_vec3_t d, fm_vec
         fm_vec3_t tri[3] = { box_corner(he, box_tris[k][0]), box_corner(he, box_tris[k][1]),
                              box_corner(he, box_tris[k][2]) };
         coll_prim_hit_t h;
-        if (prim_tri_sweep_ex(seg, rin, &d, tri, t_max, false, &h)) return true;
+        if (coll_prim_tri_sweep_ex(seg, rin, &d, tri, t_max, false, &h)) return true;
     }
     return false;
 }
@@ -657,7 +657,7 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
          * radii plus the whole motion cannot meet (the general sweep below costs ~5k). */
         fm_vec3_t cp, cq;
         float u, v, reach = r + f.he.x + sqrtf(pv_dot(*disp, *disp)) * t_max;
-        if (prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq) > reach * reach * 1.0001f + 1e-8f)
+        if (coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq) > reach * reach * 1.0001f + 1e-8f)
             return false;
         if (!coll_capsule_triangle_sweep(seg, r + f.he.x, disp, ax, t_max, hit)) return false;
         hit->point = pv_madd(hit->point, hit->normal, f.he.x);
@@ -694,7 +694,7 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
          * whole answer (what the general triangle path would compute, without its setup). */
         fm_vec3_t cp, cq;
         float u, v, reach = r + f.he.x;
-        float d2 = prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq);
+        float d2 = coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq);
         float rin = reach - pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * reach);
         if (!(d2 < rin * rin)) return false;
         float d = sqrtf(d2);

@@ -4,7 +4,7 @@
  *        (libccd conservative advancement, discrete sub-steps) and run the whole
  *        character body on it; NULL restores the exact analytic sweep.
  */
-#include "coll/prim.h"
+#include "prim.h"
 
 static coll_tri_sweep_fn g_sweep_fn;
 static void *g_sweep_ctx;

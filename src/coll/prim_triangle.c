@@ -25,7 +25,7 @@
 
 /* ---------------------------------------------------------------- elementary ray tests */
 
-bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
 {
     fm_vec3_t m = pv_sub(o, c);
     float cc = pv_dot(m, m) - r * r;
@@ -49,7 +49,7 @@ bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max
     return true;
 }
 
-bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
                             prim_ray_t *out)
 {
     fm_vec3_t ax = pv_sub(c1, c0);
@@ -81,18 +81,18 @@ bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1
     return true;
 }
 
-bool prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
                       prim_ray_t *out)
 {
     prim_ray_t h;
     bool any = false;
-    if (prim_ray_cylinder_side(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
-    if (prim_ray_sphere(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
-    if (prim_ray_sphere(o, d, c1, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; any = true; }
+    if (coll_prim_ray_cylinder_side(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
+    if (coll_prim_ray_sphere(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
+    if (coll_prim_ray_sphere(o, d, c1, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; any = true; }
     return any;
 }
 
-float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
                            float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
     const float eps = 1e-20f;
@@ -225,7 +225,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     for (int i = 0; i < 3; i++) {
         fm_vec3_t cp, cq;
         float u, v;
-        float d2 = prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
+        float d2 = coll_prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
         if (d2 < best) { best = d2; *ps = cp; *pt = cq; *edge = i; *eu = u; *ev = v; }
     }
     return best;
@@ -259,7 +259,7 @@ static fm_vec3_t pair_normal(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t
     return pv_dot(m, n) > 0.9999f ? m : n;
 }
 
-float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
 {
     tri_t t;
     tri_setup(&t, tri);
@@ -374,7 +374,7 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     /* Nearly parallel lines leave mu (and so tt) poorly conditioned: never accept a time
      * at which the two segments are still clearly apart (the cylinders cover the rest). */
     fm_vec3_t at = pv_madd(c->a, c->d, tt);
-    float sd2 = prim_closest_seg_seg(at, pv_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
+    float sd2 = coll_prim_closest_seg_seg(at, pv_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
     float rr = r + 1e-5f * (1.0f + r);
     if (sd2 > rr * rr) return;
     take(best, tt, pv_scale(mu, sig), pv_madd(e0, e, v));
@@ -395,7 +395,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
         }
         for (int i = 0; i < 3; i++) {
             float lim = best->hit ? best->t : t_max;
-            if (prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
+            if (coll_prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
                 take(best, h.s, h.n, pv_madd(pv_madd(ends[k], c->d, h.s), h.n, -r));
                 if (any) return true;
             }
@@ -404,8 +404,8 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     fm_vec3_t nd = pv_neg(c->d);
     for (int i = 0; i < 3; i++) {
         float lim = best->hit ? best->t : t_max;
-        bool got = c->sphere ? prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
-                             : prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
+        bool got = c->sphere ? coll_prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
+                             : coll_prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
         if (got) {
             take(best, h.s, pv_neg(h.n), t->v[i]);
             if (any) return true;
@@ -420,7 +420,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                        float t_max, bool confirm, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
@@ -487,7 +487,7 @@ bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, c
         bool interior = edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f;
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
             fm_vec3_t qs, qt, dummy;
-            prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
+            coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
             float q2 = seg_tri_closest(&c.tri, qs, qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
@@ -516,7 +516,7 @@ bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, c
 bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return prim_tri_sweep_ex(seg, r, disp, tri, t_max, true, hit);
+    return coll_prim_tri_sweep_ex(seg, r, disp, tri, t_max, true, hit);
 }
 
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],

@@ -8,7 +8,7 @@
 #define COLL_PRIM_UTIL_H
 
 #include <math.h>
-#include "coll/prim.h"
+#include "prim.h"
 
 static inline fm_vec3_t pv_make(float x, float y, float z) { fm_vec3_t v; v.x = x; v.y = y; v.z = z; return v; }
 static inline fm_vec3_t pv_add(fm_vec3_t a, fm_vec3_t b) { return pv_make(a.x + b.x, a.y + b.y, a.z + b.z); }
@@ -72,19 +72,19 @@ typedef struct {
  * an origin already inside gives s = 0 with the normal at the nearest surface point.
  * The normal is the primitive's outward unit normal at the hit.
  */
-bool prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out);
+bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out);
 /** Side of the finite cylinder around c0..c1 only (no caps). */
-bool prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
                             prim_ray_t *out);
 /** Capsule = side + two spheres. */
-bool prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
                       prim_ray_t *out);
 /** Closest points of segments p0..p1 and q0..q1 (degenerate segments allowed); returns dist^2. */
-float prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
                            float *u, float *v, fm_vec3_t *cp, fm_vec3_t *cq);
 
 /** Squared distance of segment a..b to a triangle, with closest points (ps on a..b). */
-float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt);
+float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt);
 
 /**
  * coll_capsule_triangle_sweep with the touch-tolerance confirmation optional: with
@@ -92,7 +92,7 @@ float prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_
  * goes deeper than the tolerance into this triangle. Unions of triangles (a box) confirm
  * on the whole union instead.
  */
-bool prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                        float t_max, bool confirm, coll_prim_hit_t *hit);
 
 #endif

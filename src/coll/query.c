@@ -12,9 +12,9 @@
  * so everything derived from it is recomputed per query.
  */
 #include "coll/scene.h"
-#include "coll/gather.h"
-#include "coll/mesh_format.h"
-#include "coll/prim.h"
+#include "gather.h"
+#include "mesh_format.h"
+#include "prim.h"
 #include <math.h>
 #include <string.h>
 

@@ -27,7 +27,7 @@
 #include <unistd.h>
 
 #include "coll/mesh.h"
-#include "coll/mesh_format.h"
+#include "mesh_format.h"
 #include "bsp.h"
 
 #define MAX_ONLY 32

@@ -1,0 +1,33 @@
+/**
+ * @file transform.c
+ * @brief The one transform apply/inverse for single points (coll/common.h).
+ *
+ * The queries keep their own precomputed matrix form (query.c's xf3_t) because they map
+ * many points per instance; these serve single points: a platform's anchor, a carry.
+ */
+#include <math.h>
+#include "coll/common.h"
+
+fm_vec3_t coll_transform_point(const coll_transform_t *xf, fm_vec3_t local)
+{
+    fm_vec3_t s = {{local.x * xf->scale.x, local.y * xf->scale.y, local.z * xf->scale.z}};
+    fm_vec3_t r;
+    fm_quat_rotate_vec3(&r, &xf->rot, &s);
+    return (fm_vec3_t){{r.x + xf->pos.x, r.y + xf->pos.y, r.z + xf->pos.z}};
+}
+
+bool coll_transform_point_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local)
+{
+    const fm_vec3_t *sc = &xf->scale;
+    if (!(fabsf(sc->x) > 1e-12f) || !(fabsf(sc->y) > 1e-12f) || !(fabsf(sc->z) > 1e-12f)) return false;
+    fm_quat_t inv;
+    fm_quat_inverse(&inv, &xf->rot);
+    fm_quat_norm(&inv, &inv);
+    fm_vec3_t d = {{world.x - xf->pos.x, world.y - xf->pos.y, world.z - xf->pos.z}};
+    fm_vec3_t r;
+    fm_quat_rotate_vec3(&r, &inv, &d);
+    fm_vec3_t l = {{r.x / sc->x, r.y / sc->y, r.z / sc->z}};
+    if (!isfinite(l.x) || !isfinite(l.y) || !isfinite(l.z)) return false;
+    *local = l;
+    return true;
+}
