@@ -5,6 +5,11 @@
 #include "cb_levels.h"
 #include <math.h>
 #include <stdio.h>
+#if __STDC_HOSTED__
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 #define DT (1.0f / 30.0f)
 
@@ -293,6 +298,39 @@ static void test_recover_from_floor(void)
     TEST_ASSERT_FLOAT_WITHIN(0.05f, 4.0f, pos.x);
 }
 
+/* No current scene is a game bug (coll_scene_set_current never called). The body is left
+ * untouched, and debug builds of the library (hosted, no NDEBUG: the host, qemu and ASan
+ * builds here) stop in an assert instead of doing nothing silently. */
+static void test_step_without_scene_is_caught(void)
+{
+    cb_level_floor(50.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(0.0f, 3.0f, 0.0f));
+    body.input_velocity = cb_vec(2.0f, 0.0f, 0.0f);
+    char_body_t before = body;
+    fm_vec3_t pos_before = pos;
+    char_body_move_and_slide_in(&body, NULL, DT);
+    TEST_ASSERT_EQUAL_MEMORY(&before, &body, sizeof body);
+    TEST_ASSERT_EQUAL_MEMORY(&pos_before, &pos, sizeof pos);
+#if __STDC_HOSTED__ && !defined(NDEBUG)
+    coll_scene_set_current(NULL);
+    fflush(stdout);
+    pid_t pid = fork();
+    TEST_ASSERT_TRUE(pid >= 0);
+    if (pid == 0) {
+        if (!freopen("/dev/null", "w", stderr)) _exit(3);
+        char_body_move_and_slide(&body, DT);
+        _exit(0); /* returned: no assert */
+    }
+    int status = 0;
+    TEST_ASSERT_EQUAL_INT(pid, waitpid(pid, &status, 0));
+    TEST_ASSERT_TRUE_MESSAGE(WIFSIGNALED(status) && WTERMSIG(status) == SIGABRT,
+                             "a step with no current scene did not assert");
+#else
+    TEST_IGNORE_MESSAGE("freestanding or NDEBUG build: the library has no debug asserts");
+#endif
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -308,5 +346,6 @@ int main(void)
     RUN_TEST(test_teleport);
     RUN_TEST(test_recover_from_wall);
     RUN_TEST(test_recover_from_floor);
+    RUN_TEST(test_step_without_scene_is_caught);
     return UNITY_END();
 }

@@ -127,7 +127,11 @@ const char_body_settings_t *char_body_get_settings(const char_body_t *body);
 void char_body_set_up(char_body_t *body, fm_vec3_t up);
 void char_body_set_center_offset(char_body_t *body, fm_vec3_t offset);
 
-/** One step on coll_scene_current(). dt <= 0 or not finite: no movement. */
+/**
+ * One step on coll_scene_current(). dt <= 0 or not finite: no movement. With no current
+ * scene (coll_scene_set_current() never called, or set to NULL) the body is left untouched;
+ * that is a game bug, so debug builds (hosted, no NDEBUG; or -DCOLL_DEBUG_ASSERTS=1) assert.
+ */
 void char_body_move_and_slide(char_body_t *body, float dt);
 /** One step on an explicit scene. */
 void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, float dt);

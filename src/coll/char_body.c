@@ -11,6 +11,7 @@
  *  6. probe      - floor ray at the foot: grounding, snapping, stair lift (char_body_floor.c)
  */
 #include "char_body_internal.h"
+#include "coll_assert.h"
 
 _Static_assert(sizeof(char_body_t) <= 256, "char_body_t must stay within 256 bytes");
 
@@ -311,6 +312,9 @@ static void record_events(char_body_t *body, bool was_grounded, fm_vec3_t was_no
 void char_body_move_and_slide(char_body_t *body, float dt)
 {
     const coll_scene_t *scene = coll_scene_current();
+    /* No current scene is a game bug (coll_scene_set_current never called, or cleared):
+     * debug builds stop here; release builds leave the body untouched, as documented. */
+    COLL_DEBUG_ASSERT(scene != NULL, "char_body_move_and_slide: no current scene (call coll_scene_set_current)");
     char_body_move_and_slide_in(body, scene, dt);
 }
 
