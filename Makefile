@@ -35,6 +35,8 @@ n64_CCD_SRCS := $(addprefix $(DEPS)/libccd/src/,mpr.c support.c vec3.c)
 SUPPORT_SRCS := $(sort $(wildcard host_tests/support/*.c))
 TEST_SRCS  := $(sort $(wildcard host_tests/test_*.c))
 TEST_NAMES := $(patsubst host_tests/%.c,%,$(TEST_SRCS))
+# suites that install other sweep methods (they define COLL_METHOD_HOOKS; libcoll_hooks.a)
+HOOK_TESTS := $(patsubst host_tests/%.c,%,$(shell grep -l '^\#define COLL_METHOD_HOOKS' $(TEST_SRCS)))
 WRAP := -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free
 
 TEST_PREREQS :=
@@ -117,11 +119,21 @@ $(BUILD)/$(1)/libcoll.a: $$($(1)_OBJS)
 	@mkdir -p $$(@D)
 	rm -f $$@ && $$(or $$($(1)_AR),ar) rcs $$@ $$^
 
+# The method hooks (src/coll/prim.h): the two files that have them, built with them, for
+# the benchmarks and the suites that define COLL_METHOD_HOOKS (linked ahead of libcoll.a).
+$(BUILD)/$(1)/hooks/%.o: src/coll/%.c $(BUILD)/$(1)/.flags | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$$($(1)_CC) $(STD) $(WARN) $$($(1)_CFLAGS) -DCOLL_METHOD_HOOKS $(INC) $(CCD_INC) -MMD -MP -c $$< -o $$@
+
+$(BUILD)/$(1)/libcoll_hooks.a: $(BUILD)/$(1)/hooks/prim_method.o $(BUILD)/$(1)/hooks/prim_body.o
+	@mkdir -p $$(@D)
+	rm -f $$@ && $$(or $$($(1)_AR),ar) rcs $$@ $$^
+
 $(BUILD)/$(1)/libccd.a: $$($(1)_CCD_OBJS)
 	@mkdir -p $$(@D)
 	rm -f $$@ && $$(or $$($(1)_AR),ar) rcs $$@ $$^
 
--include $$($(1)_OBJS:.o=.d)
+-include $$($(1)_OBJS:.o=.d) $$(wildcard $(BUILD)/$(1)/hooks/*.d)
 endef
 
 $(foreach v,$(VARIANTS) n64,$(eval $(call variant_rules,$(v))))
@@ -140,9 +152,9 @@ $(BUILD)/$(1)/obj/host_tests/%.o: host_tests/%.c | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	$$($(1)_CC) $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $$($(1)_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) $(UNITY_INC) -MMD -MP -c $$< -o $$@
 
-$(BUILD)/$(1)/tests/%: $(BUILD)/$(1)/obj/host_tests/%.o $$($(1)_SUPPORT_OBJS) $$($(1)_UNITY_OBJ) $(BUILD)/$(1)/libcoll.a $(BUILD)/$(1)/libccd.a
+$(BUILD)/$(1)/tests/%: $(BUILD)/$(1)/obj/host_tests/%.o $$($(1)_SUPPORT_OBJS) $$($(1)_UNITY_OBJ) $(BUILD)/$(1)/libcoll.a $(BUILD)/$(1)/libccd.a $(BUILD)/$(1)/libcoll_hooks.a
 	@mkdir -p $$(@D)
-	$$($(1)_CC) $$($(1)_CFLAGS) $$(filter %.o,$$^) -L$(BUILD)/$(1) -lcoll -lccd $(WRAP) $$($(1)_LDFLAGS) -o $$@
+	$$($(1)_CC) $$($(1)_CFLAGS) $$(filter %.o,$$^) -L$(BUILD)/$(1) $$(if $$(filter $$*,$(HOOK_TESTS)),-lcoll_hooks) -lcoll -lccd $(WRAP) $$($(1)_LDFLAGS) -o $$@
 
 $(1)_TESTS := $$(addprefix $(BUILD)/$(1)/tests/,$(TEST_NAMES))
 .PRECIOUS: $(BUILD)/$(1)/obj/host_tests/%.o

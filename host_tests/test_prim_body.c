@@ -1,6 +1,8 @@
 /* Ray and capsule against convex collider bodies: specific cases, degenerate bodies, no
  * allocation, and random agreement with a double-precision reference built on exact
  * point/segment distances to each solid shape (prim_ref.c sweeps). */
+/* The method hooks (prim.h): this suite links libcoll_hooks.a ahead of libcoll.a. */
+#define COLL_METHOD_HOOKS 1
 #include "unity.h"
 #include "alloc_guard.h"
 #include "prim_ref.h"

@@ -1,6 +1,8 @@
 /* Capsule and ray against one triangle: specific features and random agreement with a
  * double-precision reference (prim_ref.c: convex minimisation + bisection of the exact
  * segment-triangle distance, independent of the analytic method under test). */
+/* The method hooks (prim.h): this suite links libcoll_hooks.a ahead of libcoll.a. */
+#define COLL_METHOD_HOOKS 1
 #include "unity.h"
 #include "alloc_guard.h"
 #include "prim_ref.h"

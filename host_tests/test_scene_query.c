@@ -3,6 +3,8 @@
  * triangles, dense clusters, far from the origin) under random transforms; plus masks,
  * type filters, registry errors, remove-then-query, ids, overflow fallback, zero
  * allocations, precision 5 km out, moving platforms. */
+/* The method hooks (prim.h): this suite links libcoll_hooks.a ahead of libcoll.a. */
+#define COLL_METHOD_HOOKS 1
 #include "unity.h"
 #include "alloc_guard.h"
 #include "core_gen.h"

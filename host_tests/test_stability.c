@@ -24,7 +24,7 @@ static const char *const k_known_fail[] = {
 
 static _Alignas(8) unsigned char g_buf[BENCH_SCN_BUF];
 
-void setUp(void) { coll_set_tri_sweep_method(NULL, NULL); }
+void setUp(void) {}
 void tearDown(void) {}
 
 static bool known_fail(const char *name)

@@ -15,16 +15,17 @@ BENCH_HDRS  := $(wildcard bench/*.h) host_tests/support/bench_scn.h
 BENCH_HOST  := $(BENCH_OUT)/bin/bench_run
 BENCH_MIPS  := $(BENCH_OUT)/bin/bench_run_mips
 BENCH_COUNT := $(BENCH_OUT)/bin/mipscount
-BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(INC) $(PRIV_INC) $(CCD_INC) -Ibench -Ihost_tests/support
+# The bench installs other sweep methods: it links the method hooks (src/coll/prim.h).
+BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion -DCOLL_METHOD_HOOKS $(INC) $(PRIV_INC) $(CCD_INC) -Ibench -Ihost_tests/support
 
-$(BENCH_HOST): $(BENCH_SRCS) $(BENCH_HDRS) $(BUILD)/host/libcoll.a $(BUILD)/host/libccd.a
+$(BENCH_HOST): $(BENCH_SRCS) $(BENCH_HDRS) $(BUILD)/host/libcoll.a $(BUILD)/host/libcoll_hooks.a $(BUILD)/host/libccd.a
 	@mkdir -p $(@D)
-	$(host_CC) $(BENCH_CFLAGS) $(host_CFLAGS) $(BENCH_SRCS) -L$(BUILD)/host -lcoll -lccd -lm -o $@
+	$(host_CC) $(BENCH_CFLAGS) $(host_CFLAGS) $(BENCH_SRCS) -L$(BUILD)/host -lcoll_hooks -lcoll -lccd -lm -o $@
 
 # Console-cost build: the library objects with the console's code generation
 # (-march=vr4300 -mfix4300, o32 like Debian's libc so it links), the harness with the
 # cross compiler's defaults, static, run by qemu-mips-static.
-BENCH_VR_CFLAGS := -O2 -fno-math-errno -march=vr4300 -mtune=vr4300 -mfix4300
+BENCH_VR_CFLAGS := -O2 -fno-math-errno -march=vr4300 -mtune=vr4300 -mfix4300 -DCOLL_METHOD_HOOKS
 BENCH_VR_OBJS   := $(patsubst %.c,$(BENCH_OUT)/vr4300/%.o,$(LIB_SRCS))
 
 # GNU ld refuses to link MIPS III (vr4300) objects with Debian's MIPS32r2 libc, so the

@@ -66,9 +66,9 @@ $(N64ROM_DIR)/libsupport.a: $(N64ROM_SUPPORT)
 	rm -f $@ && $(n64_AR) rcs $@ $^
 -include $(wildcard $(N64ROM_DIR)/support/*.d $(N64ROM_DIR)/suite/*.d)
 
-$(N64ROM_DIR)/%.elf: $(N64ROM_DIR)/suite/%.o $(N64ROM_RT) $(N64ROM_DIR)/libsupport.a $(N64ROM_LIBS) host_tests/n64/rom.ld
+$(N64ROM_DIR)/%.elf: $(N64ROM_DIR)/suite/%.o $(N64ROM_RT) $(N64ROM_DIR)/libsupport.a $(N64ROM_LIBS) $(BUILD)/n64/libcoll_hooks.a host_tests/n64/rom.ld
 	$(n64_CC) $(N64ROM_CFLAGS) -nostdlib -static -T host_tests/n64/rom.ld -Wl,--no-warn-rwx-segments -Wl,--build-id=none \
-	    $(filter %.o,$^) $(N64ROM_DIR)/libsupport.a $(N64ROM_LIBS) \
+	    $(filter %.o,$^) $(N64ROM_DIR)/libsupport.a $(if $(filter $*,$(HOOK_TESTS)),$(BUILD)/n64/libcoll_hooks.a) $(N64ROM_LIBS) \
 	    $(WRAP) -Wl,--wrap=UnityDefaultTestRun -Wl,-Map=$(@:.elf=.map) -o $@
 $(N64ROM_DIR)/%.z64: $(N64ROM_DIR)/%.elf $(N64ROM_DIR)/boot.bin tools/n64rom.py
 	$(n64_TOOLS)objcopy -O binary $< $(@:.z64=.bin)

@@ -9,7 +9,7 @@ N64BENCH_ROM  := $(N64BENCH_DIR)/bench.z64
 N64BENCH_C1   := $(N64BENCH_DIR)/assets_c1
 N64BENCH_ASSETS := $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/platform_rotate.coll
 N64BENCH_OBJS := $(addprefix $(N64BENCH_DIR)/,bench_main.o bench_methods.o bench_hooks.o bench_scn.o rom_bench.o ccd.o polytope.o files.o)
-N64BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion $(N64ROM_CFLAGS) $(N64ROM_INC) -Ibench
+N64BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion -DCOLL_METHOD_HOOKS $(N64ROM_CFLAGS) $(N64ROM_INC) -Ibench
 
 # the 1 m cell request as bench/run.sh bakes it
 $(N64BENCH_C1)/test_course.coll: assets/levels/test_course.gltf $(COLLBAKE)
@@ -44,9 +44,9 @@ $(N64BENCH_DIR)/files.S: $(N64BENCH_ASSETS) $(N64BENCH_C1)/test_course.coll $(N6
 	    assets_c1/platform_rotate.coll=$(N64BENCH_C1)/platform_rotate.coll > $@
 $(N64BENCH_DIR)/files.o: $(N64BENCH_DIR)/files.S
 	$(n64_CC) $(N64ROM_CFLAGS) -c $< -o $@
-$(N64BENCH_DIR)/bench.elf: $(N64BENCH_OBJS) $(addprefix $(N64ROM_DIR)/rt/,crt0.o rom_main.o rom_libc.o) $(N64ROM_LIBS) host_tests/n64/rom.ld
+$(N64BENCH_DIR)/bench.elf: $(N64BENCH_OBJS) $(addprefix $(N64ROM_DIR)/rt/,crt0.o rom_main.o rom_libc.o) $(N64ROM_LIBS) $(BUILD)/n64/libcoll_hooks.a host_tests/n64/rom.ld
 	$(n64_CC) $(N64ROM_CFLAGS) -nostdlib -static -T host_tests/n64/rom.ld -Wl,--no-warn-rwx-segments -Wl,--build-id=none \
-	    $(filter %.o,$^) $(N64ROM_LIBS) -Wl,-Map=$(@:.elf=.map) -o $@
+	    $(filter %.o,$^) $(BUILD)/n64/libcoll_hooks.a $(N64ROM_LIBS) -Wl,-Map=$(@:.elf=.map) -o $@
 $(N64BENCH_ROM): $(N64BENCH_DIR)/bench.elf $(N64ROM_DIR)/boot.bin tools/n64rom.py
 	$(n64_TOOLS)objcopy -O binary $< $(@:.z64=.bin)
 	python3 tools/n64rom.py $(N64ROM_DIR)/boot.bin $(@:.z64=.bin) $@ "charbody64 bench"

@@ -51,15 +51,6 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
 bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_t *body,
                                const fm_vec3_t *body_pos_rel, coll_prim_hit_t *hit);
 
-/**
- * The capsule-vs-triangle sweep the scene uses, swappable so benchmarks can run the whole
- * character body on another method (libccd conservative advancement, discrete sub-steps).
- */
-typedef bool (*coll_tri_sweep_fn)(void *ctx, const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
-                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
-
-/** Installs a triangle-sweep method; fn = NULL restores the exact analytic one. */
-void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
 
 /* ---- additions (prim part) ---- */
 
@@ -83,16 +74,32 @@ void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
  */
 
 /**
- * The triangle sweep the scene code calls: runs the installed method, or
- * coll_capsule_triangle_sweep when none is installed. Same contract as that function.
+ * The triangle sweep the scene code calls: coll_capsule_triangle_sweep, or, in a
+ * COLL_METHOD_HOOKS build, the installed method. Same contract as that function.
  */
 bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                     const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
 
+#ifdef COLL_METHOD_HOOKS
+/*
+ * Method hooks, for benchmarks and tests only. The library proper has no runtime switch
+ * (no global checked per triangle): prim_method.c and prim_body.c built with
+ * -DCOLL_METHOD_HOOKS make libcoll_hooks.a, which a benchmark or suite that defines
+ * COLL_METHOD_HOOKS links ahead of libcoll.a.
+ */
+
+/** Another capsule-vs-triangle sweep (libccd conservative advancement, sub-steps, ...). */
+typedef bool (*coll_tri_sweep_fn)(void *ctx, const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
+
+/** Installs a triangle-sweep method; fn = NULL restores the exact analytic one. */
+void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx);
+
 /**
  * Forces the libccd MPR path (bisection on the swept capsule) for cylinder-body sweeps
- * instead of the Newton-on-exact-distance path; for tests and benchmarks. Default false.
+ * instead of the Newton-on-exact-distance path. Default false.
  */
 void coll_set_body_sweep_mpr(bool force);
+#endif
 
 #endif

@@ -14,8 +14,8 @@
  *  - Cylinder: the exact segment-cylinder distance (bisection on the sign of its
  *    derivative along the segment) drives Newton steps on the distance as a function of
  *    time (convex, derivative n . d, so steps from the left never pass the root); the
- *    normal comes from the closest points. When Newton does not settle, or when
- *    coll_set_body_sweep_mpr(true) forces it, libccd MPR takes over: bisection on the
+ *    normal comes from the closest points. When Newton does not settle (or, in a
+ *    COLL_METHOD_HOOKS build, coll_set_body_sweep_mpr(true) forces it), libccd MPR takes over: bisection on the
  *    intersection of the body with the capsule swept over [0, t] (a convex shape that
  *    only grows with t, so the test is monotone). A segment inside the cylinder gets its
  *    push-out from ccdMPRPenetration (no EPA, no allocation). libccd's portal refinement
@@ -532,9 +532,12 @@ static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, 
     return true;
 }
 
+#ifdef COLL_METHOD_HOOKS
 static bool g_force_mpr;
-
 void coll_set_body_sweep_mpr(bool force) { g_force_mpr = force; }
+#else
+#define g_force_mpr false /* the library proper: MPR only where Newton does not settle */
+#endif
 
 /** MPR time of impact (the fallback): bisection on the body against the capsule swept
  *  over [0, t], a convex shape that grows with t, so the test is monotone. */
