@@ -176,6 +176,11 @@ static void test_random_bit_flips_detected(void)
 
 /* ---- re-forging the checksum so field corruption reaches the deeper checks ---- */
 
+/* Header words of format version 3 (136 bytes): magic .. nbuckets, grid_margin, reserved. */
+#define HDR_WORDS 34
+#define HDR_GRID_MARGIN 32 /* word index */
+#define HDR_CELL_SIZE 17
+
 static uint32_t be32(const uint8_t *p) { return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]; }
 static void put_be32(uint8_t *p, uint32_t v) { p[0] = (uint8_t)(v >> 24); p[1] = (uint8_t)(v >> 16); p[2] = (uint8_t)(v >> 8); p[3] = (uint8_t)v; }
 
@@ -193,7 +198,7 @@ static void forge_checksum(uint8_t *b, size_t size)
     for (int i = 0; i < 4; i++)
         if (off[i] + cnt[i] * es[i] > size) return;
     uint32_t h = 2166136261u;
-    for (int w = 1; w < 32; w++)
+    for (int w = 1; w < HDR_WORDS; w++)
         if (w != 4) h = (h ^ be32(b + 4 * w)) * 16777619u;
     for (int i = 0; i < 4; i++)
         for (uint64_t k = 0; k < cnt[i]; k++) {
@@ -202,6 +207,46 @@ static void forge_checksum(uint8_t *b, size_t size)
             h = (h ^ v) * 16777619u;
         }
     put_be32(b + 16, h);
+}
+
+/* Version 2 blobs (128-byte header, no stored grid margin) are refused as another version,
+ * also when cut to their old header length; a stored margin that is negative, not
+ * finite or not below the cell size is corrupt. */
+static void test_old_version_and_bad_margin_refused(void)
+{
+    make_mesh(0, 6);
+    const coll_mesh_t *l = (const coll_mesh_t *)1;
+    uint8_t *b = (uint8_t *)g_work;
+    memcpy(g_work, g_blob, g_blob_size);
+    put_be32(b + 4, 2);
+    forge_checksum(b, g_blob_size);
+    uint8_t head[136];
+    memcpy(head, b, sizeof head);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_VERSION, coll_mesh_load(g_work, g_blob_size, &l));
+    TEST_ASSERT_NULL(l);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_VERSION, coll_mesh_load(g_work, 128, &l));
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_VERSION, coll_mesh_load(g_work, 8, &l));
+    TEST_ASSERT_EQUAL_MEMORY(head, b, sizeof head); /* left intact */
+    float cell;
+    uint32_t cw = be32((const uint8_t *)g_blob + 4 * HDR_CELL_SIZE);
+    memcpy(&cell, &cw, 4);
+    TEST_ASSERT_TRUE(cell > 0.0f);
+    const float bad[] = { -1e-6f, cell, 2.0f * cell, INFINITY, NAN };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        memcpy(g_work, g_blob, g_blob_size);
+        uint32_t v;
+        memcpy(&v, &bad[i], 4);
+        put_be32(b + 4 * HDR_GRID_MARGIN, v);
+        forge_checksum(b, g_blob_size);
+        TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
+    }
+    memcpy(g_work, g_blob, g_blob_size);
+    put_be32(b + 4 * (HDR_GRID_MARGIN + 1), 1); /* reserved */
+    forge_checksum(b, g_blob_size);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
+    memcpy(g_work, g_blob, g_blob_size);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(g_work, g_blob_size, &l));
+    TEST_ASSERT_TRUE(l->grid_margin > 0.0f && l->grid_margin < l->cell_size);
 }
 
 static void test_forged_checksum_matches_writer(void)
@@ -223,7 +268,7 @@ static void test_corrupt_fields_with_valid_checksum(void)
     for (int q = 0; q < 2; q++) {
         make_mesh(q ? COLL_MESH_QUANTIZE : 0u, 8);
         /* every header word (not magic/checksum) with every interesting value */
-        for (int w = 1; w < 32; w++) {
+        for (int w = 1; w < HDR_WORDS; w++) {
             if (w == 4) continue;
             for (size_t vi = 0; vi < sizeof values / sizeof values[0] + 2; vi++) {
                 memcpy(g_work, g_blob, g_blob_size);
@@ -242,7 +287,7 @@ static void test_corrupt_fields_with_valid_checksum(void)
         for (int i = 0; i < 3000; i++) {
             memcpy(g_work, g_blob, g_blob_size);
             uint8_t *b = (uint8_t *)g_work;
-            uint32_t pos = 128 + core_rng_u32(&r) % (uint32_t)(g_blob_size - 128);
+            uint32_t pos = 4 * HDR_WORDS + core_rng_u32(&r) % (uint32_t)(g_blob_size - 4 * HDR_WORDS);
             pos &= ~1u;
             b[pos] = (uint8_t)core_rng_u32(&r);
             b[pos + 1] ^= 0xFF;
@@ -288,6 +333,7 @@ int main(void)
     RUN_TEST(test_every_truncation_fails);
     RUN_TEST(test_random_bit_flips_detected);
     RUN_TEST(test_forged_checksum_matches_writer);
+    RUN_TEST(test_old_version_and_bad_margin_refused);
     RUN_TEST(test_corrupt_fields_with_valid_checksum);
     return UNITY_END();
 }

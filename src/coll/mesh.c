@@ -107,11 +107,6 @@ static uint32_t checksum_of(const uint8_t *b, bool swap, const section_t s[4])
 
 static uint64_t ncells_of(const coll_mesh_t *m) { return coll_mesh_cell_count(m); }
 
-static uint32_t hash_cell(uint32_t x, uint32_t y, uint32_t z, uint32_t nbuckets)
-{
-    return ((x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u)) & (nbuckets - 1u);
-}
-
 static coll_mesh_layout_t layout_of_mesh(const coll_mesh_t *m)
 {
     return coll_mesh_layout_of(m->flags, m->nverts, m->ntris, ncells_of(m), m->nrefs);
@@ -252,17 +247,7 @@ typedef struct {
     uint32_t nbuckets; /* 0: dense grid; else hashed (power of two) */
 } grid_t;
 
-/* Grid indices and counts are converted as (float)(int32_t): they fit in an int32, and a
- * uint32_t converts through double-precision code on MIPS (cvt.d.w, add.d, cvt.s.d). */
-static uint32_t cell_coord(float x, float origin, float inv, uint32_t dim)
-{
-    float f = (x - origin) * inv;
-    if (!(f > 0.0f)) return 0;
-    if (f >= (float)(int32_t)dim) return dim - 1u;
-    uint32_t c = (uint32_t)f;
-    return c < dim ? c : dim - 1u;
-}
-
+/* Grid counts are converted as (float)(int32_t) (see coll_mesh_cell_coord). */
 /* Calls visit for every cell triangle tri (conservatively) intersects; stops and returns
  * false as soon as visit does. The same predicate serves counting and filling. */
 typedef bool (*cell_visit_fn)(void *ctx, uint32_t cell);
@@ -274,8 +259,8 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
     for (int a = 0; a < 3; a++) {
         float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
         float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
-        lo[a] = cell_coord(mn, g->origin[a], inv, g->dims[a]);
-        hi[a] = cell_coord(mx, g->origin[a], inv, g->dims[a]);
+        lo[a] = coll_mesh_cell_coord(mn, g->origin[a], inv, g->dims[a]);
+        hi[a] = coll_mesh_cell_coord(mx, g->origin[a], inv, g->dims[a]);
     }
     bool single = lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2];
     /* Hashed grid: a triangle is listed once per entry even when several of its cells
@@ -296,7 +281,7 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
                 }
                 uint32_t e;
                 if (g->nbuckets) {
-                    e = hash_cell(x, y, z, g->nbuckets);
+                    e = coll_mesh_hash_cell(x, y, z, g->nbuckets);
                     bool rep = false;
                     for (uint32_t i = 0; i < ndone && !rep; i++) rep = done[i] == e;
                     if (rep) continue;
@@ -419,7 +404,7 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
                 for (int a = 0; a < 3; a++) {
                     float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
                     float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
-                    n *= 1u + cell_coord(mx, g->origin[a], inv, g->dims[a]) - cell_coord(mn, g->origin[a], inv, g->dims[a]);
+                    n *= 1u + coll_mesh_cell_coord(mx, g->origin[a], inv, g->dims[a]) - coll_mesh_cell_coord(mn, g->origin[a], inv, g->dims[a]);
                 }
                 work += n;
             }
@@ -586,6 +571,7 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
     m->nrefs = run;
     for (int a = 0; a < 3; a++) { m->grid_origin[a] = g.origin[a]; m->dims[a] = g.dims[a]; }
     m->cell_size = g.cell;
+    m->grid_margin = g.margin;
     m->off_cells = (uint32_t)l.off_cells;
     m->off_refs = (uint32_t)l.off_refs;
     m->total_size = (uint32_t)l.total;
@@ -631,6 +617,7 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
         if (!(h.bmin[a] <= h.bmax[a]) || h.qscale[a] < 0.0f) return COLL_ERR_CORRUPT;
     }
     if (!hdr_float_ok(h.cell_size) || !(h.cell_size > 0.0f)) return COLL_ERR_CORRUPT;
+    if (!(h.grid_margin >= 0.0f) || !(h.grid_margin < h.cell_size) || h.reserved != 0u) return COLL_ERR_CORRUPT;
     if ((h.flags & COLL_MESHF_IDX16) && h.nverts > 65536u) return COLL_ERR_CORRUPT;
     if ((h.flags & COLL_MESHF_REF16) && h.ntris > 65536u) return COLL_ERR_CORRUPT;
     coll_mesh_layout_t l = coll_mesh_layout_of(h.flags, h.nverts, h.ntris, ncells, h.nrefs);
@@ -696,6 +683,8 @@ coll_err_t coll_mesh_load(void *blob, size_t size, const coll_mesh_t **out)
     if (rd32(b, false) == COLL_MESH_MAGIC_NATIVE) native = true;
     else if (rd32(b, le) == COLL_MESH_MAGIC_BLOB) native = false;
     else return COLL_ERR_BAD_MAGIC;
+    /* another version first: an older (shorter-headed) blob says so, not "truncated" */
+    if (size >= 8u && rd32(b + 4, !native && le) != COLL_MESH_VERSION) return COLL_ERR_VERSION;
     if (size < sizeof(struct coll_mesh_s)) return COLL_ERR_TRUNCATED;
     bool swap = !native && le;
     coll_err_t err = validate(b, size, swap);

@@ -5,7 +5,7 @@
  *
  * A mesh is one contiguous, relocatable block (offsets, never pointers), 8-byte aligned:
  *
- *     header (coll_mesh_s, 128 bytes)
+ *     header (coll_mesh_s, 136 bytes)
  *     vertices   nverts x {float x,y,z}            (12 B each), or, with COLL_MESHF_QUANT,
  *                nverts x {uint16 x,y,z}           (6 B each): local = qorigin + q * qscale
  *     triangles  ntris x 3 vertex indices, uint16 with COLL_MESHF_IDX16, else uint32
@@ -41,7 +41,10 @@
 
 #define COLL_MESH_MAGIC_BLOB   0x434D5348u /**< "CMSH": big-endian baked file, not yet loaded */
 #define COLL_MESH_MAGIC_NATIVE 0x434D534Eu /**< "CMSN": native byte order, ready to use */
-#define COLL_MESH_VERSION      2u /**< 2: hashed grid (COLL_MESHF_HASH, nbuckets) */
+/** 2: hashed grid (COLL_MESHF_HASH, nbuckets). 3: the grid's registration margin is stored
+ *  (grid_margin), so the queries use what the builder used; older blobs are refused
+ *  (COLL_ERR_VERSION: bake them again). */
+#define COLL_MESH_VERSION      3u
 
 enum {
     COLL_MESHF_QUANT = 1u << 0, /**< vertices are uint16 fixed point */
@@ -73,8 +76,11 @@ struct coll_mesh_s {
     uint32_t off_cells;
     uint32_t off_refs;
     uint32_t nbuckets;    /**< COLL_MESHF_HASH: cell entries (power of two), else 0 */
+    float grid_margin;    /**< every triangle is listed in each cell its bounds grown by this
+                               reach (>= 0, < cell_size): the queries grow their boxes by it */
+    uint32_t reserved;    /**< 0 (keeps the sections 8-byte aligned) */
 };
-_Static_assert(sizeof(struct coll_mesh_s) == 128, "on-disk mesh header must stay 128 bytes");
+_Static_assert(sizeof(struct coll_mesh_s) == 136, "on-disk mesh header is 136 bytes (version 3)");
 
 /** Offsets of a layout, computed from the counts (64-bit so nothing overflows). */
 typedef struct {
@@ -113,12 +119,32 @@ static inline uint64_t coll_mesh_cell_count(const coll_mesh_t *m)
     return (uint64_t)m->dims[0] * m->dims[1] * m->dims[2];
 }
 
+/** Hash bucket of grid cell (x,y,z) in a hashed grid of nbuckets (a power of two). */
+static inline uint32_t coll_mesh_hash_cell(uint32_t x, uint32_t y, uint32_t z, uint32_t nbuckets)
+{
+    return ((x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u)) & (nbuckets - 1u);
+}
+
 /** Cell entry of grid cell (x,y,z) (each coordinate < dims, unchecked). */
 static inline uint32_t coll_mesh_cell_index(const coll_mesh_t *m, uint32_t x, uint32_t y, uint32_t z)
 {
-    if (m->flags & COLL_MESHF_HASH)
-        return ((x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u)) & (m->nbuckets - 1u);
+    if (m->flags & COLL_MESHF_HASH) return coll_mesh_hash_cell(x, y, z, m->nbuckets);
     return x + m->dims[0] * (y + m->dims[1] * z);
+}
+
+/**
+ * Grid coordinate along one axis of local coordinate x (inv = 1 / cell size), clamped to
+ * [0, dim). The builder registers and the queries look up through this one function.
+ * Converted as (float)(int32_t): dims fit in an int32, and a uint32_t converts through
+ * double-precision code on MIPS (cvt.d.w, add.d, cvt.s.d).
+ */
+static inline uint32_t coll_mesh_cell_coord(float x, float origin, float inv, uint32_t dim)
+{
+    float f = (x - origin) * inv;
+    if (!(f > 0.0f)) return 0;
+    if (f >= (float)(int32_t)dim) return dim - 1u;
+    uint32_t c = (uint32_t)f;
+    return c < dim ? c : dim - 1u;
 }
 
 /** Grid cell triangles: refs[begin..end). */

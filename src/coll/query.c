@@ -170,24 +170,8 @@ static bool one_way_ray(const fm_vec3_t *u, const fm_vec3_t shape[3], const fm_v
     return fm_vec3_dot(o, &n) > 0.0f && fm_vec3_dot(dir, &n) < 0.0f;
 }
 
-/* Registration margin of the grid (same formula as the builder) plus rounding slack. */
-static float mesh_margin(const coll_mesh_t *m)
-{
-    float maxabs = 0.0f;
-    for (int a = 0; a < 3; a++) maxabs = max_f(maxabs, max_f(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
-    return m->cell_size * 1e-3f + maxabs * 2e-6f;
-}
-
-/* Grid indices and counts are converted as (float)(int32_t): they fit in an int32, and a
- * uint32_t converts through double-precision code on MIPS (cvt.d.w, add.d, cvt.s.d). */
-static uint32_t cell_of(float x, float origin, float inv, uint32_t dim)
-{
-    float f = (x - origin) * inv;
-    if (!(f > 0.0f)) return 0;
-    if (f >= (float)(int32_t)dim) return dim - 1u;
-    uint32_t c = (uint32_t)f;
-    return c < dim ? c : dim - 1u;
-}
+/* The grid's registration margin, as the builder stored it (format version 3). */
+static float mesh_margin(const coll_mesh_t *m) { return m->grid_margin; }
 
 /* ------------------------------------------------------------------ dedup ---------- */
 
@@ -453,7 +437,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     float inv_d[3];
     for (int a = 0; a < 3; a++) {
         float p = o_l.v[a] + d_l.v[a] * s0;
-        c[a] = cell_of(p, m->grid_origin[a], inv_cs, m->dims[a]);
+        c[a] = coll_mesh_cell_coord(p, m->grid_origin[a], inv_cs, m->dims[a]);
         step[a] = d_l.v[a] > 0.0f ? 1 : (d_l.v[a] < 0.0f ? -1 : 0);
         inv_d[a] = step[a] ? 1.0f / d_l.v[a] : 0.0f;
     }
@@ -637,8 +621,8 @@ static bool instance_cells(const coll_mesh_t *m, const fm_vec3_t *llo, const fm_
     float inv_cs = 1.0f / m->cell_size;
     for (int a = 0; a < 3; a++) {
         if (lhi->v[a] < m->bmin[a] || llo->v[a] > m->bmax[a]) return false;
-        clo[a] = cell_of(llo->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
-        chi[a] = cell_of(lhi->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
+        clo[a] = coll_mesh_cell_coord(llo->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
+        chi[a] = coll_mesh_cell_coord(lhi->v[a], m->grid_origin[a], inv_cs, m->dims[a]);
     }
     return true;
 }
