@@ -90,6 +90,14 @@ static void capsule_axis(const body_frame_t *f, fm_vec3_t out[3])
     out[2] = out[1];
 }
 
+/* The inner segment of a round body (sphere: a point) as a degenerate triangle: the body
+ * is everything within he.x of it. */
+static void round_axis(const body_frame_t *f, fm_vec3_t out[3])
+{
+    if (f->shape == COLL_SHAPE_SPHERE) out[0] = out[1] = out[2] = f->pos;
+    else capsule_axis(f, out);
+}
+
 /* ---------------------------------------------------------------- rays */
 
 static bool ray_box_local(fm_vec3_t o, fm_vec3_t d, fm_vec3_t he, float s_max, prim_ray_t *out)
@@ -654,8 +662,7 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
         fm_vec3_t ax[3];
-        if (f.shape == COLL_SHAPE_SPHERE) ax[0] = ax[1] = ax[2] = f.pos;
-        else capsule_axis(&f, ax);
+        round_axis(&f, ax);
         /* Cheap exact reject first: the segments farther apart at the start than the two
          * radii plus the whole motion cannot meet (the general sweep below costs ~5k). */
         fm_vec3_t cp, cq;
@@ -691,8 +698,7 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
         fm_vec3_t ax[3];
-        if (f.shape == COLL_SHAPE_SPHERE) ax[0] = ax[1] = ax[2] = f.pos;
-        else capsule_axis(&f, ax);
+        round_axis(&f, ax);
         /* Round shapes against the capsule: the closest points of the two axes are the
          * whole answer (what the general triangle path would compute, without its setup). */
         fm_vec3_t cp, cq;

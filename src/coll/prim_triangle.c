@@ -25,27 +25,40 @@
 
 /* ---------------------------------------------------------------- elementary ray tests */
 
-bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+/* Where the line m + d s (m: the origin relative to a centre point, or across an axis)
+ * first reaches distance r: ROUND_INSIDE when it starts within r, ROUND_MISS when it never
+ * gets there or only after s_max, else ROUND_ENTERS at *s. */
+enum { ROUND_MISS, ROUND_INSIDE, ROUND_ENTERS };
+static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 {
-    fm_vec3_t m = pv_sub(o, c);
     float cc = pv_dot(m, m) - r * r;
-    if (cc <= 0.0f) {
-        out->s = 0.0f;
-        out->n = pv_unit_or(m, pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
-        return true;
-    }
+    if (cc <= 0.0f) return ROUND_INSIDE;
     float b = pv_dot(m, d);
-    if (b >= 0.0f) return false;
+    if (b >= 0.0f) return ROUND_MISS;
     float a = pv_dot(d, d);
     /* b^2 - a*cc cancels badly for a far origin: use a*(r^2 - dmin^2), dmin from the
      * closest point of the line to the centre. */
     fm_vec3_t w = pv_madd(m, d, -b / a);
     float disc = a * (r * r - pv_dot(w, w));
-    if (!(disc >= 0.0f)) return false;
-    float s = cc / (-b + sqrtf(disc)); /* smaller root without cancellation */
-    if (!(s <= s_max)) return false;
+    if (!(disc >= 0.0f)) return ROUND_MISS;
+    *s = cc / (-b + sqrtf(disc)); /* smaller root without cancellation */
+    return *s <= s_max ? ROUND_ENTERS : ROUND_MISS;
+}
+
+/* Outward normal at m + d s, or away from the motion when that point is the centre. */
+static fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
+{
+    return pv_unit_or(pv_madd(m, d, s), pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
+}
+
+bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+{
+    fm_vec3_t m = pv_sub(o, c);
+    float s = 0.0f;
+    int e = round_entry(m, d, r, s_max, &s);
+    if (e == ROUND_MISS) return false;
     out->s = s;
-    out->n = pv_unit_or(pv_madd(m, d, s), pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
+    out->n = round_normal(m, d, s);
     return true;
 }
 
@@ -59,25 +72,13 @@ bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3
     float md = pv_dot(m, ax), dd = pv_dot(d, ax);
     fm_vec3_t mp = pv_madd(m, ax, -md / ss);   /* components perpendicular to the axis */
     fm_vec3_t dp = pv_madd(d, ax, -dd / ss);
-    float cc = pv_dot(mp, mp) - r * r;
-    if (cc <= 0.0f) {
-        if (md < 0.0f || md > ss) return false; /* the end spheres cover this */
-        out->s = 0.0f;
-        out->n = pv_unit_or(mp, pv_unit_or(pv_neg(dp), pv_make(0.0f, 1.0f, 0.0f)));
-        return true;
-    }
-    float b = pv_dot(mp, dp);
-    if (b >= 0.0f) return false;
-    float a = pv_dot(dp, dp);
-    fm_vec3_t w = pv_madd(mp, dp, -b / a);    /* closest approach to the axis */
-    float disc = a * (r * r - pv_dot(w, w));
-    if (!(disc >= 0.0f)) return false;
-    float s = cc / (-b + sqrtf(disc));
-    if (!(s <= s_max)) return false;
+    float s = 0.0f;
+    int e = round_entry(mp, dp, r, s_max, &s);
+    if (e == ROUND_MISS) return false;
     float axial = md + s * dd;
-    if (axial < 0.0f || axial > ss) return false;
+    if (axial < 0.0f || axial > ss) return false; /* past an end: the end spheres cover it */
     out->s = s;
-    out->n = pv_unit_or(pv_madd(mp, dp, s), pv_unit_or(pv_neg(dp), pv_make(0.0f, 1.0f, 0.0f)));
+    out->n = round_normal(mp, dp, s);
     return true;
 }
 
@@ -334,19 +335,33 @@ static void take(feat_hit_t *best, float t, fm_vec3_t n, fm_vec3_t p)
     if (!best->hit || t < best->t) { best->hit = true; best->t = t; best->n = n; best->p = p; }
 }
 
+/**
+ * Time tt in [0, t_max] at which a point at signed distance h from a plane, moving at dn
+ * along its normal, comes within r of it from its own side (sig: that side), when that
+ * is earlier than the best hit so far; false when it moves away or arrives too late.
+ */
+static inline bool plane_approach(float h, float dn, float r, float t_max, const feat_hit_t *best,
+                                  float *tt, float *sig)
+{
+    *sig = 1.0f;
+    if (h < 0.0f) { *sig = -1.0f; h = -h; dn = -dn; }
+    if (dn >= 0.0f) return false;
+    float t = (h - r) / -dn;
+    if (t < 0.0f) t = 0.0f;
+    if (!(t <= t_max) || (best->hit && t >= best->t)) return false;
+    *tt = t;
+    return true;
+}
+
 /** Endpoint p moving by d against the offset face on its side. */
 static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, feat_hit_t *best)
 {
     const tri_t *t = &c->tri;
     float h = pv_dot(t->n, pv_sub(p, t->v[0]));
     float dn = pv_dot(t->n, c->d);
-    float sig = 1.0f;
-    if (h < 0.0f) { sig = -1.0f; h = -h; dn = -dn; }
-    if (dn >= 0.0f) return;
-    float tt = (h - r) / -dn;
-    if (tt < 0.0f) tt = 0.0f;
-    if (!(tt <= t_max) || (best->hit && tt >= best->t)) return;
-    fm_vec3_t q = pv_madd(pv_madd(p, c->d, tt), t->n, -sig * (h + tt * dn));
+    float tt, sig;
+    if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
+    fm_vec3_t q = pv_madd(pv_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
     if (!tri_contains(t, q)) return;
     take(best, tt, pv_scale(t->n, sig), q);
 }
@@ -361,12 +376,8 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     fm_vec3_t mu = pv_scale(m, 1.0f / sqrtf(mm));
     float h = pv_dot(mu, pv_sub(c->a, e0));
     float dn = pv_dot(mu, c->d);
-    float sig = 1.0f;
-    if (h < 0.0f) { sig = -1.0f; h = -h; dn = -dn; }
-    if (dn >= 0.0f) return;
-    float tt = (h - r) / -dn;
-    if (tt < 0.0f) tt = 0.0f;
-    if (!(tt <= t_max) || (best->hit && tt >= best->t)) return;
+    float tt, sig;
+    if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
     fm_vec3_t w = pv_sub(e0, pv_madd(c->a, c->d, tt));
     float u = pv_dot(pv_cross(w, e), m) / mm;
     float v = pv_dot(pv_cross(w, c->s), m) / mm;
