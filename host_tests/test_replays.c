@@ -318,6 +318,14 @@ static void test_oracle_support(void)
     b->flags = 0; b->floor_id = -1;
     osim.rest_frames = 0;
     for (int i = 1; i < SOAK_REST_FRAMES; i++) TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, p, z, z, false, false, false));
+    /* a jump the game launched this step (blocked by a wall: it did not move): no verdict */
+    soak_motion_t jm;
+    memset(&jm, 0, sizeof jm);
+    jm.pos0 = p; jm.pos1 = p; jm.dt = 1.0f / 60; jm.launched = true;
+    osim.owner = p; osim.body.velocity = z;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &jm));
+    TEST_ASSERT_EQUAL_INT(SOAK_REST_FRAMES, (int)osim.rest_frames);
+    /* the next step, not launched, still not grounded: fails */
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_SUPPORT, oracle_step(p, p, z, z, false, false, false));
     /* moving resets the count; hovering 5 cm up touches nothing */
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, V(0.01f, 0, 0), z, z, false, false, false));

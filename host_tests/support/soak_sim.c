@@ -357,7 +357,9 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
     /* (d) support */
     if (!excused && dlen3(d) <= SOAK_REST_MOVE) sim->rest_frames++;
     else sim->rest_frames = 0;
-    if (sim->rest_frames >= SOAK_REST_FRAMES && !grounded1 && ON(SOAK_FAIL_SUPPORT)) {
+    /* a step the game launched along up (a jump) leaves the floor on purpose, even when a
+     * wall stopped the rise (one slide): no verdict on it */
+    if (sim->rest_frames >= SOAK_REST_FRAMES && !grounded1 && !m->launched && ON(SOAK_FAIL_SUPPORT)) {
         sim->st.oracle_frames[SOAK_FAIL_SUPPORT]++;
         if (soak_check_touches_walkable(sim->lvl, s, m->pos1))
             FAIL(SOAK_FAIL_SUPPORT, "at rest for %u frames touching walkable geometry, not grounded, pos (%.4f %.4f %.4f)",
