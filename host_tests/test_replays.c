@@ -21,7 +21,7 @@
 
 static soak_level_t lvl;
 static soak_frame_t frames[MAX_FRAMES];
-static int stale; /* replays whose stored state is from another library version */
+static int stale; /* replays whose stored state is from another library version (still compared) */
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -461,22 +461,19 @@ static bool check_replay(const char *path)
     const soak_expect_t *e = soak_replay_expect_for(&rp, soak_arch());
     const soak_expect_t *other = NULL;
     for (uint32_t i = 0; i < rp.nexpect; i++)
-        if (!other && strcmp(rp.expect[i].lib, soak_lib_version()) == 0) other = &rp.expect[i];
-    if (e && strcmp(e->lib, soak_lib_version()) != 0) {
-        /* stored with another library version: behaviour may legitimately differ */
-        printf("%s: stored %s state is from library %s, this is %s: not compared (make soak-bless)\n", path,
-               soak_arch(), e->lib, soak_lib_version());
-        stale++;
-        e = NULL;
-        other = NULL;
-    }
+        if (!other && strcmp(rp.expect[i].arch, soak_arch()) != 0) other = &rp.expect[i];
+    /* Compared whatever library version stored it: a library change that changes a
+     * replay's motion fails here until it is looked at and re-stored (make soak-bless),
+     * so refactors prove themselves bit-identical. The version only says since when. */
+    bool other_lib = e && strcmp(e->lib, soak_lib_version()) != 0;
+    if (other_lib) stale++;
     if (e) {
         if (memcmp(&e->pos, &res.pos, sizeof e->pos) != 0 || memcmp(&e->vel, &res.vel, sizeof e->vel) != 0 ||
             e->on_floor != res.on_floor) {
-            printf("%s: final state differs from the stored %s state (behaviour changed; if intended, "
-                   "re-store with `make soak-bless`): pos %a %a %a, stored %a %a %a\n",
-                   path, soak_arch(), (double)res.pos.x, (double)res.pos.y, (double)res.pos.z, (double)e->pos.x,
-                   (double)e->pos.y, (double)e->pos.z);
+            printf("%s: final state differs from the stored %s state of library %s (this is %s: behaviour "
+                   "changed; if intended, re-store with `make soak-bless`): pos %a %a %a, stored %a %a %a\n",
+                   path, soak_arch(), e->lib, soak_lib_version(), (double)res.pos.x, (double)res.pos.y,
+                   (double)res.pos.z, (double)e->pos.x, (double)e->pos.y, (double)e->pos.z);
             ok = false;
         }
     } else if (other) {
@@ -505,7 +502,7 @@ static void test_every_replay_passes(void)
         if (!check_replay(path)) bad++;
     }
     closedir(d);
-    printf("%d replay(s) in %s, %d failing, %d with stored states of another library version (%s)\n", n,
+    printf("%d replay(s) in %s, %d failing, %d stored by another library version (%s), compared all the same\n", n,
            REPLAY_DIR, bad, stale, soak_lib_version());
     TEST_ASSERT_TRUE_MESSAGE(n > 0, "no replays found");
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, bad, "failing replays (listed above)");
