@@ -338,6 +338,9 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     if (c.sweep_ihh < 0.0f) c.sweep_ihh = 0.0f;
     c.sweep_lift = 0.5f * s->step_height;
     c.unit = s->units_per_meter;
+    c.contact_eps = CB_CONTACT_EPS * c.unit;
+    c.min_depth = CB_MIN_DEPTH * c.unit;
+    c.tiny = CB_TINY * c.unit;
     c.skin = 0.01f * s->radius < CB_SKIN * c.unit ? 0.01f * s->radius : CB_SKIN * c.unit;
     const float max_speed = CB_MAX_SPEED * c.unit;
     c.dt = dt;

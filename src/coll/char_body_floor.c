@@ -57,7 +57,7 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
      * a turntable at 1 rev/s would otherwise leave rotated by half a step). */
     fm_vec3_t chord = cb_scale(delta, 1.0f / c->dt);
     fm_vec3_t v = chord;
-    if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord, cb_len_tol(c, CB_TINY));
+    if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord, c->tiny);
     b->carry_velocity = chord;
     b->flags |= CB_FLAG_CARRIED;
     return cb_finite(v) ? v : cb_v(0.0f, 0.0f, 0.0f);
@@ -145,7 +145,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fm_vec3_t side1 = cb_norm(cb_reject(h1.normal, up)), side2 = cb_norm(cb_reject(h2.normal, up));
         /* Over a floor the foot could step down to, only a gap between surfaces at one
          * level holds the ball (tiles, a slab beside a slab), not a stair's nosings. */
-        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - cb_len_tol(c, CB_CONTACT_EPS)))
+        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - c->contact_eps))
             return false;
         if (cb_dot(side1, side2) < -0.05f) {
             normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
@@ -179,7 +179,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
     fm_vec3_t left = cb_scale(c->up, -dist);
     for (int it = 0; it < 3; it++) {
         float len = cb_len(left);
-        if (!(len > cb_len_tol(c, CB_TINY))) return;
+        if (!(len > c->tiny)) return;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit) ||
             !isfinite(hit.t) || !cb_finite(hit.normal)) {
@@ -199,7 +199,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
         left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
         if (!(cb_dot(left, b->velocity) > 0.0f)) return;
-        if (!(cb_dot(left, c->up) < -cb_len_tol(c, CB_TINY))) return;
+        if (!(cb_dot(left, c->up) < -c->tiny)) return;
     }
 }
 
@@ -208,7 +208,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     char_body_t *b = c->body;
     fm_vec3_t up = c->up;
     float above = c->radius + c->step;            /* ray origin above the foot */
-    const float contact_eps = cb_len_tol(c, CB_CONTACT_EPS), step_eps = cb_len_tol(c, CB_STEP_EPS);
+    const float contact_eps = c->contact_eps, step_eps = cb_len_tol(c, CB_STEP_EPS);
     float reach = was_grounded ? c->snap : contact_eps;
     support_t s = {0};
     bool fits = true;

@@ -86,12 +86,16 @@ typedef struct {
     float snap;          ///< floor snap distance
     float skin;          ///< contact gap: CB_SKIN, or 1 % of the radius when smaller
     float unit;          ///< settings.units_per_meter: the metre tolerances' scale
+    float contact_eps;   ///< CB_CONTACT_EPS in the body's unit
+    float min_depth;     ///< CB_MIN_DEPTH in the body's unit
+    float tiny;          ///< CB_TINY in the body's unit
     float dt;            ///< this step's (clamped) duration, s
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
     const coll_gather_t *gather; ///< the step's candidate triangles, or NULL (scene queries)
 } cb_ctx_t;
 
-/** A tolerance given in metres (CB_*), in the body's length unit. */
+/** A tolerance given in metres (CB_*), in the body's length unit (the ones used on every
+ *  step are in cb_ctx_t already). */
 static inline float cb_len_tol(const cb_ctx_t *c, float metres) { return metres * c->unit; }
 
 /* The body's queries: on the step's gather when there is one (it falls back to the scene

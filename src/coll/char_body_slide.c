@@ -99,7 +99,7 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
 float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
     float len = cb_len(d);
-    if (!(len > cb_len_tol(c, CB_TINY)) || !isfinite(len)) {
+    if (!(len > c->tiny) || !isfinite(len)) {
         if (isfinite(len)) *pos = cb_add(*pos, d); /* sub-micrometre: below every tolerance */
         return 1.0f;
     }
@@ -285,7 +285,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     float time_left = 1.0f;
     for (int it = 0; it < b->settings.max_slides; it++) {
         float len = cb_len(rem);
-        if (!(len > cb_len_tol(c, CB_TINY))) break;
+        if (!(len > c->tiny)) break;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, rem, &hit)) {
             *pos = cb_add(*pos, rem);
@@ -383,7 +383,7 @@ bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     uint32_t n0 = overlaps_at(c, *pos, ct0);
     fm_vec3_t np = cb_add(*pos, delta);
     uint32_t n = overlaps_at(c, np, ct);
-    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0, cb_len_tol(c, CB_MIN_DEPTH))) return false;
+    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0, c->min_depth)) return false;
     *pos = np;
     return true;
 }
@@ -402,7 +402,7 @@ static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
     coll_contact_t ct[CB_MAX_CONTACTS];
     uint32_t n = overlaps_at(c, pos, ct);
     for (uint32_t i = 0; i < n; i++)
-        if (ct[i].depth > cb_len_tol(c, CB_MIN_DEPTH)) return false;
+        if (ct[i].depth > c->min_depth) return false;
     return true;
 }
 
@@ -422,7 +422,7 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
     fm_vec3_t o = cb_sweep_center(c, from), e = cb_sweep_center(c, to);
     fm_vec3_t d = cb_sub(e, o);
     float len = cb_len(d);
-    if (!(len > cb_len_tol(c, CB_TINY))) return true;
+    if (!(len > c->tiny)) return true;
     fm_vec3_t dir = cb_scale(d, 1.0f / len);
     float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(axial < 1.0f ? 1.0f - axial * axial : 0.0f);
     float reach = axial > 0.999f ? c->sweep_ihh : 0.0f;
@@ -454,7 +454,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct[CB_MAX_CONTACTS];
     uint32_t n = overlaps_at(c, *pos, ct);
-    const float min_depth = cb_len_tol(c, CB_MIN_DEPTH);
+    const float min_depth = c->min_depth;
     float deepest = 0.0f;
     bool trust = true, ceiling = false;
     for (uint32_t i = 0; i < n; i++) {
@@ -515,7 +515,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
     fm_vec3_t p = *pos;
     fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
-    const float min_depth = cb_len_tol(c, CB_MIN_DEPTH);
+    const float min_depth = c->min_depth;
     bool stuck = deeper_than(ct0, n0, c->skin); /* at the last kept position */
     for (int pass = 0; pass < 3; pass++) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
@@ -552,7 +552,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * a body wedged between a slab's faces that the game never put there, and pushing
          * through ended 126 mm inside the other face (soak seed 12 level 382). A body the
          * game put deep into geometry may therefore stay there until it moves out. */
-        if (no_worse(ct, n, ct0, n0, cb_len_tol(c, CB_MIN_DEPTH)) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
+        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);
@@ -565,7 +565,7 @@ void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
-    fm_vec3_t o = cb_madd(old_foot, c->up, cb_len_tol(c, CB_CONTACT_EPS));
+    fm_vec3_t o = cb_madd(old_foot, c->up, c->contact_eps);
     fm_vec3_t d = cb_sub(foot, o);
     float len = cb_len(d);
     if (!(len > cb_len_tol(c, 1e-5f))) return;
