@@ -276,6 +276,61 @@ static void test_courses_exercise_the_features(void)
     TEST_ASSERT_TRUE(ref_track.floor[100]);
 }
 
+/* The setting itself: bad values mean metres, the clamps and fallbacks scale with it, and a
+ * centimetre body is not slowed to 200 units/s (the issue's "half speed"). */
+static void test_unit_setting_and_clamps(void)
+{
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    TEST_ASSERT_EQUAL_FLOAT(1.0f, s.units_per_meter);
+    const float bad[] = {0.0f, -100.0f, NAN, INFINITY};
+    for (int i = 0; i < 4; i++) {
+        s = CHAR_BODY_SETTINGS_DEFAULT;
+        s.units_per_meter = bad[i];
+        s.gravity = 5000.0f;
+        char_body_init(&body, &pos);
+        char_body_configure(&body, &s);
+        TEST_ASSERT_EQUAL_FLOAT(1.0f, char_body_get_settings(&body)->units_per_meter);
+        TEST_ASSERT_EQUAL_FLOAT(1000.0f, char_body_get_settings(&body)->gravity);
+    }
+    /* metres: a centimetre game that forgot the setting is clamped (as before) */
+    s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.gravity = 3000.0f; s.max_fall_speed = 5500.0f; s.radius = 50.0f; s.height = 200.0f;
+    char_body_configure(&body, &s);
+    TEST_ASSERT_EQUAL_FLOAT(1000.0f, char_body_get_settings(&body)->gravity);
+    TEST_ASSERT_EQUAL_FLOAT(200.0f, char_body_get_settings(&body)->max_fall_speed);
+    /* centimetres: nothing clamped; NaN falls back to the seed's defaults in centimetres */
+    s.units_per_meter = 100.0f;
+    char_body_configure(&body, &s);
+    TEST_ASSERT_EQUAL_FLOAT(3000.0f, char_body_get_settings(&body)->gravity);
+    TEST_ASSERT_EQUAL_FLOAT(5500.0f, char_body_get_settings(&body)->max_fall_speed);
+    s.units_per_meter = 1e6f; /* clamped to 1e4 */
+    char_body_configure(&body, &s);
+    TEST_ASSERT_EQUAL_FLOAT(1e4f, char_body_get_settings(&body)->units_per_meter);
+    s.units_per_meter = 100.0f;
+    s.gravity = NAN; s.radius = NAN; s.height = NAN; s.floor_snap_distance = NAN;
+    char_body_configure(&body, &s);
+    TEST_ASSERT_EQUAL_FLOAT(3000.0f, char_body_get_settings(&body)->gravity);
+    TEST_ASSERT_EQUAL_FLOAT(50.0f, char_body_get_settings(&body)->radius);
+    TEST_ASSERT_EQUAL_FLOAT(100.0f, char_body_get_settings(&body)->height);
+    TEST_ASSERT_EQUAL_FLOAT(30.0f, char_body_get_settings(&body)->floor_snap_distance);
+    /* 10 m/s in centimetres on a flat floor: 1000 units/s, not 200 */
+    S = 100.0f;
+    build_level();
+    cb_body_init(&body, &pos, sv(-20.0f, 0.0f, -50.0f));
+    s = *char_body_get_settings(&body);
+    s.units_per_meter = 100.0f; s.radius = 50.0f; s.height = 200.0f; s.center_offset = cb_vec(0.0f, 100.0f, 0.0f);
+    s.step_height = 25.0f; s.floor_snap_distance = 30.0f; s.gravity = 3000.0f; s.max_fall_speed = 5500.0f;
+    char_body_configure(&body, &s);
+    for (int f = 0; f < 60; f++) {
+        body.input_velocity = cb_vec(1000.0f, 0.0f, 0.0f);
+        CB_STEP(&body, 1.0f / HZ);
+    }
+    S = 1.0f;
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(1.0f, -1000.0f, pos.x); /* 10 m in 1 s: from -20 m to -10 m */
+    TEST_ASSERT_FLOAT_WITHIN(1.0f, 1000.0f, char_body_get_velocity(&body).x);
+}
+
 static void test_same_course_in_centimetres(void) { check_scale(100.0f, "centimetres"); }
 static void test_same_course_in_millimetres(void) { check_scale(1000.0f, "millimetres"); }
 static void test_same_course_in_decimetres_per_ten(void) { check_scale(0.1f, "tens of metres"); }
@@ -284,6 +339,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_courses_exercise_the_features);
+    RUN_TEST(test_unit_setting_and_clamps);
     RUN_TEST(test_same_course_in_centimetres);
     RUN_TEST(test_same_course_in_millimetres);
     RUN_TEST(test_same_course_in_decimetres_per_ten);
