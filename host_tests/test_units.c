@@ -2,8 +2,10 @@
  * length, speed and acceleration x 100; millimetres: S = 1000; decimetres the other way:
  * S = 0.1) gives the same motion, scaled. Each frame the scaled run's foot position / S is
  * within 1 mm per metre travelled (at least 1 mm) of the metres run's, and both agree on
- * standing or not. The scaled runs set settings.units_per_meter = S; nothing else differs.
- * Every step runs under the allocation guard (CB_STEP). */
+ * the ground state (airborne, on a floor, on a steep surface). The scaled runs set
+ * settings.units_per_meter = S; nothing else differs.
+ * Every step runs under the allocation guard (CB_STEP). -DUNITS_BEFORE builds it against a
+ * library without the setting (how the numbers before it were measured). */
 #include "unity.h"
 #include "alloc_guard.h"
 #include "cb_levels.h"
@@ -58,10 +60,12 @@ static void build_level(void)
         const float xs[] = {0.0f, 6.0f, 10.0f, 10.0f}, ys[] = {0.0f, 3.0f, 3.0f, 0.0f};
         profile(xs, ys, 4, -20.0f, -10.0f);
     }
-    /* a steep 60 deg slope: z in [-40, -30], x in [-30, -27] */
+    /* a steep 60 deg slope facing +x, from 5.8 m down to a 0.6 m lip over the ground (its
+     * toe on the ground would be a wedge whose outcome turns on rounding, in metres alone):
+     * z in [-40, -30], x in [-30, -27] */
     {
-        const float xs[] = {-30.0f, -27.0f, -27.0f}, ys[] = {0.0f, 5.196f, 0.0f};
-        profile(xs, ys, 3, -40.0f, -30.0f);
+        const float xs[] = {-30.0f, -30.0f, -27.0f, -27.0f}, ys[] = {0.0f, 5.796f, 0.6f, 0.0f};
+        profile(xs, ys, 4, -40.0f, -30.0f);
     }
     /* stairs: 8 risers of 0.2 m, treads 0.35 m, a landing to x = 10, then a drop: z in [10, 20] */
     {
@@ -116,9 +120,9 @@ static void ramp_ledge(int f, float in[3], float *jump)
 }
 static void steep(int f, float in[3], float *jump)
 {
-    /* jump onto the steep slope, push into it, slide down */
-    in[0] = f < 120 ? -4.0f : 1.0f; in[1] = 0.0f; in[2] = 0.5f;
-    *jump = (f == 10) ? 10.0f : 0.0f;
+    /* jump onto the steep slope, push into it, slide down it and off its lip, walk away */
+    in[0] = f < 120 ? -4.0f : 1.0f; in[1] = 0.0f; in[2] = 0.37f;
+    *jump = (f == 5) ? 10.0f : 0.0f;
 }
 static void stairs(int f, float in[3], float *jump)
 {
@@ -144,7 +148,7 @@ static const course_t courses[] = {
     {"walk and wall slide", {-10.0f, 0.0f, 2.0093f}, 240, walk_wall},
     {"crease", {28.0f, 0.0f, 20.0f}, 180, crease},
     {"slope and ledge fall", {-3.0137f, 0.0f, -15.0f}, 420, ramp_ledge},
-    {"steep slope", {-24.0f, 0.0f, -35.0f}, 240, steep},
+    {"steep slope", {-25.2f, 0.0f, -35.0f}, 240, steep},
     {"stairs", {-2.0071f, 0.0f, 15.0f}, 480, stairs},
     {"jump and land", {-20.0f, 0.0f, 30.0f}, 400, hops},
     {"moving platform", {30.0f, 0.5f, -30.0113f}, 420, ride},
@@ -153,7 +157,7 @@ static const course_t courses[] = {
 
 typedef struct {
     fm_vec3_t p[MAX_FRAMES]; ///< foot, in metres (divided by S)
-    bool floor[MAX_FRAMES];
+    uint8_t state[MAX_FRAMES]; ///< char_body_ground_state()
 } track_t;
 
 static char_body_t body;
@@ -197,7 +201,7 @@ static void run(const course_t *c, float scale, track_t *tr)
         TEST_ASSERT_TRUE(cb_body_finite(&body));
         fm_vec3_t foot = char_body_foot_pos(&body);
         tr->p[f] = cb_vec(foot.x / S, foot.y / S, foot.z / S);
-        tr->floor[f] = char_body_is_on_floor(&body);
+        tr->state[f] = (uint8_t)char_body_ground_state(&body);
     }
     S = 1.0f;
 }
@@ -209,7 +213,7 @@ static float dist(fm_vec3_t a, fm_vec3_t b)
 }
 
 /* Course c at scale against metres: the worst error over (1 mm + 1 mm per metre travelled),
- * <= 1 passes; the frames whose floor state differs are counted. */
+ * <= 1 passes; the frames whose ground state differs are counted. */
 static float compare(const course_t *c, float scale, int *floor_diff, float *worst_m, float *travelled)
 {
     run(c, 1.0f, &ref_track);
@@ -224,7 +228,7 @@ static float compare(const course_t *c, float scale, int *floor_diff, float *wor
         float ratio = e / (0.001f + 0.001f * walked);
         if (ratio > worst) worst = ratio;
         if (e > worst_abs) worst_abs = e;
-        if (ref_track.floor[f] != got_track.floor[f]) diff++;
+        if (ref_track.state[f] != got_track.state[f]) diff++;
     }
     *floor_diff = diff;
     *worst_m = worst_abs;
@@ -267,19 +271,28 @@ static void test_courses_exercise_the_features(void)
     for (int f = 0; f < 200; f++) if (ref_track.p[f].y > top) top = ref_track.p[f].y;
     TEST_ASSERT_TRUE(top > 2.9f);
     TEST_ASSERT_TRUE(ref_track.p[199].x > 11.0f && fabsf(ref_track.p[199].y) < 0.01f);
+    /* steep slope: stood on it (sliding) for a while, then back on the ground */
+    run(&courses[3], 1.0f, &ref_track);
+    int steep = 0;
+    for (int f = 0; f < courses[3].frames; f++) steep += ref_track.state[f] == CHAR_BODY_ON_STEEP;
+    TEST_ASSERT_TRUE(steep >= 3);
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, ref_track.state[courses[3].frames - 1]);
     /* stairs: climbed to the landing */
     run(&courses[4], 1.0f, &ref_track);
     TEST_ASSERT_FLOAT_WITHIN(0.01f, 1.6f, ref_track.p[200].y);
     /* moving platform: carried (x changes while the input is zero) */
     run(&courses[6], 1.0f, &ref_track);
     TEST_ASSERT_TRUE(fabsf(ref_track.p[100].x - ref_track.p[10].x) > 1.0f);
-    TEST_ASSERT_TRUE(ref_track.floor[100]);
+    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, ref_track.state[100]);
 }
 
 /* The setting itself: bad values mean metres, the clamps and fallbacks scale with it, and a
  * centimetre body is not slowed to 200 units/s (the issue's "half speed"). */
 static void test_unit_setting_and_clamps(void)
 {
+#ifdef UNITS_BEFORE
+    TEST_IGNORE_MESSAGE("library without units_per_meter");
+#else
     char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
     TEST_ASSERT_EQUAL_FLOAT(1.0f, s.units_per_meter);
     const float bad[] = {0.0f, -100.0f, NAN, INFINITY};
@@ -329,6 +342,7 @@ static void test_unit_setting_and_clamps(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_FLOAT_WITHIN(1.0f, -1000.0f, pos.x); /* 10 m in 1 s: from -20 m to -10 m */
     TEST_ASSERT_FLOAT_WITHIN(1.0f, 1000.0f, char_body_get_velocity(&body).x);
+#endif
 }
 
 static void test_same_course_in_centimetres(void) { check_scale(100.0f, "centimetres"); }
