@@ -3,7 +3,9 @@
  * S = 0.1) gives the same motion, scaled. Each frame the scaled run's foot position / S is
  * within 1 mm per metre travelled (at least 1 mm) of the metres run's, and both agree on
  * the ground state (airborne, on a floor, on a steep surface). The scaled runs set
- * settings.units_per_meter = S; nothing else differs.
+ * settings.units_per_meter = S; nothing else differs. At 128 units a metre (a power of two
+ * scales every float operation exactly) the runs must be bit-identical, scaled, but for the
+ * one course the primitives' absolute touch tolerance decides.
  * Every step runs under the allocation guard (CB_STEP). -DUNITS_BEFORE builds it against a
  * library without the setting (how the numbers before it were measured). */
 #include "unity.h"
@@ -79,6 +81,10 @@ static void build_level(void)
         xs[n] = 10.0f; ys[n++] = 0.0f;
         profile(xs, ys, n, 10.0f, 20.0f);
     }
+    /* kerbs around step_height (0.25 m), z in [37, 43]: 0.245 m, and 0.26 m, which is within
+     * CB_MARGIN (1 cm) of the step zone: its edge counts as in it, so it is climbed too */
+    box(-10.0f, 0.1225f, 40.0f, 2.0f, 0.1225f, 3.0f, 0.0f);
+    box(0.0f, 0.13f, 40.0f, 2.0f, 0.13f, 3.0f, 0.0f);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     /* a moving platform (its own instance): 4 x 0.5 x 4 m, top 0.5 m above the ground */
     box(0.0f, 0.25f, 0.0f, 2.0f, 0.25f, 2.0f, 0.0f);
@@ -134,6 +140,12 @@ static void hops(int f, float in[3], float *jump)
     in[0] = 3.0f * cosf(0.01f * (float)f); in[1] = 0.0f; in[2] = 3.0f * sinf(0.01f * (float)f);
     *jump = (f % 50 == 5) ? 6.0f : 0.0f;
 }
+static void kerbs(int f, float in[3], float *jump)
+{
+    /* onto the low kerb, off it, onto the high one at an angle */
+    in[0] = 3.0f; in[1] = 0.0f; in[2] = f < 150 ? 0.4f : 1.5f;
+    *jump = 0.0f;
+}
 static void ride(int f, float in[3], float *jump)
 {
     /* stand on the moving platform, walk across it, jump off it */
@@ -151,6 +163,7 @@ static const course_t courses[] = {
     {"steep slope", {-25.2f, 0.0f, -35.0f}, 240, steep},
     {"stairs", {-2.0071f, 0.0f, 15.0f}, 480, stairs},
     {"jump and land", {-20.0f, 0.0f, 30.0f}, 400, hops},
+    {"kerbs", {-14.0071f, 0.0f, 38.0f}, 300, kerbs},
     {"moving platform", {30.0f, 0.5f, -30.0113f}, 420, ride},
 };
 #define NCOURSES (int)(sizeof courses / sizeof courses[0])
@@ -280,8 +293,12 @@ static void test_courses_exercise_the_features(void)
     /* stairs: climbed to the landing */
     run(&courses[4], 1.0f, &ref_track);
     TEST_ASSERT_FLOAT_WITHIN(0.01f, 1.6f, ref_track.p[200].y);
-    /* moving platform: carried (x changes while the input is zero) */
+    /* kerbs: both climbed */
     run(&courses[6], 1.0f, &ref_track);
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.245f, ref_track.p[60].y);
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.26f, ref_track.p[280].y);
+    /* moving platform: carried (x changes while the input is zero) */
+    run(&courses[7], 1.0f, &ref_track);
     TEST_ASSERT_TRUE(fabsf(ref_track.p[100].x - ref_track.p[10].x) > 1.0f);
     TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, ref_track.state[100]);
 }
@@ -345,6 +362,39 @@ static void test_unit_setting_and_clamps(void)
 #endif
 }
 
+/* A power-of-two unit (128 units a metre) scales every float operation exactly: every
+ * course moves bit for bit the same, scaled, except where the primitives' touch tolerance
+ * (COLL_PRIM_TOUCH_TOL, absolute: docs/ARCHITECTURE.md) decides, which is only the crease
+ * (there it is held to the 1 mm per metre). Any body tolerance left in metres that the
+ * courses meet shows here as a difference, however small. */
+static void test_power_of_two_unit_is_exact(void)
+{
+#ifdef UNITS_BEFORE
+    TEST_IGNORE_MESSAGE("library without units_per_meter");
+#else
+    bool ok = true;
+    for (int i = 0; i < NCOURSES; i++) {
+        int fd;
+        float worst_m, walked;
+        float ratio = compare(&courses[i], 128.0f, &fd, &worst_m, &walked);
+        bool exact = true;
+        for (int f = 0; f < courses[i].frames; f++)
+            exact = exact && ref_track.p[f].x == got_track.p[f].x && ref_track.p[f].y == got_track.p[f].y &&
+                    ref_track.p[f].z == got_track.p[f].z && ref_track.state[f] == got_track.state[f];
+        char label[128];
+        snprintf(label, sizeof label, "%s at 128 units a metre: worst distance from the metres run", courses[i].name);
+        cb_report(label, worst_m, "m");
+        bool is_crease = courses[i].script == crease;
+        if (is_crease ? !(ratio <= 1.0f) || fd != 0 : !exact) {
+            printf("  FAIL %s at 128 units a metre: not %s (worst %.3g m)\n", courses[i].name,
+                   is_crease ? "within 1 mm per metre" : "bit-exact", (double)worst_m);
+            ok = false;
+        }
+    }
+    TEST_ASSERT_TRUE_MESSAGE(ok, "a power-of-two unit changed the motion");
+#endif
+}
+
 static void test_same_course_in_centimetres(void) { check_scale(100.0f, "centimetres"); }
 static void test_same_course_in_millimetres(void) { check_scale(1000.0f, "millimetres"); }
 static void test_same_course_in_decimetres_per_ten(void) { check_scale(0.1f, "tens of metres"); }
@@ -354,6 +404,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_courses_exercise_the_features);
     RUN_TEST(test_unit_setting_and_clamps);
+    RUN_TEST(test_power_of_two_unit_is_exact);
     RUN_TEST(test_same_course_in_centimetres);
     RUN_TEST(test_same_course_in_millimetres);
     RUN_TEST(test_same_course_in_decimetres_per_ten);
