@@ -15,7 +15,7 @@
 N64ROM_DIR    := $(BUILD)/n64rom
 N64ROM_SUITES := test_smoke test_math test_mesh_load test_prim_body test_prim_triangle test_scene_query \
                  test_stability test_replays test_char_body_basic test_char_body_motion \
-                 test_char_body_robust test_char_body_terrain
+                 test_char_body_robust test_char_body_terrain test_units
 N64ROM_SKIPPED := $(filter-out $(N64ROM_SUITES),$(TEST_NAMES))
 N64ROM_CFLAGS := $(N64_ARCH) -G0 -mno-abicalls -fno-pic -ffreestanding -O2 -fno-math-errno -g
 N64ROM_INC    := -Ihost_tests/n64/include -Ihost_tests/n64 $(INC) $(PRIV_INC) $(CCD_INC) $(UNITY_INC)

@@ -34,7 +34,17 @@
 extern "C" {
 #endif
 
-/** Character body settings (the seed's table; defaults in CHAR_BODY_SETTINGS_DEFAULT). */
+/**
+ * Character body settings (the seed's table; defaults in CHAR_BODY_SETTINGS_DEFAULT).
+ *
+ * Lengths are in the game's length unit, speeds in units/s, gravity in units/s^2. The
+ * comments give the defaults in metres. A game in another unit sets units_per_meter (100
+ * for centimetres, SM64-style; 1000 for millimetres) and scales every length, speed and
+ * acceleration it gives the body by it: the body then moves the same course the same way,
+ * scaled, because its internal tolerances (contact skin, touching distances, clamps such as
+ * the 200 m/s speed limit) are metres times units_per_meter. It is one documented scale,
+ * not guessed from the capsule: a big character in metres keeps metre tolerances.
+ */
 typedef struct {
     fm_vec3_t up;              ///< world up; gravity acts along -up. Normalized on configure.
     fm_vec3_t center_offset;   ///< owner origin -> capsule center, meters
@@ -50,6 +60,8 @@ typedef struct {
     uint8_t read_mask;         ///< collision layers seen (0x01)
     bool follow_floor;         ///< carried by the mesh instance stood on (true)
     uint8_t leave_velocity;    ///< CHAR_BODY_LEAVE_*: the floor's velocity kept on leaving it (ADD)
+    float units_per_meter;     ///< length units in a metre (1: metres; 100: centimetres); 1e-3..1e4,
+                               ///< 0 or not finite: 1. Scales every internal length tolerance and limit.
 } char_body_settings_t;
 
 /** What the body keeps of the velocity of the floor it leaves (a jump, walking off an
@@ -90,7 +102,8 @@ typedef struct {
     .up = {{0.0f, 1.0f, 0.0f}}, .center_offset = {{0.0f, 0.0f, 0.0f}}, \
     .gravity = 30.0f, .max_fall_speed = 55.0f, .floor_max_angle = 0.78539816f, \
     .step_height = 0.25f, .floor_snap_distance = 0.30f, .radius = 0.5f, .height = 2.0f, \
-    .coll_types = COLL_TYPE_MESH, .max_slides = 4, .read_mask = 0x01, .follow_floor = true })
+    .coll_types = COLL_TYPE_MESH, .max_slides = 4, .read_mask = 0x01, .follow_floor = true, \
+    .units_per_meter = 1.0f })
 
 /** A character body. Only input_velocity is meant to be written directly. */
 typedef struct char_body_s {

@@ -55,12 +55,16 @@ void char_body_configure(char_body_t *body, const char_body_settings_t *settings
     s.up = up;
     if (!cb_finite(s.center_offset)) s.center_offset = cb_v(0.0f, 0.0f, 0.0f);
 
-    s.radius = clampf(s.radius, 0.001f, 1000.0f, 0.5f);
-    s.height = clampf(s.height, 2.0f * s.radius, 4000.0f, 2.0f * s.radius);
-    s.gravity = clampf(s.gravity, 0.0f, 1000.0f, 30.0f);
-    s.max_fall_speed = clampf(s.max_fall_speed, 0.0f, CB_MAX_SPEED, 55.0f);
+    /* The length unit first: every length, speed and acceleration limit is metres times it
+     * (and so are the fallbacks for NaN settings, the seed's defaults in metres). */
+    const float u = s.units_per_meter = clampf(isfinite(s.units_per_meter) && s.units_per_meter > 0.0f
+                                                   ? s.units_per_meter : 1.0f, 1e-3f, 1e4f, 1.0f);
+    s.radius = clampf(s.radius, CB_MIN_RADIUS * u, CB_MAX_LENGTH * u, 0.5f * u);
+    s.height = clampf(s.height, 2.0f * s.radius, 4.0f * CB_MAX_LENGTH * u, 2.0f * s.radius);
+    s.gravity = clampf(s.gravity, 0.0f, CB_MAX_GRAVITY * u, 30.0f * u);
+    s.max_fall_speed = clampf(s.max_fall_speed, 0.0f, CB_MAX_SPEED * u, 55.0f * u);
     s.floor_max_angle = clampf(s.floor_max_angle, 0.0f, 0.5f * FM_PI, 0.25f * FM_PI);
-    s.floor_snap_distance = clampf(s.floor_snap_distance, 0.0f, 1000.0f, 0.30f);
+    s.floor_snap_distance = clampf(s.floor_snap_distance, 0.0f, CB_MAX_LENGTH * u, 0.30f * u);
     float inner = 0.5f * s.height - s.radius;
     s.step_height = clampf(s.step_height, 0.0f, inner, 0.0f);
     if (s.step_height > s.floor_snap_distance) s.step_height = s.floor_snap_distance;
@@ -197,7 +201,8 @@ void char_body_drop_through(char_body_t *body)
 {
     if (!body) return;
     const char_body_settings_t *s = &body->settings;
-    float g = s->gravity > 1e-3f ? s->gravity : 1e-3f;
+    float g_min = 1e-3f * s->units_per_meter; /* m/s^2: no gravity falls in two seconds */
+    float g = s->gravity > g_min ? s->gravity : g_min;
     body->drop_time = sqrtf(2.0f * (s->height + s->floor_snap_distance) / g) + 0.05f;
     if (body->drop_time > 2.0f) body->drop_time = 2.0f;
 }
@@ -242,11 +247,11 @@ void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_force
 
 /* ---- the step ---- */
 
-static fm_vec3_t clamp_speed(fm_vec3_t v)
+static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
 {
     if (!cb_finite(v)) return cb_v(0.0f, 0.0f, 0.0f);
     float l = cb_len(v);
-    if (l > CB_MAX_SPEED) v = cb_scale(v, CB_MAX_SPEED / l);
+    if (l > max_speed) v = cb_scale(v, max_speed / l);
     return v;
 }
 
@@ -254,14 +259,14 @@ static fm_vec3_t clamp_speed(fm_vec3_t v)
  * Input reshaped onto the floor plane: moved along up until it lies in the plane, then
  * rescaled so the speed along the ground equals the input speed (up and down ramps alike).
  */
-static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n)
+static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n, float unit)
 {
     float speed = cb_len(in_h);
     float nu = cb_dot(n, up);
     if (speed <= 0.0f || nu < 1e-3f) return in_h;
     fm_vec3_t v = cb_madd(in_h, up, -cb_dot(in_h, n) / nu);
     float l = cb_len(v);
-    if (!(l > 1e-9f)) return in_h;
+    if (!(l > 1e-9f * unit)) return in_h;
     return cb_scale(v, speed / l);
 }
 
@@ -336,7 +341,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.sweep_ihh = body->inner_half_height - 0.5f * s->step_height;
     if (c.sweep_ihh < 0.0f) c.sweep_ihh = 0.0f;
     c.sweep_lift = 0.5f * s->step_height;
-    c.skin = 0.01f * s->radius < CB_SKIN ? 0.01f * s->radius : CB_SKIN;
+    c.unit = s->units_per_meter;
+    c.contact_eps = CB_CONTACT_EPS * c.unit;
+    c.min_depth = CB_MIN_DEPTH * c.unit;
+    c.tiny = CB_TINY * c.unit;
+    c.skin = 0.01f * s->radius < CB_SKIN * c.unit ? 0.01f * s->radius : CB_SKIN * c.unit;
+    const float max_speed = CB_MAX_SPEED * c.unit;
     c.dt = dt;
     c.ev = NULL;
     c.gather = NULL;
@@ -352,14 +362,14 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     }
 
     fm_vec3_t pos = owner_position(body);
-    body->velocity = clamp_speed(body->velocity);
+    body->velocity = clamp_speed(body->velocity, max_speed);
     fm_vec3_t input = cb_finite(body->input_velocity) ? body->input_velocity : cb_v(0.0f, 0.0f, 0.0f);
     /* Only the part across up is used. A huge one (its square overflows a float) is
      * scaled down first, keeping its direction: it asks for the fastest motion, not none. */
     input = cb_reject(input, s->up);
     float big = fabsf(input.x) > fabsf(input.y) ? fabsf(input.x) : fabsf(input.y);
     if (fabsf(input.z) > big) big = fabsf(input.z);
-    if (big > CB_MAX_SPEED) input = cb_scale(input, CB_MAX_SPEED / big);
+    if (big > max_speed) input = cb_scale(input, max_speed / big);
     if (!cb_finite(input)) input = cb_v(0.0f, 0.0f, 0.0f);
 
     bool was_grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
@@ -392,7 +402,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     bool walking = was_grounded && !was_steep && v_up <= 0.0f;
     if (walking) {
         v_up = 0.0f;
-        v = follow_slope(in_h, up, body->floor_normal);
+        v = follow_slope(in_h, up, body->floor_normal, c.unit);
     } else {
         v_up -= s->gravity * dt;
         if (v_up < -s->max_fall_speed) v_up = -s->max_fall_speed;
@@ -417,7 +427,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         }
     }
     bool jumping = v_up > 0.0f;
-    v = clamp_speed(v);
+    v = clamp_speed(v, max_speed);
     body->velocity = v;
 
     /* 4. slide */
@@ -472,7 +482,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     body->ground_velocity = grounded ? ground_v : cb_v(0.0f, 0.0f, 0.0f);
     record_events(body, was_grounded, was_floor_normal, v_up, jumping);
 
-    body->velocity = clamp_speed(body->velocity);
+    body->velocity = clamp_speed(body->velocity, max_speed);
     if (cb_finite(pos)) {
         body->origin = pos;
         if (body->owner_pos) *body->owner_pos = pos;

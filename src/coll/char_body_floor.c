@@ -15,10 +15,10 @@
  * and with its length changed by half the change. Exact for a steady turn (a turntable),
  * a steady translation and a steady acceleration along a line.
  */
-static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur)
+static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur, float still)
 {
     float lp = cb_len(prev), lc = cb_len(cur);
-    if (!(lp > 1e-6f) || !(lc > 1e-6f)) return cb_madd(cur, cb_sub(cur, prev), 0.5f);
+    if (!(lp > still) || !(lc > still)) return cb_madd(cur, cb_sub(cur, prev), 0.5f);
     fm_vec3_t axis = cb_cross(prev, cur);
     float s = cb_len(axis) / (lp * lc), co = cb_dot(prev, cur) / (lp * lc);
     fm_vec3_t v = cur;
@@ -57,7 +57,7 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
      * a turntable at 1 rev/s would otherwise leave rotated by half a step). */
     fm_vec3_t chord = cb_scale(delta, 1.0f / c->dt);
     fm_vec3_t v = chord;
-    if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord);
+    if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord, c->tiny);
     b->carry_velocity = chord;
     b->flags |= CB_FLAG_CARRIED;
     return cb_finite(v) ? v : cb_v(0.0f, 0.0f, 0.0f);
@@ -109,7 +109,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
      * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
     if (under && cb_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(cb_dot(cb_sub(under->point, h1.point), h1.normal)) < 1e-3f * (1.0f + r))
+        fabsf(cb_dot(cb_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
@@ -145,7 +145,8 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fm_vec3_t side1 = cb_norm(cb_reject(h1.normal, up)), side2 = cb_norm(cb_reject(h2.normal, up));
         /* Over a floor the foot could step down to, only a gap between surfaces at one
          * level holds the ball (tiles, a slab beside a slab), not a stair's nosings. */
-        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - CB_CONTACT_EPS)) return false;
+        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - c->contact_eps))
+            return false;
         if (cb_dot(side1, side2) < -0.05f) {
             normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
             if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
@@ -178,7 +179,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
     fm_vec3_t left = cb_scale(c->up, -dist);
     for (int it = 0; it < 3; it++) {
         float len = cb_len(left);
-        if (!(len > 1e-6f)) return;
+        if (!(len > c->tiny)) return;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit) ||
             !isfinite(hit.t) || !cb_finite(hit.normal)) {
@@ -198,7 +199,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
         left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
         if (!(cb_dot(left, b->velocity) > 0.0f)) return;
-        if (!(cb_dot(left, c->up) < -1e-6f)) return;
+        if (!(cb_dot(left, c->up) < -c->tiny)) return;
     }
 }
 
@@ -207,7 +208,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     char_body_t *b = c->body;
     fm_vec3_t up = c->up;
     float above = c->radius + c->step;            /* ray origin above the foot */
-    float reach = was_grounded ? c->snap : CB_CONTACT_EPS;
+    const float contact_eps = c->contact_eps, step_eps = cb_len_tol(c, CB_STEP_EPS);
+    float reach = was_grounded ? c->snap : contact_eps;
     support_t s = {0};
     bool fits = true;
     if (!jumping) {
@@ -228,16 +230,16 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * than the capsule (modular tiles over a base floor): the capsule rests
                      * on their edges instead; a stair's next tread stays a step down. */
                     support_t w = {0};
-                    if (was_grounded && gap > CB_CONTACT_EPS && ball_held(c, *pos, reach, NULL, gap, &w) &&
-                        w.gap < gap - 1e-3f)
+                    if (was_grounded && gap > contact_eps && ball_held(c, *pos, reach, NULL, gap, &w) &&
+                        w.gap < gap - step_eps)
                         s = w;
                 }
             } else if (nu > 0.0f) {
                 /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
                  * which puts the plane r / cos - (r + step) below the foot along up. Only
-                 * that close (plus 1 cm) is standing on it; higher up the body is falling. */
+                 * that close (plus CB_MARGIN, 1 cm) is standing on it; higher up the body is falling. */
                 float rest = c->radius / nu - (c->radius + c->step);
-                if (gap <= (rest > 0.0f ? rest : 0.0f) + 0.01f)
+                if (gap <= (rest > 0.0f ? rest : 0.0f) + cb_len_tol(c, CB_MARGIN))
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
         }
@@ -252,7 +254,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 snap_down(c, pos, s.gap);
             } else {
                 float done = coll_cb_move_swept(c, pos, cb_scale(up, -s.gap));
-                if (s.gap < -1e-3f && done * -s.gap < -s.gap - 1e-3f) fits = false;
+                if (s.gap < -step_eps && done * -s.gap < -s.gap - step_eps) fits = false;
             }
             if (c->ev) c->ev->step += cb_dot(cb_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is

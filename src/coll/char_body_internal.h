@@ -18,7 +18,9 @@ enum {
     CB_FLAG_CARRIED  = 1u << 3, ///< carry_velocity holds the last step's carry (same floor)
 };
 
-/* Tolerances. Each says why it exists. */
+/* Tolerances. Each says why it exists. Lengths are in metres here: the body uses them times
+ * settings.units_per_meter (cb_ctx_t.unit, cb_len_tol), so a game in centimetres gets the
+ * same tolerances, in centimetres. docs/ARCHITECTURE.md tables them all. */
 /** Gap kept between the sweep capsule and what it hit: the next sweep starts clear, not
  *  touching. At most 1 % of the radius, so small capsules rest where they should. */
 #define CB_SKIN 0.001f
@@ -26,10 +28,24 @@ enum {
 #define CB_MAX_DT 0.1f
 /** Speed limit of the resolved velocity, m/s: keeps sweeps short and numbers finite. */
 #define CB_MAX_SPEED 200.0f
+/** Largest gravity accepted, m/s^2 (about 100 g). */
+#define CB_MAX_GRAVITY 1000.0f
+/** Largest radius, snap distance (and a quarter of the largest height) accepted, m. */
+#define CB_MAX_LENGTH 1000.0f
+/** Smallest radius accepted, m. */
+#define CB_MIN_RADIUS 0.001f
 /** Floor this close below the foot counts as touching even when not snapping (landing). */
 #define CB_CONTACT_EPS 0.002f
 /** Overlaps shallower than this are touching contacts, not penetrations to recover from. */
 #define CB_MIN_DEPTH 0.0001f
+/** Height margin, m: a contact this far above the step zone still counts as in it (walls
+ *  while walking), a steep plane this far above its resting place is still stood on. */
+#define CB_MARGIN 0.01f
+/** Height tolerance of the stair step and the probe's lift, m: rises and treads compared
+ *  within it, lifts shorter than it are not "no room". */
+#define CB_STEP_EPS 0.001f
+/** Motion shorter than this is none (a sweep is skipped, a direction not taken), m. */
+#define CB_TINY 1e-6f
 /** Most slide planes remembered in one step (max_slides is at most 8). */
 #define CB_MAX_PLANES 8
 /** Contacts used by the overlap recovery. */
@@ -69,10 +85,18 @@ typedef struct {
     float step;          ///< step height
     float snap;          ///< floor snap distance
     float skin;          ///< contact gap: CB_SKIN, or 1 % of the radius when smaller
+    float unit;          ///< settings.units_per_meter: the metre tolerances' scale
+    float contact_eps;   ///< CB_CONTACT_EPS in the body's unit
+    float min_depth;     ///< CB_MIN_DEPTH in the body's unit
+    float tiny;          ///< CB_TINY in the body's unit
     float dt;            ///< this step's (clamped) duration, s
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
     const coll_gather_t *gather; ///< the step's candidate triangles, or NULL (scene queries)
 } cb_ctx_t;
+
+/** A tolerance given in metres (CB_*), in the body's length unit (the ones used on every
+ *  step are in cb_ctx_t already). */
+static inline float cb_len_tol(const cb_ctx_t *c, float metres) { return metres * c->unit; }
 
 /* The body's queries: on the step's gather when there is one (it falls back to the scene
  * by itself for a query reaching outside the gathered box), else on the scene. The body's

@@ -91,7 +91,7 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
 {
     float nu = cb_dot(hit->normal, c->up);
     float h = cb_dot(cb_sub(hit->point, cb_foot(c, pos)), c->up);
-    if (nu > 0.0f && h <= c->step + 0.01f) return hit->normal;
+    if (nu > 0.0f && h <= c->step + cb_len_tol(c, CB_MARGIN)) return hit->normal;
     fm_vec3_t nh = cb_norm(cb_reject(hit->normal, c->up));
     return cb_len(nh) > 0.5f ? nh : hit->normal;
 }
@@ -99,7 +99,7 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
 float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
     float len = cb_len(d);
-    if (!(len > 1e-6f) || !isfinite(len)) {
+    if (!(len > c->tiny) || !isfinite(len)) {
         if (isfinite(len)) *pos = cb_add(*pos, d); /* sub-micrometre: below every tolerance */
         return 1.0f;
     }
@@ -134,15 +134,15 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     if (nu <= 0.05f) return false;
     fm_vec3_t ball = cb_madd(cb_sweep_center(c, *pos), c->up, -c->sweep_ihh);
     fm_vec3_t rel = cb_sub(ball, hit->point);
-    if (cb_dot(rel, c->up) <= 1e-3f) return false; /* not under the bottom ball */
+    if (cb_dot(rel, c->up) <= cb_len_tol(c, CB_STEP_EPS)) return false; /* not under the bottom ball */
     /* A plane under the contact lies r / nu below the ball centre along the axis. */
-    float reach = c->radius / (nu > 0.1f ? nu : 0.1f) + 0.02f;
+    float reach = c->radius / (nu > 0.1f ? nu : 0.1f) + 2.0f * cb_len_tol(c, CB_MARGIN);
     coll_ray_hit_t rh;
     if (cb_ray(c, ball, cb_scale(c->up, -1.0f), reach, &rh))
         return false;
     fm_vec3_t h = cb_reject(rel, c->up);
     float hl = cb_len(h);
-    fm_vec3_t dir = hl > 1e-5f ? cb_scale(h, 1.0f / hl) : cb_norm(cb_reject(hit->normal, c->up));
+    fm_vec3_t dir = hl > cb_len_tol(c, 1e-5f) ? cb_scale(h, 1.0f / hl) : cb_norm(cb_reject(hit->normal, c->up));
     if (cb_len(dir) < 0.5f) return false;
     float need = c->radius + c->skin - hl;
     if (need <= 0.0f) return false;
@@ -192,16 +192,16 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     if (!(cb_dot(hit->normal, c->up) > 0.0f) || !(c->step > 0.0f)) return false;
     fm_vec3_t h = cb_reject(left, c->up);
     float hl = cb_len(h);
-    if (!(hl > 1e-5f)) return false;
-    const float above = c->radius + c->step, eps = 1e-3f;
+    if (!(hl > cb_len_tol(c, 1e-5f))) return false;
+    const float above = c->radius + c->step, eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot0 = cb_foot(c, *pos);
     float base;
     if (!floor_height(c, foot0, above, c->snap, foot0, &base)) return false;
     fm_vec3_t p = *pos;
     float lift = c->step * coll_cb_move_swept(c, &p, cb_scale(c->up, c->step));
-    if (!(lift > 1e-4f)) return false;
+    if (!(lift > cb_len_tol(c, 1e-4f))) return false;
     float f = coll_cb_move_swept(c, &p, h);
-    if (!(f * hl > 1e-4f)) return false;
+    if (!(f * hl > cb_len_tol(c, 1e-4f))) return false;
     /* down by the lift, keeping the contact that stops it */
     fm_vec3_t down = cb_scale(c->up, -lift);
     coll_sweep_hit_t dh;
@@ -285,7 +285,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     float time_left = 1.0f;
     for (int it = 0; it < b->settings.max_slides; it++) {
         float len = cb_len(rem);
-        if (!(len > 1e-6f)) break;
+        if (!(len > c->tiny)) break;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, rem, &hit)) {
             *pos = cb_add(*pos, rem);
@@ -364,14 +364,14 @@ static uint32_t overlaps_at(const cb_ctx_t *c, fm_vec3_t pos, coll_contact_t *ct
  * put the capsule into another (a slope's overhang, the wall behind, a mesh behind a
  * collider body).
  */
-static bool no_worse(const coll_contact_t *ct, uint32_t n, const coll_contact_t *ct0, uint32_t n0)
+static bool no_worse(const coll_contact_t *ct, uint32_t n, const coll_contact_t *ct0, uint32_t n0, float min_depth)
 {
     for (uint32_t i = 0; i < n; i++) {
-        if (!(ct[i].depth > CB_MIN_DEPTH)) continue;
+        if (!(ct[i].depth > min_depth)) continue;
         bool ok = false;
         for (uint32_t j = 0; j < n0 && !ok; j++)
             ok = ct0[j].instance == ct[i].instance && ct0[j].body == ct[i].body &&
-                 ct0[j].triangle == ct[i].triangle && ct[i].depth <= ct0[j].depth + CB_MIN_DEPTH;
+                 ct0[j].triangle == ct[i].triangle && ct[i].depth <= ct0[j].depth + min_depth;
         if (!ok) return false;
     }
     return true;
@@ -383,7 +383,7 @@ bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     uint32_t n0 = overlaps_at(c, *pos, ct0);
     fm_vec3_t np = cb_add(*pos, delta);
     uint32_t n = overlaps_at(c, np, ct);
-    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0)) return false;
+    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0, c->min_depth)) return false;
     *pos = np;
     return true;
 }
@@ -402,7 +402,7 @@ static bool free_at(const cb_ctx_t *c, fm_vec3_t pos)
     coll_contact_t ct[CB_MAX_CONTACTS];
     uint32_t n = overlaps_at(c, pos, ct);
     for (uint32_t i = 0; i < n; i++)
-        if (ct[i].depth > CB_MIN_DEPTH) return false;
+        if (ct[i].depth > c->min_depth) return false;
     return true;
 }
 
@@ -422,7 +422,7 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
     fm_vec3_t o = cb_sweep_center(c, from), e = cb_sweep_center(c, to);
     fm_vec3_t d = cb_sub(e, o);
     float len = cb_len(d);
-    if (!(len > 1e-6f)) return true;
+    if (!(len > c->tiny)) return true;
     fm_vec3_t dir = cb_scale(d, 1.0f / len);
     float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(axial < 1.0f ? 1.0f - axial * axial : 0.0f);
     float reach = axial > 0.999f ? c->sweep_ihh : 0.0f;
@@ -454,10 +454,11 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct[CB_MAX_CONTACTS];
     uint32_t n = overlaps_at(c, *pos, ct);
+    const float min_depth = c->min_depth;
     float deepest = 0.0f;
     bool trust = true, ceiling = false;
     for (uint32_t i = 0; i < n; i++) {
-        if (!(ct[i].depth > CB_MIN_DEPTH) || !cb_finite(ct[i].normal)) continue;
+        if (!(ct[i].depth > min_depth) || !cb_finite(ct[i].normal)) continue;
         if (ct[i].depth > deepest) deepest = ct[i].depth;
         if (ct[i].depth > c->radius) trust = false;
         float nu = cb_dot(ct[i].normal, c->up);
@@ -470,7 +471,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
         for (int iter = 0; iter < 4; iter++)
             for (uint32_t i = 0; i < n; i++) {
-                if (!(ct[i].depth > CB_MIN_DEPTH)) continue;
+                if (!(ct[i].depth > min_depth)) continue;
                 float want = ct[i].depth + c->skin - cb_dot(delta, ct[i].normal);
                 if (want > 0.0f) delta = cb_madd(delta, ct[i].normal, want);
             }
@@ -514,6 +515,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
     fm_vec3_t p = *pos;
     fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    const float min_depth = c->min_depth;
     bool stuck = deeper_than(ct0, n0, c->skin); /* at the last kept position */
     for (int pass = 0; pass < 3; pass++) {
         fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
@@ -521,7 +523,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         /* Gauss-Seidel on positions: each contact wants depth + half a skin of separation. */
         for (int iter = 0; iter < 4; iter++) {
             for (uint32_t i = 0; i < n; i++) {
-                if (!(ct[i].depth > CB_MIN_DEPTH) || !cb_finite(ct[i].normal)) continue;
+                if (!(ct[i].depth > min_depth) || !cb_finite(ct[i].normal)) continue;
                 float want = ct[i].depth + 0.5f * c->skin - cb_dot(delta, ct[i].normal);
                 if (want > 0.0f) {
                     delta = cb_madd(delta, ct[i].normal, want);
@@ -534,7 +536,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
         float lim = 2.0f * c->radius + 2.0f * c->half_height;
         if (dl > lim) delta = cb_scale(delta, lim / dl);
         for (uint32_t i = 0; i < n; i++)
-            if (ct[i].depth > CB_MIN_DEPTH && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
+            if (ct[i].depth > min_depth && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
         /* A push-out never turns into speed along up: clipping a walk against a nosing the
          * capsule touches would otherwise launch it (a "jump" that skips the floor probe). */
         float v_up0 = vel ? cb_dot(*vel, c->up) : 0.0f, cap = v_up0 > 0.0f ? v_up0 : 0.0f;
@@ -550,7 +552,7 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * a body wedged between a slab's faces that the game never put there, and pushing
          * through ended 126 mm inside the other face (soak seed 12 level 382). A body the
          * game put deep into geometry may therefore stay there until it moves out. */
-        if (no_worse(ct, n, ct0, n0) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
+        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);
@@ -563,10 +565,10 @@ void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
-    fm_vec3_t o = cb_madd(old_foot, c->up, 0.002f);
+    fm_vec3_t o = cb_madd(old_foot, c->up, c->contact_eps);
     fm_vec3_t d = cb_sub(foot, o);
     float len = cb_len(d);
-    if (!(len > 1e-5f)) return;
+    if (!(len > cb_len_tol(c, 1e-5f))) return;
     fm_vec3_t dir = cb_scale(d, 1.0f / len);
     coll_ray_hit_t hit;
     if (!cb_ray(c, o, dir, len, &hit)) return;
