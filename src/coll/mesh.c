@@ -617,7 +617,8 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
         if (!(h.bmin[a] <= h.bmax[a]) || h.qscale[a] < 0.0f) return COLL_ERR_CORRUPT;
     }
     if (!hdr_float_ok(h.cell_size) || !(h.cell_size > 0.0f)) return COLL_ERR_CORRUPT;
-    if (!(h.grid_margin >= 0.0f) || !(h.grid_margin < h.cell_size) || h.reserved != 0u) return COLL_ERR_CORRUPT;
+    if (!hdr_float_ok(h.grid_margin) || !(h.grid_margin >= 0.0f) || !(h.grid_margin < h.cell_size) || h.reserved != 0u)
+        return COLL_ERR_CORRUPT; /* finite first: no ordered compare of a NaN (the console emulator traps) */
     if ((h.flags & COLL_MESHF_IDX16) && h.nverts > 65536u) return COLL_ERR_CORRUPT;
     if ((h.flags & COLL_MESHF_REF16) && h.ntris > 65536u) return COLL_ERR_CORRUPT;
     coll_mesh_layout_t l = coll_mesh_layout_of(h.flags, h.nverts, h.ntris, ncells, h.nrefs);
