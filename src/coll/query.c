@@ -381,6 +381,40 @@ static bool clip_box(const fm_vec3_t *o, const fm_vec3_t *d, const float lo[3], 
 
 static bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, const fm_vec3_t *hi);
 
+/* Candidate t of a grid walk: its local vertices into v, or false when their box misses
+ * llo..lhi (exactly tri_box_reject's test). Every visited cell entry pays this, so the
+ * common layout (float vertices) reads the coordinates in place, one axis at a time,
+ * across axes first (the up axis rejects least on floors), and copies only survivors. */
+static inline bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+                            fm_vec3_t v[3])
+{
+    if (mv->flags & COLL_MESHF_QUANT) {
+        coll_mesh_view_tri(mv, t, v);
+        return !tri_box_reject(v, llo, lhi);
+    }
+    uint32_t i0, i1, i2;
+    if (mv->flags & COLL_MESHF_IDX16) {
+        const uint16_t *ix = (const uint16_t *)(const void *)mv->tris + 3u * t;
+        i0 = ix[0]; i1 = ix[1]; i2 = ix[2];
+    } else {
+        const uint32_t *ix = (const uint32_t *)(const void *)mv->tris + 3u * t;
+        i0 = ix[0]; i1 = ix[1]; i2 = ix[2];
+    }
+    const float *vs = (const float *)(const void *)mv->verts;
+    const float *a = vs + 3u * i0, *b = vs + 3u * i1, *c = vs + 3u * i2;
+    static const int order[3] = { 0, 2, 1 };
+    for (int k = 0; k < 3; k++) {
+        int ax = order[k];
+        float lo = llo->v[ax], hi = lhi->v[ax];
+        if (a[ax] < lo && b[ax] < lo && c[ax] < lo) return false;
+        if (a[ax] > hi && b[ax] > hi && c[ax] > hi) return false;
+    }
+    v[0].x = a[0]; v[0].y = a[1]; v[0].z = a[2];
+    v[1].x = b[0]; v[1].y = b[1]; v[1].z = b[2];
+    v[2].x = c[0]; v[2].y = c[1]; v[2].z = c[2];
+    return true;
+}
+
 /* Mesh-local box of the ray piece o_l + d_l s, s in [s0, s1], grown by the grid margin
  * plus the rounding of the local ray itself: a triangle outside it cannot be hit. */
 static void ray_local_box(const fm_vec3_t *o_l, const fm_vec3_t *d_l, float s0, float s1, float mg,
@@ -420,8 +454,7 @@ static void ray_test_tri(const coll_mesh_instance_t *inst, const coll_mesh_view_
                          uint32_t t, ray_best_t *rb)
 {
     fm_vec3_t v[3], tri[3], w0;
-    coll_mesh_view_tri(mv, t, v);
-    if (tri_box_reject(v, llo, lhi)) return; /* cheap local reject first */
+    if (!cand_tri(mv, t, llo, lhi, v)) return; /* cheap local reject first */
     tri_rel_of(v, x, o_l, &w0, tri);
     ray_tri(inst, (int32_t)t, &w0, tri, dir, rb);
 }
@@ -725,20 +758,21 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
-    lazy_seen_t lz = { 0u, 0u };
+    /* Box reject first, dedup of the survivors only (see coll_gather_begin; the box only
+     * shrinks, so a triangle it rejected once stays rejected). */
+    bool dedup = walk_all || (m->flags & COLL_MESHF_HASH) || clo[0] != chi[0] || clo[1] != chi[1] || clo[2] != chi[2];
+    if (dedup) seen_ready(seen);
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 /* the sweep may have shrunk since the range was computed */
                 if (!walk_all && sb->inst == inst && cell_misses(m, cx, cy, cz, &llo, &lhi)) continue;
                 uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
-                bool dedup = lazy_enter(&lz, seen, &mv, ci);
-                for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                for (uint32_t k = cells[ci], kend = cells[ci + 1u]; k < kend; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
-                    if (dedup && !seen_first(seen, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3];
-                    coll_mesh_view_tri(&mv, t, v);
-                    if (tri_box_reject(v, &llo, &lhi)) continue; /* cheap local reject first */
+                    if (!cand_tri(&mv, t, &llo, &lhi, v)) continue; /* cheap local reject first */
+                    if (dedup && !seen_first(seen, t)) continue;
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
@@ -923,25 +957,23 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     coll_mesh_view_t mv;
     coll_mesh_view_init(&mv, m);
     const uint32_t *cells = mv.cells;
-    /* a hashed entry may list a triangle twice (see the builder): dedup from the start */
-    lazy_seen_t lz = { 0u, 0u };
-    if (m->flags & COLL_MESHF_HASH) {
-        seen_ready(seen);
-        lz.ncell = 2u;
-    }
+    /* Box reject first, dedup of the survivors only (see coll_gather_begin); a hashed entry
+     * may list a triangle twice (see the builder), so hashed grids always deduplicate. */
+    bool dedup = walk_all || (m->flags & COLL_MESHF_HASH) || clo[0] != chi[0] || clo[1] != chi[1] || clo[2] != chi[2];
+    if (dedup) seen_ready(seen);
     for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
         for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
             for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                 uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
-                bool dedup = lazy_enter(&lz, seen, &mv, ci);
-                for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                for (uint32_t k = cells[ci], kend = cells[ci + 1u]; k < kend; k++) {
                     uint32_t t = coll_mesh_view_ref(&mv, k);
-                    int sc = dedup ? seen_check(seen, t) : SEEN_NEW;
-                    if (sc == SEEN_BEFORE) continue;
-                    if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
                     fm_vec3_t v[3], shape[3], w0, tri[3];
-                    coll_mesh_view_tri(&mv, t, v);
-                    if (tri_box_reject(v, &llo, &lhi)) continue;
+                    if (!cand_tri(&mv, t, &llo, &lhi, v)) continue;
+                    if (dedup) {
+                        int sc = seen_check(seen, t);
+                        if (sc == SEEN_BEFORE) continue;
+                        if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
+                    }
                     tri_rel_of(v, &x, &o_l, &w0, shape);
                     tri_abs(&w0, shape, tri);
                     if (tri_box_reject(tri, &lo, &hi)) continue;
@@ -1023,24 +1055,25 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         coll_mesh_view_t mv;
         coll_mesh_view_init(&mv, m);
         const uint32_t *cells = mv.cells;
-        lazy_seen_t lz = { 0u, 0u };
-        if (m->flags & COLL_MESHF_HASH) { /* a hashed entry may list a triangle twice */
-            seen_ready(&seen);
-            lz.ncell = 2u;
-        }
+        /* The box reject comes first (a triangle it rejects is rejected on every visit), and
+         * only the survivors are deduplicated: on dense meshes most candidates of a cell
+         * lie outside the box. One cell of a plain grid lists a triangle once: no dedup. */
+        bool dedup = walk_all || (m->flags & COLL_MESHF_HASH) || clo[0] != chi[0] || clo[1] != chi[1] ||
+                     clo[2] != chi[2];
+        if (dedup) seen_ready(&seen);
         for (uint32_t cz = clo[2]; cz <= chi[2]; cz++)
             for (uint32_t cy = clo[1]; cy <= chi[1]; cy++)
                 for (uint32_t cx = clo[0]; cx <= chi[0]; cx++) {
                     uint32_t ci = walk_all ? cx : coll_mesh_cell_index(m, cx, cy, cz);
-                    bool dedup = lazy_enter(&lz, &seen, &mv, ci);
-                    for (uint32_t k = cells[ci]; k < cells[ci + 1u]; k++) {
+                    for (uint32_t k = cells[ci], kend = cells[ci + 1u]; k < kend; k++) {
                         uint32_t t = coll_mesh_view_ref(&mv, k);
-                        int sc = dedup ? seen_check(&seen, t) : SEEN_NEW;
-                        if (sc == SEEN_BEFORE) continue;
-                        if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
                         fm_vec3_t v[3], shape[3], w0, tri[3];
-                        coll_mesh_view_tri(&mv, t, v);
-                        if (tri_box_reject(v, &llo, &lhi)) continue;
+                        if (!cand_tri(&mv, t, &llo, &lhi, v)) continue;
+                        if (dedup) {
+                            int sc = seen_check(&seen, t);
+                            if (sc == SEEN_BEFORE) continue;
+                            if (sc == SEEN_UNKNOWN && listed_earlier(m, walk_all, clo, chi, cx, cy, cz, t)) continue;
+                        }
                         tri_rel_of(v, &x, &o_l, &w0, shape);
                         tri_abs(&w0, shape, tri);
                         if (tri_box_reject(tri, &g->lo, &g->hi)) continue;
