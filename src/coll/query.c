@@ -385,7 +385,12 @@ static bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, const fm
  * llo..lhi (exactly tri_box_reject's test). Every visited cell entry pays this, so the
  * common layout (float vertices) reads the coordinates in place, one axis at a time,
  * across axes first (the up axis rejects least on floors), and copies only survivors. */
-static inline bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+#if defined(__GNUC__)
+#define CAND_INLINE static inline __attribute__((always_inline))
+#else
+#define CAND_INLINE static inline
+#endif
+CAND_INLINE bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
                             fm_vec3_t v[3])
 {
     if (mv->flags & COLL_MESHF_QUANT) {
@@ -402,13 +407,12 @@ static inline bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec
     }
     const float *vs = (const float *)(const void *)mv->verts;
     const float *a = vs + 3u * i0, *b = vs + 3u * i1, *c = vs + 3u * i2;
-    static const int order[3] = { 0, 2, 1 };
-    for (int k = 0; k < 3; k++) {
-        int ax = order[k];
-        float lo = llo->v[ax], hi = lhi->v[ax];
-        if (a[ax] < lo && b[ax] < lo && c[ax] < lo) return false;
-        if (a[ax] > hi && b[ax] > hi && c[ax] > hi) return false;
-    }
+    float lo = llo->x, hi = lhi->x;
+    if ((a[0] < lo && b[0] < lo && c[0] < lo) || (a[0] > hi && b[0] > hi && c[0] > hi)) return false;
+    lo = llo->z; hi = lhi->z;
+    if ((a[2] < lo && b[2] < lo && c[2] < lo) || (a[2] > hi && b[2] > hi && c[2] > hi)) return false;
+    lo = llo->y; hi = lhi->y;
+    if ((a[1] < lo && b[1] < lo && c[1] < lo) || (a[1] > hi && b[1] > hi && c[1] > hi)) return false;
     v[0].x = a[0]; v[0].y = a[1]; v[0].z = a[2];
     v[1].x = b[0]; v[1].y = b[1]; v[1].z = b[2];
     v[2].x = c[0]; v[2].y = c[1]; v[2].z = c[2];
