@@ -193,7 +193,7 @@ static uint32_t cell_of(float x, float origin, float inv, uint32_t dim)
 
 /* Per-instance set of triangles already tested by this query: open addressing over a
  * fixed table. When it fills up, further triangles are simply tested again (harmless,
- * exact) and the query counts one overflow in scene->overflow_count. */
+ * exact) and the query counts one in the scene's stats (dedup_overflows). */
 #define SEEN_BITS 9
 #define SEEN_SLOTS (1u << SEEN_BITS)
 #define SEEN_MAX 384u
@@ -339,12 +339,14 @@ static bool listed_earlier(const coll_mesh_t *m, bool walk_all, const uint32_t c
     return false;
 }
 
+/* Counters of the scene's attached stats record (the scene is const to the queries; the
+ * record it points to is the caller's, not part of the scene). */
+#define STATS_ADD(scene, field) do { if ((scene)->stats) (scene)->stats->field++; } while (0)
+
 static void note_overflow(const coll_scene_t *scene, seen_t *s)
 {
     if (s->overflow) {
-        /* Queries take the scene as const for their geometry; the counter is the one
-         * field they update (the scene object itself is never const). */
-        ((coll_scene_t *)(uintptr_t)scene)->overflow_count++;
+        STATS_ADD(scene, dedup_overflows);
         s->overflow = false;
     }
 }
@@ -604,6 +606,7 @@ bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, fl
                   uint8_t read_mask, uint8_t coll_types, coll_ray_hit_t *hit)
 {
     if (!scene || !ray_args_ok(&origin, &dir, max_dist)) return false;
+    STATS_ADD(scene, queries);
     ray_best_t rb;
     memset(&rb, 0, sizeof rb);
     rb.best = max_dist;
@@ -859,6 +862,7 @@ bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t a
 {
     if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement))
         return false;
+    STATS_ADD(scene, queries);
     capsule_q_t q;
     capsule_setup(&q, &axis, radius, inner_half_height, &displacement);
     sweep_best_t sb;
@@ -1008,6 +1012,7 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
                                coll_contact_t *out, uint32_t max_out)
 {
     if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
+    STATS_ADD(scene, queries);
     static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
     capsule_q_t q;
     capsule_setup(&q, &axis, radius, inner_half_height, &zero);
@@ -1041,6 +1046,7 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         g->lo.v[a] = -g->hi.v[a];
     }
     g->valid = true;
+    STATS_ADD(scene, gathers);
     if (!(types & COLL_TYPE_MESH)) return;
     seen_t seen;
     seen_init(&seen);
@@ -1082,6 +1088,7 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
                         tri_abs(&w0, shape, tri);
                         if (tri_box_reject(tri, &g->lo, &g->hi)) continue;
                         if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
+                            STATS_ADD(scene, gather_overflows);
                             g->valid = false;
                             seen_clear(&seen);
                             return;
@@ -1109,7 +1116,11 @@ static bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm
 {
     if (!g->valid) return false;
     for (int a = 0; a < 3; a++)
-        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
+        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) {
+            STATS_ADD(g->scene, gather_misses);
+            return false;
+        }
+    STATS_ADD(g->scene, gather_queries);
     return true;
 }
 
