@@ -196,6 +196,9 @@ static const coll_mesh_t *rebuild(const coll_mesh_t *m, float cell)
     return out;
 }
 
+/* What the measured queries did (fallbacks, overflows): printed by the cost command. */
+static coll_query_stats_t g_stats;
+
 static void world_init(world_t *w, const char *assets, bool platform)
 {
     memset(w, 0, sizeof(*w));
@@ -260,6 +263,7 @@ static run_out_t run_scenario(const char *scn, const char *assets, bool measure_
     } else {
         world_init(&w, assets, plat);
     }
+    coll_scene_set_stats(&w.scene, &g_stats);
     int frames = 90, nb = 1;
     fm_vec3_t in = V(0, 0, 0);
     if (strcmp(scn, "walk") == 0) { body_make(&bodies[0], &pos[0], V(-28, 0, -26)); in = V(5, 0, 0); frames = 30; }
@@ -443,6 +447,8 @@ static int cmd_scaling(uint32_t ntris, float cell)
     static coll_mesh_instance_t inst;
     coll_transform_t idt = COLL_TRANSFORM_IDENTITY;
     coll_scene_init(&sc);
+    static coll_query_stats_t st;
+    coll_scene_set_stats(&sc, &st);
     inst.mesh = mf; inst.xf = idt; inst.write_mask = 1; inst.id = 1;
     coll_scene_add_mesh(&sc, &inst);
     fm_vec3_t bmin, bmax;
@@ -474,7 +480,7 @@ static int cmd_scaling(uint32_t ntris, float cell)
     printf("ntris,cell,moves,rays,rayhits,bytes_float,bytes_quant,bytes_per_tri_float,bytes_per_tri_quant,overflows,cell_eff\n");
     printf("%u,%g,%d,%d,%d,%zu,%zu,%.2f,%.2f,%u,%.4g\n", coll_mesh_triangle_count(mf), cell, moves, rays, rayhits,
            coll_mesh_size(mf), coll_mesh_size(mq), (double)coll_mesh_size(mf) / coll_mesh_triangle_count(mf),
-           (double)coll_mesh_size(mq) / coll_mesh_triangle_count(mq), sc.overflow_count, mf->cell_size);
+           (double)coll_mesh_size(mq) / coll_mesh_triangle_count(mq), st.dedup_overflows + st.gather_overflows, mf->cell_size);
     return 0;
 }
 
@@ -487,6 +493,9 @@ int main(int argc, char **argv)
         g_need_geo = false;
         run_out_t o = run_scenario(argv[3], argc > 4 ? argv[4] : NULL, false);
         printf("calls=%d final=%.6f,%.6f,%.6f cell=%.4g\n", o.calls, o.final.x, o.final.y, o.final.z, g_cell_eff);
+        printf("stats queries=%u gathers=%u gather_overflows=%u gather_queries=%u gather_misses=%u dedup_overflows=%u\n",
+               g_stats.queries, g_stats.gathers, g_stats.gather_overflows, g_stats.gather_queries, g_stats.gather_misses,
+               g_stats.dedup_overflows);
         return 0;
     }
     if (strcmp(argv[1], "accuracy") == 0 && argc >= 3) return cmd_accuracy(argv[2], argc > 3 ? argv[3] : NULL);

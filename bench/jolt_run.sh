@@ -110,32 +110,45 @@ md=$out/jolt_scene.md
     done; done
     echo
     echo "Profile split (callgrind inclusive counts within the measured loop, instructions per"
-    echo "update; the three query columns exclude each other, as do the three char body phase"
-    echo "columns (cb_*); each phase includes the queries it makes):"
+    echo "update). coll_gather_begin: the step's one grid walk; coll_gather_*: the step's queries"
+    echo "on the gathered triangles (inclusive of the scene queries they fall back to);"
+    echo "coll_capsule_sweep / coll_raycast: the scene queries alone (fallbacks: a query reaching"
+    echo "outside the gathered box, mostly the crack rule's roll sweep). The char body phase"
+    echo "columns (cb_*) include the queries they make:"
     echo
-    echo "| grid cell | steps | total | move_and_slide | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | coll_cb_slide | coll_cb_probe_floor | coll_cb_recover |"
-    echo "|---|---|---|---|---|---|---|---|---|---|"
+    echo "| grid cell | steps | total | move_and_slide | coll_gather_begin | coll_gather_capsule_sweep | coll_gather_raycast | coll_gather_capsule_overlaps | coll_capsule_sweep | coll_raycast | coll_cb_slide | coll_cb_probe_floor | coll_cb_recover |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     for c in $CELLS; do for s in $STEPS; do
         n="c${c}_s$s"; u=$((s * 100))
         row="| $(cellname "$c") | $s | $(k "$(total "$n")" $u)"
-        for f in char_body_move_and_slide_in coll_capsule_sweep coll_raycast coll_capsule_overlaps coll_cb_slide coll_cb_probe_floor coll_cb_recover; do
+        for f in char_body_move_and_slide_in coll_gather_begin coll_gather_capsule_sweep coll_gather_raycast coll_gather_capsule_overlaps coll_capsule_sweep coll_raycast coll_cb_slide coll_cb_probe_floor coll_cb_recover; do
             row="$row | $(k "$(incl "$n" "$f")" $u)"
         done
         echo "$row |"
     done; done
     echo
-    echo "Calls per update (the exact primitives: capsule-triangle sweeps, ray-triangle tests;"
-    echo "tri_box_reject: candidate triangles from the grid tested against a query's box):"
+    echo "Calls per update (queries on the gathered triangles, the scene queries they fell back"
+    echo "to, and the exact primitives: capsule-triangle sweeps, ray-triangle tests):"
     echo
-    echo "| grid cell | steps | coll_capsule_sweep | coll_raycast | coll_capsule_overlaps | tri_box_reject | coll_tri_sweep | coll_ray_triangle |"
+    echo "| grid cell | steps | coll_gather_capsule_sweep | coll_gather_raycast | coll_gather_capsule_overlaps | coll_capsule_sweep | coll_tri_sweep | coll_ray_triangle |"
     echo "|---|---|---|---|---|---|---|---|"
     for c in $CELLS; do for s in $STEPS; do
         n="c${c}_s$s"; u=$((s * 100))
         row="| $(cellname "$c") | $s"
-        for f in coll_capsule_sweep coll_raycast coll_capsule_overlaps tri_box_reject coll_tri_sweep coll_ray_triangle; do
+        for f in coll_gather_capsule_sweep coll_gather_raycast coll_gather_capsule_overlaps coll_capsule_sweep coll_tri_sweep coll_ray_triangle; do
             row="$row | $(awk -v n="$(calls "$n" "$f")" -v u=$u 'BEGIN { printf "%.2f", n / u }')"
         done
         echo "$row |"
     done; done
 } > "$md"
 cat "$md"
+
+# The same figures as CSV, for the targets table of docs/BENCHMARKS.md (bench/tables.py).
+{
+    echo "cell,cell_eff,steps,per_update,jolt,max_pen_sweep_mm,pen_samples_over_1mm,settled_at_rest,settled_at_rest_grounded,gathers,gather_overflows,gather_misses,dedup_overflows"
+    for c in $CELLS; do for s in $STEPS; do
+        n="c${c}_s$s"; t=$(total "$n"); u=$((s * 100))
+        j=$([ "$s" = 60 ] && echo $JOLT_60 || echo $JOLT_300)
+        echo "$c,$(val "$n" cell),$s,$((t / u)),$j,$(val "$n" max_pen_sweep_mm),$(val "$n" pen_samples_over_1mm),$(val "$n" settled_at_rest),$(val "$n" settled_at_rest_grounded),$(val "$n" gathers),$(val "$n" gather_overflows),$(val "$n" gather_misses),$(val "$n" dedup_overflows)"
+    done; done
+} > "$out/jolt.csv"

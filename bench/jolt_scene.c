@@ -61,6 +61,7 @@ static double g_box_c[NBOXES][3], g_box_r[NBOXES]; /* box bounding spheres (chec
 static _Alignas(16) unsigned char g_pool[16u << 20];
 
 static coll_scene_t g_scene;
+static coll_query_stats_t g_stats; /* the measured steps' query counters */
 static coll_mesh_instance_t g_inst;
 static char_body_t g_body[NCHARS];
 static fm_vec3_t g_owner[NCHARS];
@@ -329,6 +330,7 @@ int main(int argc, char **argv)
         return 1;
     }
     coll_scene_init(&g_scene);
+    coll_scene_set_stats(&g_scene, &g_stats);
     g_inst = (coll_mesh_instance_t){.mesh = mesh, .xf = COLL_TRANSFORM_IDENTITY, .write_mask = 0x01, .id = 1};
     if (coll_scene_add_mesh(&g_scene, &g_inst) != COLL_OK) return 1;
 
@@ -366,7 +368,7 @@ int main(int argc, char **argv)
     ground_t end = ground_report();
     uint64_t air_samples = ck.airborne_samples, samples = ck.samples;
     uint64_t stepped = ck.stepped, hit_wall = ck.hit_wall, near_boxes = ck.near_boxes;
-    uint32_t overflows = g_scene.overflow_count;
+    coll_query_stats_t qs = g_stats; /* the measured steps only */
 
     /* settle (not measured): inputs stop; every body should come to rest on a floor */
     for (uint32_t st = 0; st < SETTLE_STEPS; st++) {
@@ -386,7 +388,9 @@ int main(int argc, char **argv)
     printf("max_slides=%d\n", (int)g_body[0].settings.max_slides);
     printf("triangles=%u\n", coll_mesh_triangle_count(mesh));
     printf("mesh_bytes=%zu\n", coll_mesh_size(mesh));
-    printf("overflows=%u\n", overflows);
+    printf("overflows=%u\n", qs.dedup_overflows + qs.gather_overflows);
+    printf("dedup_overflows=%u\ngathers=%u\ngather_overflows=%u\ngather_queries=%u\ngather_misses=%u\nscene_queries=%u\n",
+           qs.dedup_overflows, qs.gathers, qs.gather_overflows, qs.gather_queries, qs.gather_misses, qs.queries);
     printf("max_pen_sweep_mm=%.4f\n", ck.max_pen_sweep * 1e3);
     printf("min_clearance_sweep_mm=%.4f\n", ck.min_clear_sweep * 1e3);
     printf("worst=body %d step %u\n", ck.worst_body, ck.worst_step);

@@ -3,8 +3,9 @@
 # and console instruction counts (big-endian MIPS, VR4300 code, counted under qemu, then on
 # the emulated console: make bench-n64, mk/n64rom_bench.mk).
 #
-#   make bench          everything; results in $(BUILD)/bench/, charts and tables copied
-#                       into docs/img/ and docs/BENCHMARKS.md (generated sections)
+#   make bench          everything (the Jolt scene first: make bench-jolt, mk/jolt.mk); results
+#                       in $(BUILD)/bench/, charts and tables copied into docs/img/ and
+#                       docs/BENCHMARKS.md (generated sections)
 #   make bench-bin      just the programs
 #
 # Counts instructions, never time: callgrind on the host, qemu's exec trace on MIPS.
@@ -55,5 +56,6 @@ BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/test_course.
 .PHONY: bench bench-bin
 bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
 bench: bench-bin $(BENCH_ASSETS) $(COLLBAKE)
+	$(MAKE) --no-print-directory bench-jolt
 	bash bench/run.sh $(BENCH_OUT) $(ASSET_DIR) $(qemu_RUN) $(n64_NM) $(COLLBAKE)
 	$(MAKE) --no-print-directory bench-n64

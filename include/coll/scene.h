@@ -56,14 +56,29 @@ typedef struct coll_body_s {
     uint16_t id;
 } coll_body_t;
 
+/**
+ * Optional counters of the work the queries did: what a fixed buffer could not hold and
+ * went a slower, still exact way, for tuning a level (grid cell) and the capacities. The
+ * caller owns it and attaches it to a scene (coll_scene_set_stats); the queries only add to
+ * it, so it may be shared by several scenes and is reset by the caller (zero it).
+ */
+typedef struct coll_query_stats_s {
+    uint32_t queries;          ///< coll_raycast / coll_capsule_sweep / coll_capsule_overlaps calls on the scene
+    uint32_t dedup_overflows;  ///< scene queries whose per-query dedup table filled up (triangles re-tested or looked up in the cells)
+    uint32_t gathers;          ///< character steps that gathered their candidate triangles (char_body_move_and_slide_in)
+    uint32_t gather_overflows; ///< gathers that found more than their capacity: every query of that step went to the scene
+    uint32_t gather_queries;   ///< queries of a step answered from its gathered triangles
+    uint32_t gather_misses;    ///< queries of a step that reached outside its gathered box and ran on the scene
+} coll_query_stats_t;
+
 /** Registry of caller-owned colliders. Capacity is fixed at compile time. */
 typedef struct coll_scene_s {
     coll_mesh_instance_t *meshes[COLL_SCENE_MAX_MESHES];
     coll_body_t *bodies[COLL_SCENE_MAX_BODIES];
     uint16_t mesh_count;
     uint16_t body_count;
-    /** Times a fixed query buffer filled up and a query fell back to a slower exact path. */
-    uint32_t overflow_count;
+    /** Counters the queries add to, or NULL (none): coll_scene_set_stats(). */
+    coll_query_stats_t *stats;
 } coll_scene_t;
 
 void coll_scene_init(coll_scene_t *scene);
@@ -73,6 +88,10 @@ coll_err_t coll_scene_add_mesh(coll_scene_t *scene, coll_mesh_instance_t *inst);
 coll_err_t coll_scene_remove_mesh(coll_scene_t *scene, coll_mesh_instance_t *inst);
 coll_err_t coll_scene_add_body(coll_scene_t *scene, coll_body_t *body);
 coll_err_t coll_scene_remove_body(coll_scene_t *scene, coll_body_t *body);
+
+/** Attaches counters (or NULL: none, the default after coll_scene_init) that every query on
+ *  this scene adds to, including the character body's. */
+void coll_scene_set_stats(coll_scene_t *scene, coll_query_stats_t *stats);
 
 /** The scene char_body_move_and_slide() uses. */
 void coll_scene_set_current(coll_scene_t *scene);

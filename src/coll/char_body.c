@@ -275,9 +275,15 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
 {
     const char_body_t *b = c->body;
     fm_vec3_t center = cb_center(c, pos), up = c->up;
-    float speed = cb_len(cb_reject(input, up)) + cb_len(b->velocity) + b->settings.gravity * dt;
+    /* The step's velocity (step 3 below) is at most the input across up, plus the air
+     * velocity kept and the speed along up (airborne) or down a steep floor, plus a step of
+     * gravity; the velocity across up is the input's again, so it is not counted twice. */
+    float speed = cb_len(cb_reject(input, up)) + cb_len(b->air_velocity) + fabsf(cb_dot(b->velocity, up)) +
+                  b->slide_speed + b->settings.gravity * dt;
     float move = speed * dt + carry + 4.0f * c->skin;
-    float below = c->snap + 2.0f * c->skin; /* the floor probe's reach */
+    /* the floor probe's reach, and the crack rule's ball dropped from the foot (it reaches
+     * half a radius below the probe: ball_held in char_body_floor.c) */
+    float below = c->snap + 0.5f * c->radius + 2.0f * c->skin;
     fm_vec3_t lo, hi;
     for (int a = 0; a < 3; a++) {
         float ext = fabsf(up.v[a]) * (c->half_height - c->radius) + c->radius + move;

@@ -14,6 +14,11 @@ void coll_scene_init(coll_scene_t *scene)
     if (scene) memset(scene, 0, sizeof *scene);
 }
 
+void coll_scene_set_stats(coll_scene_t *scene, coll_query_stats_t *stats)
+{
+    if (scene) scene->stats = stats;
+}
+
 void coll_scene_set_current(coll_scene_t *scene) { g_current = scene; }
 
 coll_scene_t *coll_scene_current(void) { return g_current; }

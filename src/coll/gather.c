@@ -1,0 +1,67 @@
+/**
+ * @file gather.c
+ * @brief The step gather (gather.h): one walk of the grid cells under a character step's
+ *        box (grid_walk.h), keeping the triangles that meet it in query-relative form. The
+ *        queries on the gathered triangles are in query.c, beside the scene's.
+ */
+#include "gather.h"
+#include "grid_walk.h"
+
+void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
+                       uint8_t types)
+{
+    g->scene = scene;
+    g->read_mask = read_mask;
+    g->types = types;
+    g->ntris = 0;
+    g->valid = false;
+    if (!scene || !vfin(&lo) || !vfin(&hi)) return;
+    for (int a = 0; a < 3; a++) {
+        g->origin.v[a] = 0.5f * (lo.v[a] + hi.v[a]);
+        g->hi.v[a] = 0.5f * (hi.v[a] - lo.v[a]);
+        g->lo.v[a] = -g->hi.v[a];
+    }
+    g->valid = true;
+    STATS_ADD(scene, gathers);
+    if (!(types & COLL_TYPE_MESH)) return;
+    seen_t seen;
+    seen_init(&seen);
+    for (uint16_t i = 0; i < scene->mesh_count; i++) {
+        const coll_mesh_instance_t *inst = scene->meshes[i];
+        if (!inst || !(inst->write_mask & read_mask)) continue;
+        const coll_mesh_t *m = inst->mesh;
+        xf3_t x;
+        if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) continue;
+        fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &g->origin);
+        fm_vec3_t llo, lhi;
+        local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
+        grid_walk_t w;
+        if (!grid_walk_box(&w, m, &llo, &lhi, &seen)) continue;
+        while (grid_walk_next_cell(&w))
+            for (uint32_t k = w.k; k < w.kend; k++) {
+                uint32_t t;
+                fm_vec3_t v[3], shape[3], w0, tri[3];
+                if (!grid_walk_take(&w, k, &t, v)) continue;
+                tri_rel_of(v, &x, &o_l, &w0, shape);
+                tri_abs(&w0, shape, tri);
+                if (tri_box_reject(tri, &g->lo, &g->hi)) continue;
+                if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
+                    STATS_ADD(scene, gather_overflows);
+                    g->valid = false;
+                    seen_clear(&seen);
+                    return;
+                }
+                coll_gather_tri_t *gt = &g->tris[g->ntris++];
+                gt->w0 = w0;
+                gt->e1 = shape[1];
+                gt->e2 = shape[2];
+                for (int a = 0; a < 3; a++) {
+                    gt->lo.v[a] = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a]));
+                    gt->hi.v[a] = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a]));
+                }
+                gt->inst = inst;
+                gt->tri = (int32_t)t;
+            }
+        grid_walk_end(&w, scene);
+    }
+}
