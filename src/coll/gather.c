@@ -40,11 +40,8 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         while (grid_walk_next_cell(&w))
             for (uint32_t k = w.k; k < w.kend; k++) {
                 uint32_t t;
-                fm_vec3_t v[3], shape[3], w0, tri[3];
-                if (!grid_walk_take(&w, k, &t, v)) continue;
-                tri_rel_of(v, &x, &o_l, &w0, shape);
-                tri_abs(&w0, shape, tri);
-                if (tri_box_reject(tri, &g->lo, &g->hi)) continue;
+                fm_vec3_t shape[3], w0, tri[3];
+                if (!grid_walk_take_in_box(&w, k, &x, &o_l, &g->lo, &g->hi, &t, &w0, shape, tri)) continue;
                 if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
                     STATS_ADD(scene, gather_overflows);
                     g->valid = false;

@@ -507,6 +507,20 @@ CAND_INLINE bool grid_walk_take(grid_walk_t *w, uint32_t k, uint32_t *t, fm_vec3
     return true;
 }
 
+/* grid_walk_take for a box query: the triangle relative to the query origin (w0 + shape,
+ * as the per-triangle tests take it) and in absolute form (tri), false when it is not
+ * taken or lies wholly outside the world-relative box lo..hi. */
+CAND_INLINE bool grid_walk_take_in_box(grid_walk_t *w, uint32_t k, const xf3_t *x, const fm_vec3_t *o_l,
+                                       const fm_vec3_t *lo, const fm_vec3_t *hi, uint32_t *t, fm_vec3_t *w0,
+                                       fm_vec3_t shape[3], fm_vec3_t tri[3])
+{
+    fm_vec3_t v[3];
+    if (!grid_walk_take(w, k, t, v)) return false;
+    tri_rel_of(v, x, o_l, w0, shape);
+    tri_abs(w0, shape, tri);
+    return !tri_box_reject(tri, lo, hi);
+}
+
 /* Ends the walk: the table is cleared for the next instance; an overflow is counted. */
 static inline void grid_walk_end(grid_walk_t *w, const coll_scene_t *scene)
 {

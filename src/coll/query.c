@@ -346,11 +346,8 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     while (grid_walk_next_cell(&w))
         for (uint32_t k = w.k; k < w.kend; k++) {
             uint32_t t;
-            fm_vec3_t v[3], shape[3], w0, tri[3];
-            if (!grid_walk_take(&w, k, &t, v)) continue;
-            tri_rel_of(v, &x, &o_l, &w0, shape);
-            tri_abs(&w0, shape, tri);
-            if (tri_box_reject(tri, &lo, &hi)) continue;
+            fm_vec3_t shape[3], w0, tri[3];
+            if (!grid_walk_take_in_box(&w, k, &x, &o_l, &lo, &hi, &t, &w0, shape, tri)) continue;
             if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &up1, sb)) {
                 swept_box(q, sb->best, &lo, &hi); /* shrink the sweep, and skip cells it misses */
                 local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
@@ -523,11 +520,8 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
     while (grid_walk_next_cell(&w))
         for (uint32_t k = w.k; k < w.kend; k++) {
             uint32_t t;
-            fm_vec3_t v[3], shape[3], w0, tri[3];
-            if (!grid_walk_take(&w, k, &t, v)) continue;
-            tri_rel_of(v, &x, &o_l, &w0, shape);
-            tri_abs(&w0, shape, tri);
-            if (tri_box_reject(tri, &lo, &hi)) continue;
+            fm_vec3_t shape[3], w0, tri[3];
+            if (!grid_walk_take_in_box(&w, k, &x, &o_l, &lo, &hi, &t, &w0, shape, tri)) continue;
             overlap_tri(q, inst, (int32_t)t, &w0, shape, &up1, c);
         }
     grid_walk_end(&w, scene);
