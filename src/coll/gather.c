@@ -4,6 +4,7 @@
  *        box (grid_walk.h), keeping the triangles that meet it in query-relative form. The
  *        queries on the gathered triangles are in query.c, beside the scene's.
  */
+#include "vec3.h"
 #include "gather.h"
 #include "grid_walk.h"
 
@@ -53,8 +54,8 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
                 gt->e1 = shape[1];
                 gt->e2 = shape[2];
                 for (int a = 0; a < 3; a++) {
-                    gt->lo.v[a] = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a]));
-                    gt->hi.v[a] = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a]));
+                    gt->lo.v[a] = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
+                    gt->hi.v[a] = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
                 }
                 gt->inst = inst;
                 gt->tri = (int32_t)t;

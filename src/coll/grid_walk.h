@@ -18,14 +18,13 @@
 #ifndef COLL_GRID_WALK_H
 #define COLL_GRID_WALK_H
 
+#include "vec3.h"
 #include "coll/scene.h"
 #include "mesh_format.h"
 #include <math.h>
 #include <string.h>
 
 /* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */
-static inline float min_f(float a, float b) { return a < b ? a : b; }
-static inline float max_f(float a, float b) { return a > b ? a : b; }
 
 
 typedef struct {

@@ -4,13 +4,12 @@
  *        in one caller-owned block), hostile-input-safe loader of baked big-endian blobs,
  *        and the blob writer used by the bake tool. Layout: mesh_format.h.
  */
+#include "vec3.h"
 #include "mesh_format.h"
 #include <math.h>
 #include <string.h>
 
 /* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */
-static inline float min_f(float a, float b) { return a < b ? a : b; }
-static inline float max_f(float a, float b) { return a > b ? a : b; }
 
 /* Hard caps of the grid, which coll_mesh_build_size() budgets for: the builder grows the
  * cell size until the grid fits (a single cell always does). */
@@ -207,7 +206,7 @@ static bool input_tri_ok(const float *verts, uint32_t nverts, const uint32_t *ix
 static bool axis_separates(const fm_vec3_t *a, const fm_vec3_t v[3], const float h[3])
 {
     float p0 = fm_vec3_dot(a, &v[0]), p1 = fm_vec3_dot(a, &v[1]), p2 = fm_vec3_dot(a, &v[2]);
-    float lo = min_f(p0, min_f(p1, p2)), hi = max_f(p0, max_f(p1, p2));
+    float lo = f_min(p0, f_min(p1, p2)), hi = f_max(p0, f_max(p1, p2));
     float r = h[0] * fabsf(a->x) + h[1] * fabsf(a->y) + h[2] * fabsf(a->z);
     return lo > r || hi < -r;
 }
@@ -218,8 +217,8 @@ static bool tri_box_overlap(const fm_vec3_t tri[3], const float c[3], const floa
     for (int i = 0; i < 3; i++)
         for (int a = 0; a < 3; a++) v[i].v[a] = tri[i].v[a] - c[a];
     for (int a = 0; a < 3; a++) {
-        float lo = min_f(v[0].v[a], min_f(v[1].v[a], v[2].v[a]));
-        float hi = max_f(v[0].v[a], max_f(v[1].v[a], v[2].v[a]));
+        float lo = f_min(v[0].v[a], f_min(v[1].v[a], v[2].v[a]));
+        float hi = f_max(v[0].v[a], f_max(v[1].v[a], v[2].v[a]));
         if (lo > h[a] || hi < -h[a]) return false;
     }
     fm_vec3_sub(&e[0], &v[1], &v[0]);
@@ -257,8 +256,8 @@ static bool for_each_cell_of_tri(const grid_t *g, const fm_vec3_t tri[3], cell_v
     uint32_t lo[3], hi[3];
     float inv = 1.0f / g->cell;
     for (int a = 0; a < 3; a++) {
-        float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
-        float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
+        float mn = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a])) - g->margin;
+        float mx = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a])) + g->margin;
         lo[a] = coll_mesh_cell_coord(mn, g->origin[a], inv, g->dims[a]);
         hi[a] = coll_mesh_cell_coord(mx, g->origin[a], inv, g->dims[a]);
     }
@@ -347,15 +346,15 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
     float ext[3], maxabs = 0.0f, maxext = 0.0f;
     for (int a = 0; a < 3; a++) {
         ext[a] = m->bmax[a] - m->bmin[a];
-        maxext = max_f(maxext, ext[a]);
-        maxabs = max_f(maxabs, max_f(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
+        maxext = f_max(maxext, ext[a]);
+        maxabs = f_max(maxabs, f_max(fabsf(m->bmin[a]), fabsf(m->bmax[a])));
         g->origin[a] = m->bmin[a];
     }
     bool automatic = !(want_cell > 0.0f);
     /* Automatic: start at half the mean triangle size but no finer than character scale
      * (1 m: a query box is about that wide, finer cells only add cell visits), then grow
      * in steps of 1.25 until the grid fits the memory budget. */
-    float cell = automatic ? max_f(0.5f * mean_extent, 1.0f) : want_cell;
+    float cell = automatic ? f_max(0.5f * mean_extent, 1.0f) : want_cell;
     if (!(cell >= maxext * (1.0f / 4096.0f))) cell = maxext * (1.0f / 4096.0f);
     if (!(cell > 1e-6f)) cell = 1e-6f;
     uint64_t max_cells = automatic ? GRID_AUTO_CELLS(m->ntris) : GRID_MAX_CELLS(m->ntris);
@@ -402,8 +401,8 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
                 coll_mesh_tri_local(m, t, tri);
                 uint64_t n = 1;
                 for (int a = 0; a < 3; a++) {
-                    float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a])) - g->margin;
-                    float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a])) + g->margin;
+                    float mn = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a])) - g->margin;
+                    float mx = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a])) + g->margin;
                     n *= 1u + coll_mesh_cell_coord(mx, g->origin[a], inv, g->dims[a]) - coll_mesh_cell_coord(mn, g->origin[a], inv, g->dims[a]);
                 }
                 work += n;
@@ -423,7 +422,7 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         }
         if (single) return; /* cannot happen: one cell holds ntris <= max_refs refs */
         cell *= automatic ? 1.25f : 1.5f; /* automatic: finer steps land nearer the budget */
-        if (cell >= maxext) cell = max_f(maxext, 1e-6f) * 1.0001f;
+        if (cell >= maxext) cell = f_max(maxext, 1e-6f) * 1.0001f;
     }
 }
 
@@ -464,8 +463,8 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
             if (!tri_has_area(tri)) continue;
             for (int k = 0; k < 3; k++)
                 for (int a = 0; a < 3; a++) {
-                    lo[a] = min_f(lo[a], tri[k].v[a]);
-                    hi[a] = max_f(hi[a], tri[k].v[a]);
+                    lo[a] = f_min(lo[a], tri[k].v[a]);
+                    hi[a] = f_max(hi[a], tri[k].v[a]);
                 }
         }
         for (int a = 0; a < 3; a++) {
@@ -515,11 +514,11 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
         }
         float e = 0.0f;
         for (int a = 0; a < 3; a++) {
-            float mn = min_f(tri[0].v[a], min_f(tri[1].v[a], tri[2].v[a]));
-            float mx = max_f(tri[0].v[a], max_f(tri[1].v[a], tri[2].v[a]));
-            lo[a] = min_f(lo[a], mn);
-            hi[a] = max_f(hi[a], mx);
-            e = max_f(e, mx - mn);
+            float mn = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
+            float mx = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
+            lo[a] = f_min(lo[a], mn);
+            hi[a] = f_max(hi[a], mx);
+            e = f_max(e, mx - mn);
         }
         extent_sum += e;
         nt++;

@@ -37,9 +37,9 @@ typedef struct {
 
 static fm_vec3_t q_rot(const fm_quat_t *q, fm_vec3_t v)
 {
-    fm_vec3_t u = pv_make(q->x, q->y, q->z);
-    fm_vec3_t t = pv_scale(pv_cross(u, v), 2.0f);
-    return pv_add(pv_madd(v, t, q->w), pv_cross(u, t));
+    fm_vec3_t u = v3(q->x, q->y, q->z);
+    fm_vec3_t t = v3_scale(v3_cross(u, v), 2.0f);
+    return v3_add(v3_madd(v, t, q->w), v3_cross(u, t));
 }
 
 static fm_vec3_t q_rot_inv(const fm_quat_t *q, fm_vec3_t v)
@@ -50,9 +50,9 @@ static fm_vec3_t q_rot_inv(const fm_quat_t *q, fm_vec3_t v)
 
 static bool body_setup(const coll_body_t *body, const fm_vec3_t *pos, body_frame_t *f)
 {
-    if (!body || !pos || !pv_sane3(*pos) || !pv_finite3(body->half_extents)) return false;
+    if (!body || !pos || !prim_sane3(*pos) || !v3_finite(body->half_extents)) return false;
     const fm_quat_t *q = &body->xf.rot;
-    if (!pv_finite(q->x) || !pv_finite(q->y) || !pv_finite(q->z) || !pv_finite(q->w)) return false;
+    if (!f_finite(q->x) || !f_finite(q->y) || !f_finite(q->z) || !f_finite(q->w)) return false;
     float qq = q->x * q->x + q->y * q->y + q->z * q->z + q->w * q->w;
     if (!(qq > 1e-12f)) return false;
     float inv = 1.0f / sqrtf(qq);
@@ -78,15 +78,15 @@ static bool body_setup(const coll_body_t *body, const fm_vec3_t *pos, body_frame
 
 static bool seg_ok(const fm_vec3_t seg[2], float r)
 {
-    return seg && pv_sane3(seg[0]) && pv_sane3(seg[1]) && r >= 0.0f && pv_sane(r);
+    return seg && prim_sane3(seg[0]) && prim_sane3(seg[1]) && r >= 0.0f && prim_sane(r);
 }
 
 /** World inner segment of a capsule body (local Y axis). */
 static void capsule_axis(const body_frame_t *f, fm_vec3_t out[3])
 {
-    fm_vec3_t up = q_rot(&f->q, pv_make(0.0f, f->he.y, 0.0f));
-    out[0] = pv_sub(f->pos, up);
-    out[1] = pv_add(f->pos, up);
+    fm_vec3_t up = q_rot(&f->q, v3(0.0f, f->he.y, 0.0f));
+    out[0] = v3_sub(f->pos, up);
+    out[1] = v3_add(f->pos, up);
     out[2] = out[1];
 }
 
@@ -120,14 +120,14 @@ static bool ray_box_local(fm_vec3_t o, fm_vec3_t d, fm_vec3_t he, float s_max, p
         if (t2 < tmax) tmax = t2;
         if (tmin > tmax) return false;
     }
-    out->n = pv_make(0.0f, 0.0f, 0.0f);
+    out->n = v3(0.0f, 0.0f, 0.0f);
     if (inside || axis < 0) {
         /* origin inside: nearest face */
         float best = 3.0e38f;
         for (int i = 0; i < 3; i++) {
             float dp = he.v[i] - o.v[i], dn = o.v[i] + he.v[i];
-            if (dp < best) { best = dp; out->n = pv_make(0.0f, 0.0f, 0.0f); out->n.v[i] = 1.0f; }
-            if (dn < best) { best = dn; out->n = pv_make(0.0f, 0.0f, 0.0f); out->n.v[i] = -1.0f; }
+            if (dp < best) { best = dp; out->n = v3(0.0f, 0.0f, 0.0f); out->n.v[i] = 1.0f; }
+            if (dn < best) { best = dn; out->n = v3(0.0f, 0.0f, 0.0f); out->n.v[i] = -1.0f; }
         }
         out->s = 0.0f;
         return true;
@@ -144,8 +144,8 @@ static bool ray_cylinder_local(fm_vec3_t o, fm_vec3_t d, float R, float hh, floa
     if (rr <= R * R && o.y >= -hh && o.y <= hh) {
         float side = R - sqrtf(rr), cap = hh - fabsf(o.y);
         out->s = 0.0f;
-        if (cap < side) out->n = pv_make(0.0f, o.y >= 0.0f ? 1.0f : -1.0f, 0.0f);
-        else out->n = pv_unit_or(pv_make(o.x, 0.0f, o.z), pv_make(1.0f, 0.0f, 0.0f));
+        if (cap < side) out->n = v3(0.0f, o.y >= 0.0f ? 1.0f : -1.0f, 0.0f);
+        else out->n = v3_unit_or(v3(o.x, 0.0f, o.z), v3(1.0f, 0.0f, 0.0f));
         return true;
     }
     bool any = false;
@@ -159,7 +159,7 @@ static bool ray_cylinder_local(fm_vec3_t o, fm_vec3_t d, float R, float hh, floa
             if (!(s >= 0.0f) || !(s <= s_max)) continue;
             float x = o.x + d.x * s, z = o.z + d.z * s;
             if (x * x + z * z > R * R) continue;
-            if (!any || s < out->s) { any = true; out->s = s; out->n = pv_make(0.0f, k ? 1.0f : -1.0f, 0.0f); }
+            if (!any || s < out->s) { any = true; out->s = s; out->n = v3(0.0f, k ? 1.0f : -1.0f, 0.0f); }
         }
     }
     /* side */
@@ -175,7 +175,7 @@ static bool ray_cylinder_local(fm_vec3_t o, fm_vec3_t d, float R, float hh, floa
             if (s <= s_max && y >= -hh && y <= hh && (!any || s < out->s)) {
                 any = true;
                 out->s = s;
-                out->n = pv_unit_or(pv_make(o.x + d.x * s, 0.0f, o.z + d.z * s), pv_make(1.0f, 0.0f, 0.0f));
+                out->n = v3_unit_or(v3(o.x + d.x * s, 0.0f, o.z + d.z * s), v3(1.0f, 0.0f, 0.0f));
             }
         }
     }
@@ -186,9 +186,9 @@ bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *bo
                    const fm_vec3_t *body_pos_rel, float s_max, coll_prim_hit_t *hit)
 {
     body_frame_t f;
-    if (!o || !d || !hit || !pv_sane3(*o) || !pv_sane3(*d) || !(s_max >= 0.0f)) return false;
+    if (!o || !d || !hit || !prim_sane3(*o) || !prim_sane3(*d) || !(s_max >= 0.0f)) return false;
     if (!body_setup(body, body_pos_rel, &f)) return false;
-    if (!(pv_len2(*d) > 0.0f)) return false;
+    if (!(v3_len2(*d) > 0.0f)) return false;
     prim_ray_t h;
     bool got;
     switch (f.shape) {
@@ -204,7 +204,7 @@ bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *bo
     case COLL_SHAPE_BOX:
     case COLL_SHAPE_CYLINDER:
     default: {
-        fm_vec3_t ol = q_rot_inv(&f.q, pv_sub(*o, f.pos)), dl = q_rot_inv(&f.q, *d);
+        fm_vec3_t ol = q_rot_inv(&f.q, v3_sub(*o, f.pos)), dl = q_rot_inv(&f.q, *d);
         got = f.shape == COLL_SHAPE_BOX ? ray_box_local(ol, dl, f.he, s_max, &h)
                                         : ray_cylinder_local(ol, dl, f.he.x, f.he.y, s_max, &h);
         if (got) h.n = q_rot(&f.q, h.n);
@@ -215,7 +215,7 @@ bool coll_ray_body(const fm_vec3_t *o, const fm_vec3_t *d, const coll_body_t *bo
     hit->t = h.s;
     hit->depth = 0.0f;
     hit->normal = h.n;
-    hit->point = pv_madd(*o, *d, h.s);
+    hit->point = v3_madd(*o, *d, h.s);
     return true;
 }
 
@@ -233,35 +233,35 @@ static const int box_tris[12][3] = {
 
 static fm_vec3_t box_corner(fm_vec3_t he, int i)
 {
-    return pv_make(i & 1 ? he.x : -he.x, i & 2 ? he.y : -he.y, i & 4 ? he.z : -he.z);
+    return v3(i & 1 ? he.x : -he.x, i & 2 ? he.y : -he.y, i & 4 ? he.z : -he.z);
 }
 
 /** Penetration of segment a..b (local frame) into the box by separating axes; false when
  *  separated. depth is the segment's (add r), normal local, box -> segment. */
 static bool seg_box_sat(fm_vec3_t a, fm_vec3_t b, fm_vec3_t he, float *depth, fm_vec3_t *normal)
 {
-    fm_vec3_t s = pv_sub(b, a), c = pv_scale(pv_add(a, b), 0.5f);
+    fm_vec3_t s = v3_sub(b, a), c = v3_scale(v3_add(a, b), 0.5f);
     float best = 3.0e38f;
-    fm_vec3_t bn = pv_make(0.0f, 1.0f, 0.0f);
+    fm_vec3_t bn = v3(0.0f, 1.0f, 0.0f);
     for (int i = 0; i < 6; i++) {
         fm_vec3_t ax;
         if (i < 3) {
-            ax = pv_make(0.0f, 0.0f, 0.0f);
+            ax = v3(0.0f, 0.0f, 0.0f);
             ax.v[i] = 1.0f;
         } else {
-            fm_vec3_t e = pv_make(0.0f, 0.0f, 0.0f);
+            fm_vec3_t e = v3(0.0f, 0.0f, 0.0f);
             e.v[i - 3] = 1.0f;
-            ax = pv_cross(s, e);
-            float l2 = pv_len2(ax);
-            if (!(l2 > 1e-10f * pv_len2(s)) || !(l2 > 1e-20f)) continue;
-            ax = pv_scale(ax, 1.0f / sqrtf(l2));
+            ax = v3_cross(s, e);
+            float l2 = v3_len2(ax);
+            if (!(l2 > 1e-10f * v3_len2(s)) || !(l2 > 1e-20f)) continue;
+            ax = v3_scale(ax, 1.0f / sqrtf(l2));
         }
         float rb = he.x * fabsf(ax.x) + he.y * fabsf(ax.y) + he.z * fabsf(ax.z);
-        float rs = 0.5f * fabsf(pv_dot(s, ax));
-        float cp = pv_dot(c, ax);
+        float rs = 0.5f * fabsf(v3_dot(s, ax));
+        float cp = v3_dot(c, ax);
         float ov = rb + rs - fabsf(cp);
         if (ov < 0.0f) return false;
-        if (ov < best) { best = ov; bn = cp >= 0.0f ? ax : pv_neg(ax); }
+        if (ov < best) { best = ov; bn = cp >= 0.0f ? ax : v3_neg(ax); }
     }
     *depth = best;
     *normal = bn;
@@ -274,14 +274,14 @@ static bool box_overlap_local(const fm_vec3_t seg[2], float r, fm_vec3_t he, flo
     float depth;
     fm_vec3_t n;
     /* quick reject: separated even from the box grown by r */
-    if (!seg_box_sat(seg[0], seg[1], pv_make(he.x + r, he.y + r, he.z + r), &depth, &n)) return false;
+    if (!seg_box_sat(seg[0], seg[1], v3(he.x + r, he.y + r, he.z + r), &depth, &n)) return false;
     if (seg_box_sat(seg[0], seg[1], he, &depth, &n)) {
         hit->t = 0.0f;
         hit->depth = depth + r;
         hit->normal = n;
         /* closest point of the box to the segment centre, projected along n */
-        fm_vec3_t c = pv_scale(pv_add(seg[0], seg[1]), 0.5f);
-        for (int i = 0; i < 3; i++) c.v[i] = pv_maxf(-he.v[i], pv_minf(he.v[i], c.v[i]));
+        fm_vec3_t c = v3_scale(v3_add(seg[0], seg[1]), 0.5f);
+        for (int i = 0; i < 3; i++) c.v[i] = f_max(-he.v[i], f_min(he.v[i], c.v[i]));
         hit->point = c;
         return true;
     }
@@ -299,7 +299,7 @@ static bool box_overlap_local(const fm_vec3_t seg[2], float r, fm_vec3_t he, flo
     float dist = sqrtf(best);
     hit->t = 0.0f;
     hit->depth = r - dist;
-    hit->normal = pv_unit_or(pv_sub(bps, bpt), pv_make(0.0f, 1.0f, 0.0f));
+    hit->normal = v3_unit_or(v3_sub(bps, bpt), v3(0.0f, 1.0f, 0.0f));
     hit->point = bpt;
     return true;
 }
@@ -310,8 +310,8 @@ static bool box_sweep_local(const fm_vec3_t seg[2], float r, fm_vec3_t d, fm_vec
     /* quick reject: the swept segment's bounds miss the box grown by r */
     for (int i = 0; i < 3; i++) {
         float a0 = seg[0].v[i], a1 = seg[1].v[i], m = d.v[i] * t_max;
-        float lo = pv_minf(pv_minf(a0, a1), pv_minf(a0 + m, a1 + m));
-        float hi = pv_maxf(pv_maxf(a0, a1), pv_maxf(a0 + m, a1 + m));
+        float lo = f_min(f_min(a0, a1), f_min(a0 + m, a1 + m));
+        float hi = f_max(f_max(a0, a1), f_max(a0 + m, a1 + m));
         if (lo > he.v[i] + r || hi < -he.v[i] - r) return false;
     }
     if (box_overlap_local(seg, r, he, tol, hit)) return true;
@@ -355,7 +355,7 @@ static fm_vec3_t cyl_closest_pt(fm_vec3_t p, float R, float hh)
 {
     float rho2 = p.x * p.x + p.z * p.z;
     float k = rho2 > R * R ? R / sqrtf(rho2) : 1.0f;
-    return pv_make(p.x * k, pv_maxf(-hh, pv_minf(hh, p.y)), p.z * k);
+    return v3(p.x * k, f_max(-hh, f_min(hh, p.y)), p.z * k);
 }
 
 /**
@@ -366,20 +366,20 @@ static fm_vec3_t cyl_closest_pt(fm_vec3_t p, float R, float hh)
  */
 static float seg_cyl_closest(fm_vec3_t a, fm_vec3_t b, float R, float hh, fm_vec3_t *ps, fm_vec3_t *pc)
 {
-    fm_vec3_t s = pv_sub(b, a);
+    fm_vec3_t s = v3_sub(b, a);
     float u = 0.0f;
-    if (pv_len2(s) > 1e-14f) {
+    if (v3_len2(s) > 1e-14f) {
         fm_vec3_t p0 = a, p1 = b;
-        float g0 = pv_dot(pv_sub(p0, cyl_closest_pt(p0, R, hh)), s);
-        float g1 = pv_dot(pv_sub(p1, cyl_closest_pt(p1, R, hh)), s);
+        float g0 = v3_dot(v3_sub(p0, cyl_closest_pt(p0, R, hh)), s);
+        float g1 = v3_dot(v3_sub(p1, cyl_closest_pt(p1, R, hh)), s);
         if (g0 >= 0.0f) u = 0.0f;
         else if (g1 <= 0.0f) u = 1.0f;
         else {
             float lo = 0.0f, hi = 1.0f;
             for (int it = 0; it < 26; it++) {
                 float mid = 0.5f * (lo + hi);
-                fm_vec3_t p = pv_madd(a, s, mid);
-                float g = pv_dot(pv_sub(p, cyl_closest_pt(p, R, hh)), s);
+                fm_vec3_t p = v3_madd(a, s, mid);
+                float g = v3_dot(v3_sub(p, cyl_closest_pt(p, R, hh)), s);
                 if (g < 0.0f) lo = mid;
                 else if (g > 0.0f) hi = mid;
                 else { lo = hi = mid; break; }
@@ -387,19 +387,19 @@ static float seg_cyl_closest(fm_vec3_t a, fm_vec3_t b, float R, float hh, fm_vec
             u = 0.5f * (lo + hi);
         }
     }
-    *ps = pv_madd(a, s, u);
+    *ps = v3_madd(a, s, u);
     *pc = cyl_closest_pt(*ps, R, hh);
-    return pv_len2(pv_sub(*ps, *pc));
+    return v3_len2(v3_sub(*ps, *pc));
 }
 
 /** Closest points of a world segment and the cylinder body, results in world frame. */
 static float seg_cyl_closest_world(const body_frame_t *f, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *pc, fm_vec3_t *n)
 {
-    fm_vec3_t la = q_rot_inv(&f->q, pv_sub(a, f->pos)), lb = q_rot_inv(&f->q, pv_sub(b, f->pos)), ps;
+    fm_vec3_t la = q_rot_inv(&f->q, v3_sub(a, f->pos)), lb = q_rot_inv(&f->q, v3_sub(b, f->pos)), ps;
     float d2 = seg_cyl_closest(la, lb, f->he.x, f->he.y, &ps, pc);
     /* the direction in the body frame: differences of world points lose it for tiny gaps */
-    *n = q_rot(&f->q, pv_unit_or(pv_sub(ps, *pc), pv_make(0.0f, 0.0f, 0.0f)));
-    *pc = pv_add(f->pos, q_rot(&f->q, *pc));
+    *n = q_rot(&f->q, v3_unit_or(v3_sub(ps, *pc), v3(0.0f, 0.0f, 0.0f)));
+    *pc = v3_add(f->pos, q_rot(&f->q, *pc));
     return d2;
 }
 
@@ -419,7 +419,7 @@ typedef struct {
     fm_vec3_t sweep;   /* the capsule swept over [0, sweep] */
 } ccd_capsule_t;
 
-static fm_vec3_t from_ccd(const ccd_vec3_t *v) { return pv_make(v->v[0], v->v[1], v->v[2]); }
+static fm_vec3_t from_ccd(const ccd_vec3_t *v) { return v3(v->v[0], v->v[1], v->v[2]); }
 static void to_ccd(ccd_vec3_t *out, fm_vec3_t v) { out->v[0] = v.x; out->v[1] = v.y; out->v[2] = v.z; }
 
 static void support_body(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out)
@@ -430,20 +430,20 @@ static void support_body(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *out
         /* Hard cap on libccd's uncapped loops: a point far behind the search direction
          * makes every MPR phase stop with "no intersection". */
         b->capped = true;
-        to_ccd(out, pv_scale(pv_unit_or(dw, pv_make(0.0f, 1.0f, 0.0f)), -1.0e6f));
+        to_ccd(out, v3_scale(v3_unit_or(dw, v3(0.0f, 1.0f, 0.0f)), -1.0e6f));
         return;
     }
     const body_frame_t *f = b->f;
     fm_vec3_t dl = q_rot_inv(&f->q, dw), p;
     if (f->shape == COLL_SHAPE_CYLINDER) {
         float l = sqrtf(dl.x * dl.x + dl.z * dl.z);
-        p = l > 1e-12f ? pv_make(f->he.x * dl.x / l, 0.0f, f->he.x * dl.z / l) : pv_make(0.0f, 0.0f, 0.0f);
+        p = l > 1e-12f ? v3(f->he.x * dl.x / l, 0.0f, f->he.x * dl.z / l) : v3(0.0f, 0.0f, 0.0f);
         p.y = dl.y >= 0.0f ? f->he.y : -f->he.y;
     } else { /* box */
-        p = pv_make(dl.x >= 0.0f ? f->he.x : -f->he.x, dl.y >= 0.0f ? f->he.y : -f->he.y,
+        p = v3(dl.x >= 0.0f ? f->he.x : -f->he.x, dl.y >= 0.0f ? f->he.y : -f->he.y,
                     dl.z >= 0.0f ? f->he.z : -f->he.z);
     }
-    to_ccd(out, pv_add(f->pos, q_rot(&f->q, p)));
+    to_ccd(out, v3_add(f->pos, q_rot(&f->q, p)));
 }
 
 static void center_body(const void *obj, ccd_vec3_t *out)
@@ -456,16 +456,16 @@ static void support_capsule(const void *obj, const ccd_vec3_t *dir, ccd_vec3_t *
 {
     const ccd_capsule_t *c = obj;
     fm_vec3_t dw = from_ccd(dir);
-    fm_vec3_t p = pv_dot(dw, c->a) >= pv_dot(dw, c->b) ? c->a : c->b;
-    p = pv_madd(p, pv_unit_or(dw, pv_make(0.0f, 0.0f, 0.0f)), c->r);
-    if (pv_dot(dw, c->sweep) > 0.0f) p = pv_add(p, c->sweep);
+    fm_vec3_t p = v3_dot(dw, c->a) >= v3_dot(dw, c->b) ? c->a : c->b;
+    p = v3_madd(p, v3_unit_or(dw, v3(0.0f, 0.0f, 0.0f)), c->r);
+    if (v3_dot(dw, c->sweep) > 0.0f) p = v3_add(p, c->sweep);
     to_ccd(out, p);
 }
 
 static void center_capsule(const void *obj, ccd_vec3_t *out)
 {
     const ccd_capsule_t *c = obj;
-    to_ccd(out, pv_madd(pv_scale(pv_add(c->a, c->b), 0.5f), c->sweep, 0.5f));
+    to_ccd(out, v3_madd(v3_scale(v3_add(c->a, c->b), 0.5f), c->sweep, 0.5f));
 }
 
 static void ccd_setup(ccd_t *ccd)
@@ -497,15 +497,15 @@ static bool ccd_penetration(const ccd_t *ccd, ccd_body_t *b, const ccd_capsule_t
     b->calls = 0;
     if (ccdMPRPenetration(b, c, ccd, &dep, &dir, &p) != 0 || b->capped) return false;
     *depth = dep;
-    *n = pv_unit_or(from_ccd(&dir), pv_make(0.0f, 0.0f, 0.0f));
+    *n = v3_unit_or(from_ccd(&dir), v3(0.0f, 0.0f, 0.0f));
     *pos = from_ccd(&p);
-    return pv_finite(*depth) && pv_len2(*n) > 0.5f;
+    return f_finite(*depth) && v3_len2(*n) > 0.5f;
 }
 
 /** Fallback push-out direction when MPR reports a touch without direction. */
 static fm_vec3_t centre_dir(const body_frame_t *f, const fm_vec3_t seg[2])
 {
-    return pv_unit_or(pv_sub(pv_scale(pv_add(seg[0], seg[1]), 0.5f), f->pos), pv_make(0.0f, 1.0f, 0.0f));
+    return v3_unit_or(v3_sub(v3_scale(v3_add(seg[0], seg[1]), 0.5f), f->pos), v3(0.0f, 1.0f, 0.0f));
 }
 
 static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, float tol, coll_prim_hit_t *hit)
@@ -519,7 +519,7 @@ static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, 
         float dist = sqrtf(d2);
         hit->t = 0.0f;
         hit->depth = r - dist;
-        hit->normal = pv_len2(nn) > 0.5f ? nn : centre_dir(f, seg);
+        hit->normal = v3_len2(nn) > 0.5f ? nn : centre_dir(f, seg);
         hit->point = pc;
         return true;
     }
@@ -527,7 +527,7 @@ static bool ccd_overlap(const body_frame_t *f, const fm_vec3_t seg[2], float r, 
     ccd_t ccd;
     ccd_setup(&ccd);
     ccd_body_t b = { f, 0, false };
-    ccd_capsule_t c = { seg[0], seg[1], r, pv_make(0.0f, 0.0f, 0.0f) };
+    ccd_capsule_t c = { seg[0], seg[1], r, v3(0.0f, 0.0f, 0.0f) };
     float depth;
     fm_vec3_t n, p;
     if (!ccd_intersect(&ccd, &b, &c)) return false;
@@ -552,16 +552,16 @@ void coll_set_body_sweep_mpr(bool force) { g_force_mpr = force; }
 static bool ccd_sweep_mpr(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm_vec3_t d, float t_max,
                           float tol, float *t_hit)
 {
-    float dl = sqrtf(pv_len2(d)) * t_max;
+    float dl = sqrtf(v3_len2(d)) * t_max;
     ccd_t ccd;
     ccd_setup(&ccd);
     ccd_body_t b = { f, 0, false };
     /* the motion must take the capsule deeper than the tolerance somewhere */
-    ccd_capsule_t c = { seg[0], seg[1], r - tol, pv_scale(d, t_max) };
+    ccd_capsule_t c = { seg[0], seg[1], r - tol, v3_scale(d, t_max) };
     if (!ccd_intersect(&ccd, &b, &c)) return false;
     c.r = r;
     float lo = 0.0f, hi = t_max;
-    c.sweep = pv_make(0.0f, 0.0f, 0.0f);
+    c.sweep = v3(0.0f, 0.0f, 0.0f);
     if (ccd_intersect(&ccd, &b, &c)) {
         *t_hit = 0.0f;
         return true;
@@ -569,7 +569,7 @@ static bool ccd_sweep_mpr(const body_frame_t *f, const fm_vec3_t seg[2], float r
     /* to 2e-5 m along the motion (the normal comes from exact closest points) */
     for (int it = 0; it < 40 && (hi - lo) * dl > 2e-5f * t_max; it++) {
         float mid = 0.5f * (lo + hi);
-        c.sweep = pv_scale(d, mid);
+        c.sweep = v3_scale(d, mid);
         if (ccd_intersect(&ccd, &b, &c)) hi = mid; else lo = mid;
     }
     *t_hit = lo;
@@ -580,8 +580,8 @@ static bool ccd_sweep_mpr(const body_frame_t *f, const fm_vec3_t seg[2], float r
 static float cyl_dist_at(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t d, float t,
                          fm_vec3_t *n, fm_vec3_t *p)
 {
-    float d2 = seg_cyl_closest_world(f, pv_madd(seg[0], d, t), pv_madd(seg[1], d, t), p, n);
-    if (!(pv_len2(*n) > 0.5f)) *n = centre_dir(f, seg);
+    float d2 = seg_cyl_closest_world(f, v3_madd(seg[0], d, t), v3_madd(seg[1], d, t), p, n);
+    if (!(v3_len2(*n) > 0.5f)) *n = centre_dir(f, seg);
     return sqrtf(d2);
 }
 
@@ -594,13 +594,13 @@ static float cyl_dist_at(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_
 static int cyl_newton(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t d, float target, float t0,
                       float t_max, float *t_out, fm_vec3_t *n, fm_vec3_t *p)
 {
-    float t = t0, dl = sqrtf(pv_len2(d));
+    float t = t0, dl = sqrtf(v3_len2(d));
     const float eps = 2e-7f * (1.0f + target);
     for (int it = 0; it < 24; it++) {
         float dist = cyl_dist_at(f, seg, d, t, n, p);
         float gap = dist - target;
         if (gap <= eps && gap >= -eps) { *t_out = t; return 1; }
-        float slope = -pv_dot(*n, d);
+        float slope = -v3_dot(*n, d);
         if (!(slope > 0.0f)) return gap > 0.0f ? 0 : -1; /* at its minimum: it only grows from here */
         /* A rounded slope can overshoot a long step: shorten long steps a little, and a
          * step that did land inside (gap < 0) steps back onto the left of the root. */
@@ -618,7 +618,7 @@ static bool ccd_sweep(const body_frame_t *f, const fm_vec3_t seg[2], float r, fm
                       float tol, coll_prim_hit_t *hit)
 {
     if (ccd_overlap(f, seg, r, tol, hit)) return true;
-    if (!(pv_len2(d) * t_max * t_max > 1e-18f)) return false;
+    if (!(v3_len2(d) * t_max * t_max > 1e-18f)) return false;
     float rin = r - tol, t = 0.0f;
     fm_vec3_t n, p;
     float dist = cyl_dist_at(f, seg, d, 0.0f, &n, &p);
@@ -653,11 +653,11 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
                              float t_max, coll_prim_hit_t *hit)
 {
     body_frame_t f;
-    if (!hit || !disp || !seg_ok(seg, r) || !pv_sane3(*disp) || !(t_max >= 0.0f) || !pv_sane(t_max) ||
-        !pv_sane3(pv_scale(*disp, t_max)))
+    if (!hit || !disp || !seg_ok(seg, r) || !prim_sane3(*disp) || !(t_max >= 0.0f) || !prim_sane(t_max) ||
+        !prim_sane3(v3_scale(*disp, t_max)))
         return false;
     if (!body_setup(body, body_pos_rel, &f)) return false;
-    const float tol = pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     switch (f.shape) {
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
@@ -666,19 +666,19 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
         /* Cheap exact reject first: the segments farther apart at the start than the two
          * radii plus the whole motion cannot meet (the general sweep below costs ~5k). */
         fm_vec3_t cp, cq;
-        float u, v, reach = r + f.he.x + sqrtf(pv_dot(*disp, *disp)) * t_max;
+        float u, v, reach = r + f.he.x + sqrtf(v3_dot(*disp, *disp)) * t_max;
         if (coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq) > reach * reach * 1.0001f + 1e-8f)
             return false;
         if (!coll_capsule_triangle_sweep(seg, r + f.he.x, disp, ax, t_max, hit)) return false;
-        hit->point = pv_madd(hit->point, hit->normal, f.he.x);
+        hit->point = v3_madd(hit->point, hit->normal, f.he.x);
         return true;
     }
     case COLL_SHAPE_BOX: {
-        fm_vec3_t ls[2] = { q_rot_inv(&f.q, pv_sub(seg[0], f.pos)), q_rot_inv(&f.q, pv_sub(seg[1], f.pos)) };
+        fm_vec3_t ls[2] = { q_rot_inv(&f.q, v3_sub(seg[0], f.pos)), q_rot_inv(&f.q, v3_sub(seg[1], f.pos)) };
         fm_vec3_t ld = q_rot_inv(&f.q, *disp);
         if (!box_sweep_local(ls, r, ld, f.he, t_max, tol, hit)) return false;
         hit->normal = q_rot(&f.q, hit->normal);
-        hit->point = pv_add(f.pos, q_rot(&f.q, hit->point));
+        hit->point = v3_add(f.pos, q_rot(&f.q, hit->point));
         return true;
     }
     case COLL_SHAPE_CYLINDER:
@@ -693,7 +693,7 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
     body_frame_t f;
     if (!hit || !seg_ok(seg, r)) return false;
     if (!body_setup(body, body_pos_rel, &f)) return false;
-    const float tol = pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     switch (f.shape) {
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
@@ -704,28 +704,28 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
         fm_vec3_t cp, cq;
         float u, v, reach = r + f.he.x;
         float d2 = coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq);
-        float rin = reach - pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * reach);
+        float rin = reach - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * reach);
         if (!(d2 < rin * rin)) return false;
         float d = sqrtf(d2);
         if (!(d > 1e-6f)) { /* the axes cross: the general path picks a careful push-out */
             if (!coll_capsule_triangle_overlap(seg, reach, ax, hit)) return false;
-            hit->point = pv_madd(hit->point, hit->normal, f.he.x);
+            hit->point = v3_madd(hit->point, hit->normal, f.he.x);
             return true;
         }
-        fm_vec3_t n = pv_scale(pv_sub(cp, cq), 1.0f / d);
+        fm_vec3_t n = v3_scale(v3_sub(cp, cq), 1.0f / d);
         hit->t = 0.0f;
         hit->depth = reach - d;
         hit->normal = n;
-        hit->point = pv_madd(cq, n, f.he.x);
+        hit->point = v3_madd(cq, n, f.he.x);
         return true;
-        hit->point = pv_madd(hit->point, hit->normal, f.he.x);
+        hit->point = v3_madd(hit->point, hit->normal, f.he.x);
         return true;
     }
     case COLL_SHAPE_BOX: {
-        fm_vec3_t ls[2] = { q_rot_inv(&f.q, pv_sub(seg[0], f.pos)), q_rot_inv(&f.q, pv_sub(seg[1], f.pos)) };
+        fm_vec3_t ls[2] = { q_rot_inv(&f.q, v3_sub(seg[0], f.pos)), q_rot_inv(&f.q, v3_sub(seg[1], f.pos)) };
         if (!box_overlap_local(ls, r, f.he, tol, hit)) return false;
         hit->normal = q_rot(&f.q, hit->normal);
-        hit->point = pv_add(f.pos, q_rot(&f.q, hit->point));
+        hit->point = v3_add(f.pos, q_rot(&f.q, hit->point));
         return true;
     }
     case COLL_SHAPE_CYLINDER:

@@ -31,15 +31,15 @@
 enum { ROUND_MISS, ROUND_INSIDE, ROUND_ENTERS };
 static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 {
-    float cc = pv_dot(m, m) - r * r;
+    float cc = v3_dot(m, m) - r * r;
     if (cc <= 0.0f) return ROUND_INSIDE;
-    float b = pv_dot(m, d);
+    float b = v3_dot(m, d);
     if (b >= 0.0f) return ROUND_MISS;
-    float a = pv_dot(d, d);
+    float a = v3_dot(d, d);
     /* b^2 - a*cc cancels badly for a far origin: use a*(r^2 - dmin^2), dmin from the
      * closest point of the line to the centre. */
-    fm_vec3_t w = pv_madd(m, d, -b / a);
-    float disc = a * (r * r - pv_dot(w, w));
+    fm_vec3_t w = v3_madd(m, d, -b / a);
+    float disc = a * (r * r - v3_dot(w, w));
     if (!(disc >= 0.0f)) return ROUND_MISS;
     *s = cc / (-b + sqrtf(disc)); /* smaller root without cancellation */
     return *s <= s_max ? ROUND_ENTERS : ROUND_MISS;
@@ -48,12 +48,12 @@ static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 /* Outward normal at m + d s, or away from the motion when that point is the centre. */
 static fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
 {
-    return pv_unit_or(pv_madd(m, d, s), pv_unit_or(pv_neg(d), pv_make(0.0f, 1.0f, 0.0f)));
+    return v3_unit_or(v3_madd(m, d, s), v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f)));
 }
 
 bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
 {
-    fm_vec3_t m = pv_sub(o, c);
+    fm_vec3_t m = v3_sub(o, c);
     float s = 0.0f;
     int e = round_entry(m, d, r, s_max, &s);
     if (e == ROUND_MISS) return false;
@@ -65,13 +65,13 @@ bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float 
 bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
                             prim_ray_t *out)
 {
-    fm_vec3_t ax = pv_sub(c1, c0);
-    float ss = pv_dot(ax, ax);
+    fm_vec3_t ax = v3_sub(c1, c0);
+    float ss = v3_dot(ax, ax);
     if (!(ss > 1e-20f)) return false;
-    fm_vec3_t m = pv_sub(o, c0);
-    float md = pv_dot(m, ax), dd = pv_dot(d, ax);
-    fm_vec3_t mp = pv_madd(m, ax, -md / ss);   /* components perpendicular to the axis */
-    fm_vec3_t dp = pv_madd(d, ax, -dd / ss);
+    fm_vec3_t m = v3_sub(o, c0);
+    float md = v3_dot(m, ax), dd = v3_dot(d, ax);
+    fm_vec3_t mp = v3_madd(m, ax, -md / ss);   /* components perpendicular to the axis */
+    fm_vec3_t dp = v3_madd(d, ax, -dd / ss);
     float s = 0.0f;
     int e = round_entry(mp, dp, r, s_max, &s);
     if (e == ROUND_MISS) return false;
@@ -97,32 +97,32 @@ float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec
                            float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
     const float eps = 1e-20f;
-    fm_vec3_t d1 = pv_sub(p1, p0), d2 = pv_sub(q1, q0), w = pv_sub(p0, q0);
-    float a = pv_dot(d1, d1), e = pv_dot(d2, d2), f = pv_dot(d2, w);
+    fm_vec3_t d1 = v3_sub(p1, p0), d2 = v3_sub(q1, q0), w = v3_sub(p0, q0);
+    float a = v3_dot(d1, d1), e = v3_dot(d2, d2), f = v3_dot(d2, w);
     float s, t;
     if (a <= eps && e <= eps) {
         s = 0.0f; t = 0.0f;
     } else if (a <= eps) {
-        s = 0.0f; t = pv_clamp01(f / e);
+        s = 0.0f; t = f_clamp01(f / e);
     } else {
-        float c = pv_dot(d1, w);
+        float c = v3_dot(d1, w);
         if (e <= eps) {
-            t = 0.0f; s = pv_clamp01(-c / a);
+            t = 0.0f; s = f_clamp01(-c / a);
         } else {
-            float b = pv_dot(d1, d2);
-            float denom = pv_len2(pv_cross(d1, d2)); /* = a e - b^2 without cancellation */
-            s = denom > 1e-12f * a * e ? pv_clamp01((b * f - c * e) / denom) : 0.0f;
+            float b = v3_dot(d1, d2);
+            float denom = v3_len2(v3_cross(d1, d2)); /* = a e - b^2 without cancellation */
+            s = denom > 1e-12f * a * e ? f_clamp01((b * f - c * e) / denom) : 0.0f;
             t = (b * s + f) / e;
-            if (t < 0.0f) { t = 0.0f; s = pv_clamp01(-c / a); }
-            else if (t > 1.0f) { t = 1.0f; s = pv_clamp01((b - c) / a); }
+            if (t < 0.0f) { t = 0.0f; s = f_clamp01(-c / a); }
+            else if (t > 1.0f) { t = 1.0f; s = f_clamp01((b - c) / a); }
         }
     }
-    fm_vec3_t x = pv_madd(p0, d1, s), y = pv_madd(q0, d2, t);
+    fm_vec3_t x = v3_madd(p0, d1, s), y = v3_madd(q0, d2, t);
     if (u_out) *u_out = s;
     if (v_out) *v_out = t;
     if (cp) *cp = x;
     if (cq) *cq = y;
-    return pv_len2(pv_sub(x, y));
+    return v3_len2(v3_sub(x, y));
 }
 
 /* ---------------------------------------------------------------- triangle helpers */
@@ -149,7 +149,7 @@ static float diff_of_products(float a, float b, float c, float d)
 
 static fm_vec3_t cross_accurate(fm_vec3_t a, fm_vec3_t b)
 {
-    return pv_make(diff_of_products(a.y, b.z, a.z, b.y), diff_of_products(a.z, b.x, a.x, b.z),
+    return v3(diff_of_products(a.y, b.z, a.z, b.y), diff_of_products(a.z, b.x, a.x, b.z),
                    diff_of_products(a.x, b.y, a.y, b.x));
 }
 
@@ -164,30 +164,30 @@ typedef struct {
 static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
 {
     for (int i = 0; i < 3; i++) t->v[i] = tri[i];
-    for (int i = 0; i < 3; i++) t->e[i] = pv_sub(t->v[(i + 1) % 3], t->v[i]);
+    for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
     /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
-    float l0 = pv_len2(t->e[0]), l1 = pv_len2(t->e[1]), l2 = pv_len2(t->e[2]);
+    float l0 = v3_len2(t->e[0]), l1 = v3_len2(t->e[1]), l2 = v3_len2(t->e[2]);
     int ia, ib;
     if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; }
     else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; }
     else                           { ia = 0; ib = 1; }
-    t->nraw = pv_cross(t->e[ia], t->e[ib]);
-    float nn = pv_len2(t->nraw);
+    t->nraw = v3_cross(t->e[ia], t->e[ib]);
+    float nn = v3_len2(t->nraw);
     /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
-    if (nn < 1e-4f * pv_len2(t->e[ia]) * pv_len2(t->e[ib])) {
+    if (nn < 1e-4f * v3_len2(t->e[ia]) * v3_len2(t->e[ib])) {
         t->nraw = cross_accurate(t->e[ia], t->e[ib]);
-        nn = pv_len2(t->nraw);
+        nn = v3_len2(t->nraw);
     }
-    float lmax = pv_maxf(l0, pv_maxf(l1, l2));
-    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && pv_finite(nn);
-    t->n = t->has_face ? pv_scale(t->nraw, 1.0f / sqrtf(nn)) : pv_make(0.0f, 0.0f, 0.0f);
+    float lmax = f_max(l0, f_max(l1, l2));
+    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
+    t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
 
 /** Point q (on or near the plane) inside the closed triangle. */
 static bool tri_contains(const tri_t *t, fm_vec3_t q)
 {
     for (int i = 0; i < 3; i++)
-        if (pv_dot(pv_cross(t->e[i], pv_sub(q, t->v[i])), t->nraw) < 0.0f) return false;
+        if (v3_dot(v3_cross(t->e[i], v3_sub(q, t->v[i])), t->nraw) < 0.0f) return false;
     return true;
 }
 
@@ -198,27 +198,27 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     float best = 3.0e38f;
     *edge = -1;
     if (t->has_face) {
-        float ha = pv_dot(t->n, pv_sub(a, t->v[0]));
-        float hb = pv_dot(t->n, pv_sub(b, t->v[0]));
+        float ha = v3_dot(t->n, v3_sub(a, t->v[0]));
+        float hb = v3_dot(t->n, v3_sub(b, t->v[0]));
         if ((ha <= 0.0f && hb >= 0.0f) || (ha >= 0.0f && hb <= 0.0f)) {
             float den = ha - hb;
-            fm_vec3_t x = den != 0.0f ? pv_madd(a, pv_sub(b, a), ha / den) : a;
-            x = pv_madd(x, t->n, -pv_dot(t->n, pv_sub(x, t->v[0])));
+            fm_vec3_t x = den != 0.0f ? v3_madd(a, v3_sub(b, a), ha / den) : a;
+            x = v3_madd(x, t->n, -v3_dot(t->n, v3_sub(x, t->v[0])));
             if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
         }
-        fm_vec3_t q = pv_madd(a, t->n, -ha);
+        fm_vec3_t q = v3_madd(a, t->n, -ha);
         if (tri_contains(t, q)) { best = ha * ha; *ps = a; *pt = q; }
-        q = pv_madd(b, t->n, -hb);
+        q = v3_madd(b, t->n, -hb);
         if (hb * hb < best && tri_contains(t, q)) { best = hb * hb; *ps = b; *pt = q; }
     }
     if (a.x == b.x && a.y == b.y && a.z == b.z) {
         /* A point (a sphere's centre): the closest point of each edge by projection, far
          * cheaper than the segment-segment closest pair it would otherwise reduce to. */
         for (int i = 0; i < 3; i++) {
-            float ee = pv_len2(t->e[i]);
-            float v = ee > 0.0f ? pv_clamp01(pv_dot(pv_sub(a, t->v[i]), t->e[i]) / ee) : 0.0f;
-            fm_vec3_t cq = pv_madd(t->v[i], t->e[i], v);
-            float d2 = pv_len2(pv_sub(a, cq));
+            float ee = v3_len2(t->e[i]);
+            float v = ee > 0.0f ? f_clamp01(v3_dot(v3_sub(a, t->v[i]), t->e[i]) / ee) : 0.0f;
+            fm_vec3_t cq = v3_madd(t->v[i], t->e[i], v);
+            float d2 = v3_len2(v3_sub(a, cq));
             if (d2 < best) { best = d2; *ps = a; *pt = cq; *edge = i; *eu = 0.0f; *ev = v; }
         }
         return best;
@@ -248,16 +248,16 @@ static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t
 static fm_vec3_t pair_normal(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t ps, fm_vec3_t pt,
                              int edge, float u, float v, fm_vec3_t fallback)
 {
-    fm_vec3_t diff = pv_sub(ps, pt);
-    fm_vec3_t n = pv_unit_or(diff, fallback);
+    fm_vec3_t diff = v3_sub(ps, pt);
+    fm_vec3_t n = v3_unit_or(diff, fallback);
     if (edge < 0 || !(u > 1e-4f && u < 1.0f - 1e-4f) || !(v > 1e-4f && v < 1.0f - 1e-4f)) return n;
-    fm_vec3_t s = pv_sub(b, a), e = t->e[edge];
-    fm_vec3_t m = pv_cross(s, e);
-    float mm = pv_len2(m);
-    if (!(mm > 1e-4f * pv_len2(s) * pv_len2(e))) return n;  /* near-parallel: the difference is better */
-    m = pv_scale(m, 1.0f / sqrtf(mm));
-    if (pv_dot(m, diff) < 0.0f) m = pv_neg(m);
-    return pv_dot(m, n) > 0.9999f ? m : n;
+    fm_vec3_t s = v3_sub(b, a), e = t->e[edge];
+    fm_vec3_t m = v3_cross(s, e);
+    float mm = v3_len2(m);
+    if (!(mm > 1e-4f * v3_len2(s) * v3_len2(e))) return n;  /* near-parallel: the difference is better */
+    m = v3_scale(m, 1.0f / sqrtf(mm));
+    if (v3_dot(m, diff) < 0.0f) m = v3_neg(m);
+    return v3_dot(m, n) > 0.9999f ? m : n;
 }
 
 float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
@@ -275,7 +275,7 @@ static void overlap_result(const tri_t *t, fm_vec3_t a, fm_vec3_t b, float r, fl
     hit->t = 0.0f;
     hit->point = pt;
     if (dist > 1e-6f) {
-        hit->normal = pv_unit_or(pv_sub(ps, pt), t->has_face ? t->n : pv_make(0.0f, 1.0f, 0.0f));
+        hit->normal = v3_unit_or(v3_sub(ps, pt), t->has_face ? t->n : v3(0.0f, 1.0f, 0.0f));
         hit->depth = r - dist;
         return;
     }
@@ -283,36 +283,36 @@ static void overlap_result(const tri_t *t, fm_vec3_t a, fm_vec3_t b, float r, fl
         /* A segment-like "triangle" (used for capsule and sphere bodies) crossing the
          * capsule's segment: push out perpendicular to both, away from the collider. */
         fm_vec3_t e = t->e[0];
-        if (pv_len2(t->e[1]) > pv_len2(e)) e = t->e[1];
-        if (pv_len2(t->e[2]) > pv_len2(e)) e = t->e[2];
-        fm_vec3_t s = pv_sub(b, a);
-        fm_vec3_t away = pv_sub(pv_scale(pv_add(a, b), 0.5f),
-                                pv_scale(pv_add(pv_add(t->v[0], t->v[1]), t->v[2]), 1.0f / 3.0f));
-        fm_vec3_t n = pv_cross(e, s);
-        if (!(pv_len2(n) > 1e-12f * pv_len2(e) * pv_len2(s))) {
+        if (v3_len2(t->e[1]) > v3_len2(e)) e = t->e[1];
+        if (v3_len2(t->e[2]) > v3_len2(e)) e = t->e[2];
+        fm_vec3_t s = v3_sub(b, a);
+        fm_vec3_t away = v3_sub(v3_scale(v3_add(a, b), 0.5f),
+                                v3_scale(v3_add(v3_add(t->v[0], t->v[1]), t->v[2]), 1.0f / 3.0f));
+        fm_vec3_t n = v3_cross(e, s);
+        if (!(v3_len2(n) > 1e-12f * v3_len2(e) * v3_len2(s))) {
             /* parallel or point-like: the part of `away` perpendicular to the longer one */
-            fm_vec3_t ax = pv_len2(s) > pv_len2(e) ? s : e;
-            float l2 = pv_len2(ax);
-            n = l2 > 1e-20f ? pv_madd(away, ax, -pv_dot(away, ax) / l2) : away;
-            if (!(pv_len2(n) > 1e-20f)) { /* any perpendicular of ax */
-                n = fabsf(ax.x) < 0.6f * sqrtf(l2) ? pv_cross(ax, pv_make(1.0f, 0.0f, 0.0f))
-                                                   : pv_cross(ax, pv_make(0.0f, 1.0f, 0.0f));
+            fm_vec3_t ax = v3_len2(s) > v3_len2(e) ? s : e;
+            float l2 = v3_len2(ax);
+            n = l2 > 1e-20f ? v3_madd(away, ax, -v3_dot(away, ax) / l2) : away;
+            if (!(v3_len2(n) > 1e-20f)) { /* any perpendicular of ax */
+                n = fabsf(ax.x) < 0.6f * sqrtf(l2) ? v3_cross(ax, v3(1.0f, 0.0f, 0.0f))
+                                                   : v3_cross(ax, v3(0.0f, 1.0f, 0.0f));
             }
         }
-        if (pv_dot(n, away) < 0.0f) n = pv_neg(n);
-        hit->normal = pv_unit_or(n, pv_make(0.0f, 1.0f, 0.0f));
+        if (v3_dot(n, away) < 0.0f) n = v3_neg(n);
+        hit->normal = v3_unit_or(n, v3(0.0f, 1.0f, 0.0f));
         hit->depth = r - dist;
         return;
     }
     /* The segment touches or crosses the face: push along the face normal to the side of
      * the segment's centre, far enough that the endpoint behind the plane clears it by r. */
-    float ha = pv_dot(t->n, pv_sub(a, t->v[0]));
-    float hb = pv_dot(t->n, pv_sub(b, t->v[0]));
+    float ha = v3_dot(t->n, v3_sub(a, t->v[0]));
+    float hb = v3_dot(t->n, v3_sub(b, t->v[0]));
     float hc = ha + hb;
     float sig = hc > 0.0f ? 1.0f : (hc < 0.0f ? -1.0f : (ha >= hb ? 1.0f : -1.0f));
     if (ha == hb) sig = 1.0f;
-    hit->normal = pv_scale(t->n, sig);
-    hit->depth = r - pv_minf(sig * ha, sig * hb);
+    hit->normal = v3_scale(t->n, sig);
+    hit->depth = r - f_min(sig * ha, sig * hb);
 }
 
 /* ---------------------------------------------------------------- sweep */
@@ -357,38 +357,38 @@ static inline bool plane_approach(float h, float dn, float r, float t_max, const
 static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, feat_hit_t *best)
 {
     const tri_t *t = &c->tri;
-    float h = pv_dot(t->n, pv_sub(p, t->v[0]));
-    float dn = pv_dot(t->n, c->d);
+    float h = v3_dot(t->n, v3_sub(p, t->v[0]));
+    float dn = v3_dot(t->n, c->d);
     float tt, sig;
     if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
-    fm_vec3_t q = pv_madd(pv_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
+    fm_vec3_t q = v3_madd(v3_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
     if (!tri_contains(t, q)) return;
-    take(best, tt, pv_scale(t->n, sig), q);
+    take(best, tt, v3_scale(t->n, sig), q);
 }
 
 /** Interior of the inner segment against the interior of triangle edge i. */
 static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, feat_hit_t *best)
 {
     fm_vec3_t e = c->tri.e[i], e0 = c->tri.v[i];
-    fm_vec3_t m = pv_cross(c->s, e);
-    float mm = pv_dot(m, m);
-    if (!(mm > 1e-10f * c->ss * pv_dot(e, e)) || !(mm > 1e-30f)) return; /* parallel: cylinders cover it */
-    fm_vec3_t mu = pv_scale(m, 1.0f / sqrtf(mm));
-    float h = pv_dot(mu, pv_sub(c->a, e0));
-    float dn = pv_dot(mu, c->d);
+    fm_vec3_t m = v3_cross(c->s, e);
+    float mm = v3_dot(m, m);
+    if (!(mm > 1e-10f * c->ss * v3_dot(e, e)) || !(mm > 1e-30f)) return; /* parallel: cylinders cover it */
+    fm_vec3_t mu = v3_scale(m, 1.0f / sqrtf(mm));
+    float h = v3_dot(mu, v3_sub(c->a, e0));
+    float dn = v3_dot(mu, c->d);
     float tt, sig;
     if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
-    fm_vec3_t w = pv_sub(e0, pv_madd(c->a, c->d, tt));
-    float u = pv_dot(pv_cross(w, e), m) / mm;
-    float v = pv_dot(pv_cross(w, c->s), m) / mm;
+    fm_vec3_t w = v3_sub(e0, v3_madd(c->a, c->d, tt));
+    float u = v3_dot(v3_cross(w, e), m) / mm;
+    float v = v3_dot(v3_cross(w, c->s), m) / mm;
     if (u < 0.0f || u > 1.0f || v < 0.0f || v > 1.0f) return;
     /* Nearly parallel lines leave mu (and so tt) poorly conditioned: never accept a time
      * at which the two segments are still clearly apart (the cylinders cover the rest). */
-    fm_vec3_t at = pv_madd(c->a, c->d, tt);
-    float sd2 = coll_prim_closest_seg_seg(at, pv_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
+    fm_vec3_t at = v3_madd(c->a, c->d, tt);
+    float sd2 = coll_prim_closest_seg_seg(at, v3_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
     float rr = r + 1e-5f * (1.0f + r);
     if (sd2 > rr * rr) return;
-    take(best, tt, pv_scale(mu, sig), pv_madd(e0, e, v));
+    take(best, tt, v3_scale(mu, sig), v3_madd(e0, e, v));
 }
 
 /** Earliest entry of t*d into K(r) over [0, t_max]; any = stop at the first piece found. */
@@ -407,18 +407,18 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
         for (int i = 0; i < 3; i++) {
             float lim = best->hit ? best->t : t_max;
             if (coll_prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
-                take(best, h.s, h.n, pv_madd(pv_madd(ends[k], c->d, h.s), h.n, -r));
+                take(best, h.s, h.n, v3_madd(v3_madd(ends[k], c->d, h.s), h.n, -r));
                 if (any) return true;
             }
         }
     }
-    fm_vec3_t nd = pv_neg(c->d);
+    fm_vec3_t nd = v3_neg(c->d);
     for (int i = 0; i < 3; i++) {
         float lim = best->hit ? best->t : t_max;
         bool got = c->sphere ? coll_prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
                              : coll_prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
         if (got) {
-            take(best, h.s, pv_neg(h.n), t->v[i]);
+            take(best, h.s, v3_neg(h.n), t->v[i]);
             if (any) return true;
         }
     }
@@ -435,31 +435,31 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
                        float t_max, bool confirm, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !pv_sane(r) || !(t_max >= 0.0f) || !pv_sane(t_max)) return false;
-    if (!pv_sane3(seg[0]) || !pv_sane3(seg[1]) || !pv_sane3(*disp) ||
-        !pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
-    if (!pv_sane3(pv_scale(*disp, t_max))) return false;
+    if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp) ||
+        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!prim_sane3(v3_scale(*disp, t_max))) return false;
 
     sweep_ctx_t c;
     tri_setup(&c.tri, tri);
     c.a = seg[0]; c.b = seg[1]; c.d = *disp;
-    c.s = pv_sub(c.b, c.a);
-    c.ss = pv_dot(c.s, c.s);
+    c.s = v3_sub(c.b, c.a);
+    c.ss = v3_dot(c.s, c.s);
     c.sphere = !(c.ss > 1e-14f);
-    if (c.sphere) { c.a = pv_madd(c.a, c.s, 0.5f); c.b = c.a; c.s = pv_make(0.0f, 0.0f, 0.0f); c.ss = 0.0f; }
-    bool moving = pv_dot(c.d, c.d) * t_max * t_max > 1e-24f;
+    if (c.sphere) { c.a = v3_madd(c.a, c.s, 0.5f); c.b = c.a; c.s = v3(0.0f, 0.0f, 0.0f); c.ss = 0.0f; }
+    bool moving = v3_dot(c.d, c.d) * t_max * t_max > 1e-24f;
 
     /* Cull: both endpoints beyond the same offset plane over the whole motion. */
     if (c.tri.has_face) {
-        float ha = pv_dot(c.tri.n, pv_sub(c.a, c.tri.v[0]));
-        float hb = pv_dot(c.tri.n, pv_sub(c.b, c.tri.v[0]));
-        float dd = moving ? pv_dot(c.tri.n, c.d) * t_max : 0.0f;
-        float lo = pv_minf(pv_minf(ha, hb), pv_minf(ha + dd, hb + dd));
-        float hi = pv_maxf(pv_maxf(ha, hb), pv_maxf(ha + dd, hb + dd));
+        float ha = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
+        float hb = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
+        float dd = moving ? v3_dot(c.tri.n, c.d) * t_max : 0.0f;
+        float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
+        float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
     }
 
-    const float tol = pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&c.tri, c.a, c.b, &ps, &pt);
     float rin = r - tol;
@@ -473,7 +473,7 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     if (d2 <= r * r) {
         best.hit = true;
         best.t = 0.0f;
-        best.n = pv_unit_or(pv_sub(ps, pt), c.tri.has_face ? c.tri.n : pv_make(0.0f, 1.0f, 0.0f));
+        best.n = v3_unit_or(v3_sub(ps, pt), c.tri.has_face ? c.tri.n : v3(0.0f, 1.0f, 0.0f));
         best.p = pt;
     } else if (!sweep_features(&c, r, t_max, false, &best)) {
         return false;
@@ -487,8 +487,8 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     if (best.t > 0.0f) {
         /* The pieces meet tangentially, so which one won is decided by rounding near a
          * junction; the closest points at the contact time give the normal smoothly. */
-        fm_vec3_t off = pv_scale(c.d, best.t);
-        fm_vec3_t ha = pv_add(c.a, off), hb = pv_add(c.b, off);
+        fm_vec3_t off = v3_scale(c.d, best.t);
+        fm_vec3_t ha = v3_add(c.a, off), hb = v3_add(c.b, off);
         int edge;
         float eu, ev;
         float d2h = seg_tri_closest_ex(&c.tri, ha, hb, &ps, &pt, &edge, &eu, &ev);
@@ -514,8 +514,8 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     /* Count the contact only when the motion goes deeper than the touch tolerance: first
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
-        fm_vec3_t off = pv_scale(c.d, t_max);
-        float d2e = seg_tri_closest(&c.tri, pv_add(c.a, off), pv_add(c.b, off), &ps, &pt);
+        fm_vec3_t off = v3_scale(c.d, t_max);
+        float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
         if (!(d2e < rin * rin)) {
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
@@ -534,14 +534,14 @@ bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec
                                    coll_prim_hit_t *hit)
 {
     if (!seg || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !pv_sane(r)) return false;
-    if (!pv_sane3(seg[0]) || !pv_sane3(seg[1]) ||
-        !pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
+    if (!(r >= 0.0f) || !prim_sane(r)) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) ||
+        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
     tri_t t;
     tri_setup(&t, tri);
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&t, seg[0], seg[1], &ps, &pt);
-    float rin = r - pv_minf(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     if (!(d2 < rin * rin)) return false;
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
     return true;
@@ -559,8 +559,8 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
                        float s_max, coll_prim_hit_t *hit)
 {
     if (!o || !d || !tri || !hit) return false;
-    if (!pv_sane3(*o) || !pv_sane3(*d) || !(s_max >= 0.0f)) return false;
-    if (!pv_sane3(tri[0]) || !pv_sane3(tri[1]) || !pv_sane3(tri[2])) return false;
+    if (!prim_sane3(*o) || !prim_sane3(*d) || !(s_max >= 0.0f)) return false;
+    if (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
     int kz = 0;
     float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
     if (ay > ax && ay >= az) kz = 1;
@@ -571,7 +571,7 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     if (dz == 0.0f) return false; /* zero direction */
     float sx = d->v[kx] / dz, sy = d->v[ky] / dz, sz = 1.0f / dz;
 
-    fm_vec3_t A = pv_sub(tri[0], *o), B = pv_sub(tri[1], *o), C = pv_sub(tri[2], *o);
+    fm_vec3_t A = v3_sub(tri[0], *o), B = v3_sub(tri[1], *o), C = v3_sub(tri[2], *o);
     float Ax = A.v[kx] - sx * A.v[kz], Ay = A.v[ky] - sy * A.v[kz];
     float Bx = B.v[kx] - sx * B.v[kz], By = B.v[ky] - sy * B.v[kz];
     float Cx = C.v[kx] - sx * C.v[kz], Cy = C.v[ky] - sy * C.v[kz];
@@ -580,7 +580,7 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     float W = Bx * Ay - By * Ax;
     if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
     float det = U + V + W;
-    if (det == 0.0f || !pv_finite(det)) return false;
+    if (det == 0.0f || !f_finite(det)) return false;
     (void)sz;
     /* The distance from the plane through the vertex shared by the two shortest edges:
      * better conditioned than the sheared-z interpolation for slivers. */
@@ -588,21 +588,21 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     tri_setup(&t, tri);
     int apex = 0;
     {
-        float l0 = pv_len2(t.e[0]), l1 = pv_len2(t.e[1]), l2 = pv_len2(t.e[2]);
+        float l0 = v3_len2(t.e[0]), l1 = v3_len2(t.e[1]), l2 = v3_len2(t.e[2]);
         if (l0 >= l1 && l0 >= l2) apex = 2;
         else if (l1 >= l0 && l1 >= l2) apex = 0;
         else apex = 1;
     }
-    float dn = pv_dot(t.nraw, *d);
+    float dn = v3_dot(t.nraw, *d);
     if (dn == 0.0f) return false;
-    float s = pv_dot(t.nraw, pv_sub(tri[apex], *o)) / dn;
-    if (!(s >= 0.0f) || !(s <= s_max) || !pv_finite(s)) return false;
+    float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;
+    if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
 
-    fm_vec3_t n = pv_unit_or(t.nraw, pv_unit_or(pv_neg(*d), pv_make(0.0f, 1.0f, 0.0f)));
-    if (pv_dot(n, *d) > 0.0f) n = pv_neg(n);
+    fm_vec3_t n = v3_unit_or(t.nraw, v3_unit_or(v3_neg(*d), v3(0.0f, 1.0f, 0.0f)));
+    if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
     hit->t = s;
     hit->depth = 0.0f;
     hit->normal = n;
-    hit->point = pv_madd(*o, *d, s);
+    hit->point = v3_madd(*o, *d, s);
     return true;
 }

@@ -1,6 +1,6 @@
 /**
  * @file prim_util.h
- * @brief Private inline vector helpers and shared building blocks of prim_*.c
+ * @brief Shared building blocks of prim_*.c
  *        (ray vs sphere / cylinder / capsule, closest points of two segments).
  *        Not part of any public header; float only.
  */
@@ -9,39 +9,14 @@
 
 #include <math.h>
 #include "prim.h"
+#include "vec3.h"
 
-static inline fm_vec3_t pv_make(float x, float y, float z) { fm_vec3_t v; v.x = x; v.y = y; v.z = z; return v; }
-static inline fm_vec3_t pv_add(fm_vec3_t a, fm_vec3_t b) { return pv_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline fm_vec3_t pv_sub(fm_vec3_t a, fm_vec3_t b) { return pv_make(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline fm_vec3_t pv_scale(fm_vec3_t a, float s) { return pv_make(a.x * s, a.y * s, a.z * s); }
-/** a + b * s */
-static inline fm_vec3_t pv_madd(fm_vec3_t a, fm_vec3_t b, float s) { return pv_make(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
-static inline float pv_dot(fm_vec3_t a, fm_vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static inline float pv_len2(fm_vec3_t a) { return pv_dot(a, a); }
-static inline fm_vec3_t pv_cross(fm_vec3_t a, fm_vec3_t b)
-{
-    return pv_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static inline fm_vec3_t pv_neg(fm_vec3_t a) { return pv_make(-a.x, -a.y, -a.z); }
-static inline float pv_clamp01(float x) { return x < 0.0f ? 0.0f : (x > 1.0f ? 1.0f : x); }
-static inline float pv_minf(float a, float b) { return a < b ? a : b; }
-static inline float pv_maxf(float a, float b) { return a > b ? a : b; }
-/** True for a finite float (NaN and infinities give false); needs no libm. */
-static inline bool pv_finite(float x) { return (x - x) == 0.0f; }
-static inline bool pv_finite3(fm_vec3_t v) { return pv_finite(v.x) && pv_finite(v.y) && pv_finite(v.z); }
 /** Largest coordinate magnitude the primitives accept (inputs are relative to a nearby
  *  origin; beyond this products overflow float and the answer means nothing). */
 #define PRIM_MAX_COORD 1.0e7f
 /** Finite, and every component within +-PRIM_MAX_COORD (false for NaN too). */
-static inline bool pv_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM_MAX_COORD; }
-static inline bool pv_sane3(fm_vec3_t v) { return pv_sane(v.x) && pv_sane(v.y) && pv_sane(v.z); }
-/** Unit vector along a, or `fallback` when a is (nearly) zero. */
-static inline fm_vec3_t pv_unit_or(fm_vec3_t a, fm_vec3_t fallback)
-{
-    float l2 = pv_len2(a);
-    if (!(l2 > 1e-30f) || !pv_finite(l2)) return fallback;
-    return pv_scale(a, 1.0f / sqrtf(l2));
-}
+static inline bool prim_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM_MAX_COORD; }
+static inline bool prim_sane3(fm_vec3_t v) { return prim_sane(v.x) && prim_sane(v.y) && prim_sane(v.z); }
 
 /**
  * Sufficient (cheap) test that a contact goes deeper than the tolerance: the query's
@@ -51,7 +26,7 @@ static inline fm_vec3_t pv_unit_or(fm_vec3_t a, fm_vec3_t fallback)
  */
 static inline bool prim_goes_deeper(float dist, fm_vec3_t n, fm_vec3_t d, float rin, float s_left)
 {
-    float A = pv_dot(d, d), B = -dist * pv_dot(n, d), C = dist * dist - rin * rin;
+    float A = v3_dot(d, d), B = -dist * v3_dot(n, d), C = dist * dist - rin * rin;
     if (!(A > 0.0f) || !(B > 0.0f) || !(s_left > 0.0f)) return false;
     if (C <= 0.0f) return true;
     float disc = B * B - A * C;

@@ -6,6 +6,7 @@
  *        one walk (grid_walk.h); each query's per-triangle test and its best hit are
  *        shared by both sources.
  */
+#include "vec3.h"
 #include "coll/scene.h"
 #include "gather.h"
 #include "grid_walk.h"
@@ -46,7 +47,7 @@ static bool one_way_capsule(const fm_vec3_t *u, const fm_vec3_t shape[3], const 
     if (u->x == 0.0f && u->y == 0.0f && u->z == 0.0f) return true;
     fm_vec3_t n;
     if (!one_way_normal(u, shape, &n)) return false;
-    float d = min_f(fm_vec3_dot(&seg[0], &n), fm_vec3_dot(&seg[1], &n));
+    float d = f_min(fm_vec3_dot(&seg[0], &n), fm_vec3_dot(&seg[1], &n));
     return d >= 0.95f * r;
 }
 
@@ -118,8 +119,8 @@ static void ray_local_box(const fm_vec3_t *o_l, const fm_vec3_t *d_l, float s0, 
     for (int a = 0; a < 3; a++) {
         float p0 = o_l->v[a] + d_l->v[a] * s0, p1 = o_l->v[a] + d_l->v[a] * s1;
         float slack = mg + 1e-6f * (fabsf(p0) + fabsf(p1) + fabsf(o_l->v[a]));
-        lo->v[a] = min_f(p0, p1) - slack;
-        hi->v[a] = max_f(p0, p1) + slack;
+        lo->v[a] = f_min(p0, p1) - slack;
+        hi->v[a] = f_max(p0, p1) + slack;
     }
 }
 
@@ -301,9 +302,9 @@ static void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *h
 {
     for (int a = 0; a < 3; a++) {
         float d = q->disp.v[a] * t;
-        float mn = min_f(q->seg[0].v[a], q->seg[1].v[a]), mx = max_f(q->seg[0].v[a], q->seg[1].v[a]);
-        lo->v[a] = mn + min_f(d, 0.0f) - q->r - q->eps;
-        hi->v[a] = mx + max_f(d, 0.0f) + q->r + q->eps;
+        float mn = f_min(q->seg[0].v[a], q->seg[1].v[a]), mx = f_max(q->seg[0].v[a], q->seg[1].v[a]);
+        lo->v[a] = mn + f_min(d, 0.0f) - q->r - q->eps;
+        hi->v[a] = mx + f_max(d, 0.0f) + q->r + q->eps;
     }
 }
 
@@ -481,7 +482,7 @@ static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape
     fm_vec3_cross(&n, &shape[1], &shape[2]);
     float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]);
     if (!(d0 * d1 > 0.0f)) return false;
-    float mn = min_f(d0 * d0, d1 * d1);
+    float mn = f_min(d0 * d0, d1 * d1);
     float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
                fabsf(seg[1].z);
     float rr = r * 1.001f + 1e-6f * l1 + 1e-7f;
@@ -603,8 +604,8 @@ bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir
     fm_vec3_sub(&rel, &origin, &g->origin);
     for (int a = 0; a < 3; a++) {
         float e = dir.v[a] * max_dist, slack = 1e-4f * max_dist + 1e-6f;
-        lo.v[a] = min_f(0.0f, e) - slack;
-        hi.v[a] = max_f(0.0f, e) + slack;
+        lo.v[a] = f_min(0.0f, e) - slack;
+        hi.v[a] = f_max(0.0f, e) + slack;
     }
     if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
         return coll_raycast(g->scene, origin, dir, max_dist, g->read_mask, g->types, hit);
