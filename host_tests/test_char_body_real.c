@@ -363,6 +363,41 @@ static void test_low_ledge_blocks(void)
     }
 }
 
+/* ---- 5b. landing in front of a kerb it has no room to climb (soak seed 1 level 33) ---- */
+
+/* A 15 cm kerb (x >= 0, within step_height) under a slab whose underside is 2.1 m up: on the
+ * floor the 2 m capsule fits, on the kerb it does not. The body comes down 5 mm above the
+ * floor with its foot 2 cm before the kerb, walking into it. Each step carries the foot over
+ * the kerb, where the lift has no room and the step is undone; undoing the fall too left the
+ * body hanging 5 mm above the floor for ever (airborne at rest). It lands in front of the
+ * kerb and stands there. */
+static void test_landing_before_kerb_under_overhang(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(5.0f, 0.075f, 0.0f), cb_vec(5.0f, 0.075f, 5.0f), 0.0f);  /* kerb top 0.15, x >= 0 */
+        cb_geo_box(cb_vec(0.0f, 2.1f + 0.25f, 0.0f), cb_vec(6.0f, 0.25f, 6.0f), 0.0f); /* underside 2.1 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-0.02f, 0.005f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        int landed = -1;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (landed < 0 && char_body_is_on_floor(&body)) landed = f;
+            TEST_ASSERT_TRUE(pos.y < 0.01f);
+        }
+        char name[96];
+        snprintf(name, sizeof name, "kerb under an overhang at %.0f Hz: frames to land from 5 mm", (double)rates[i]);
+        cb_report(name, landed, "");
+        TEST_ASSERT_TRUE(landed >= 0 && landed <= 3);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+        TEST_ASSERT_TRUE(pos.x < 0.0f);
+    }
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -411,6 +446,7 @@ int main(void)
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_low_ledge_blocks);
+    RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
     return UNITY_END();

@@ -455,10 +455,24 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */
+    const fm_vec3_t slid = pos;
     if (!coll_cb_probe_floor(&c, &pos, was_grounded, jumping)) {
-        pos = start;
-        body->velocity = cb_v(0.0f, 0.0f, 0.0f);
-        coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+        /* Falling, only the move across up is undone: the body still falls straight down
+         * from where it was (landing in front of a kerb it has no room to climb, under an
+         * overhang, instead of hanging in the air at the start of every step). */
+        float fall = cb_dot(cb_sub(slid, start), up);
+        bool kept = false;
+        if (!walking && !jumping && fall < -c.tiny) {
+            pos = start;
+            coll_cb_move_swept(&c, &pos, cb_scale(up, fall));
+            body->velocity = cb_scale(cb_sub(pos, start), 1.0f / dt);
+            kept = coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+        }
+        if (!kept) {
+            pos = start;
+            body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+            coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+        }
     }
 
     /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as
