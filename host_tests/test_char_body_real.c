@@ -398,6 +398,111 @@ static void test_landing_before_kerb_under_overhang(void)
     }
 }
 
+/* ---- 5c. a walkable slope the capsule's bottom cannot reach with its foot (soak s2 l55) ---- */
+
+/* A 28 degree slope, walkable (33 degrees allowed), under a wide capsule with a low step
+ * (r 0.95, step 0.05; the seed's "radius and stepping height must allow the angle" does not
+ * hold: r / cos 28 = 1.076 > r + step): the sweep capsule's bottom ball rests on the slope
+ * with the foot point 76 mm above it. Walking onto it the snap keeps the body grounded
+ * there; landing on it (not grounded before: the probe reaches only 2 mm) left it airborne
+ * at rest for ever. Now the probe stands on a walkable floor where the sweep capsule rests
+ * on it: it lands, stays at rest, and walks up and down the slope on the floor. */
+static void test_landing_on_slope_too_steep_for_the_capsule(void)
+{
+    const float deg = 28.0f, r = 0.95f, step = 0.05f;
+    const float t = tanf(deg * DEG);
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
+                cb_vec(10.0f, 10.0f * t, -10.0f)); /* rises along +x */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0.0f, 0.5f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = r;
+    s.height = 2.0f;
+    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
+    s.step_height = step;
+    s.floor_snap_distance = 0.33f;
+    s.floor_max_angle = 33.4f * DEG;
+    char_body_configure(&body, &s);
+    const float hover = r / cosf(deg * DEG) - r - step; /* foot above the slope at rest */
+    int landed = -1;
+    for (int f = 0; f < 60; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (landed < 0 && char_body_is_on_floor(&body)) landed = f;
+    }
+    cb_report("slope too steep for the capsule: frames to land from 0.5 m", landed, "");
+    TEST_ASSERT_TRUE(landed >= 0 && landed < 20);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    float above = pos.y - pos.x * t; /* foot height above the slope along up */
+    TEST_ASSERT_FLOAT_WITHIN(0.003f, hover, above);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    TEST_ASSERT_TRUE(fabsf(v.x) + fabsf(v.y) + fabsf(v.z) < 0.01f);
+    /* across the slope and down it: stays on the floor */
+    body.input_velocity = cb_vec(0.0f, 0.0f, 2.0f);
+    for (int f = 0; f < 30; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    TEST_ASSERT_TRUE(pos.z > 0.9f);
+    body.input_velocity = cb_vec(-2.0f, 0.0f, 0.0f);
+    for (int f = 0; f < 30; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    TEST_ASSERT_TRUE(pos.x < -0.9f);
+}
+
+/* A wall that is the floor for a tilted up (soak s1 l7: up (0.586 -0.329 -0.741), the room
+ * wall z = 24 at 42 degrees, r 0.91, step 0.27: the sweep capsule rests on it with the foot
+ * 49 mm above it). Landing there, then walking in sixteen directions, the body never moves
+ * against its input across up: a float residue of the velocity along up after the
+ * rejection read as a jump (not walking), and the snap slid the body 84 mm back along its
+ * contact. */
+static void test_wall_as_floor_tilted_up_walks_forward(void)
+{
+    const float r = 0.9058f;
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-30.0f, -30.0f, 0.0f), cb_vec(30.0f, -30.0f, 0.0f), cb_vec(30.0f, 30.0f, 0.0f),
+                cb_vec(-30.0f, 30.0f, 0.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    float ul = sqrtf(0.586f * 0.586f + 0.329f * 0.329f + 0.741f * 0.741f);
+    fm_vec3_t up = cb_vec(0.586f / ul, -0.329f / ul, -0.741f / ul);
+    pos = cb_vec(0.0f, 0.0f, -0.2f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.up = up;
+    s.radius = r;
+    s.height = 3.8919f;
+    s.center_offset = cb_vec(1.946f * up.x, 1.946f * up.y, 1.946f * up.z);
+    s.step_height = 0.2679f;
+    s.floor_snap_distance = 0.2929f;
+    s.floor_max_angle = 59.4f * DEG;
+    s.max_slides = 2;
+    char_body_configure(&body, &s);
+    for (int f = 0; f < 60; f++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    float worst = 0.0f;
+    for (int d = 0; d < 16; d++) {
+        float a = (float)d * 22.5f * DEG;
+        fm_vec3_t in = cb_vec(1.5f * cosf(a), 1.5f * sinf(a), 0.3f * cosf(3.0f * a));
+        float iu = in.x * up.x + in.y * up.y + in.z * up.z;
+        in = cb_vec(in.x - iu * up.x, in.y - iu * up.y, in.z - iu * up.z);
+        float il = sqrtf(in.x * in.x + in.y * in.y + in.z * in.z);
+        body.input_velocity = in;
+        for (int f = 0; f < 10; f++) {
+            fm_vec3_t before = pos;
+            CB_STEP(&body, 1.0f / 60.0f);
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            fm_vec3_t dp = cb_vec(pos.x - before.x, pos.y - before.y, pos.z - before.z);
+            float back = -(dp.x * in.x + dp.y * in.y + dp.z * in.z) / il;
+            if (back > worst) worst = back;
+        }
+    }
+    cb_report("wall as a floor, tilted up: worst motion against the input", worst, "m");
+    TEST_ASSERT_TRUE(worst < 0.001f);
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -447,6 +552,8 @@ int main(void)
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
+    RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
+    RUN_TEST(test_wall_as_floor_tilted_up_walks_forward);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
     return UNITY_END();

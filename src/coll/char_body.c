@@ -399,7 +399,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     fm_vec3_t in_h = cb_reject(input, up);
     float v_up = cb_dot(body->velocity, up);
     fm_vec3_t v;
-    bool walking = was_grounded && !was_steep && v_up <= 0.0f;
+    /* (a float rejection along a tilted up leaves a residue of either sign: not a jump) */
+    bool walking = was_grounded && !was_steep && v_up <= c.tiny / dt;
     if (walking) {
         v_up = 0.0f;
         v = follow_slope(in_h, up, body->floor_normal, c.unit);

@@ -203,6 +203,15 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
     }
 }
 
+/** True when the sweep capsule at pos touches a plane of normal n right below it (within
+ * the contact tolerance): what holds it up is that plane. */
+static bool resting_on(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t n)
+{
+    coll_sweep_hit_t h;
+    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, cb_scale(c->up, -c->contact_eps), &h) &&
+           isfinite(h.t) && cb_finite(h.normal) && cb_dot(h.normal, n) > 0.999f;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -224,6 +233,14 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 /* A one-way platform is a floor within a step of the foot, not one the
                  * body fell back into after jumping up through it short of its top. */
                 bool one_way_deep = hit.instance && (hit.instance->flags & COLL_INSTANCE_ONE_WAY) && gap < -c->step;
+                /* A walkable slope steeper than the capsule's bottom allows (r / cos > r +
+                 * step: the seed's "radius and stepping height must allow the angle") holds
+                 * the sweep capsule's bottom ball r / cos - (r + step) above the foot's
+                 * point on it: landing there is standing on it, as walking onto it is. */
+                float rest = c->radius / nu - (c->radius + c->step);
+                if (gap > reach && rest > reach && gap <= rest + contact_eps && !one_way_deep &&
+                    resting_on(c, *pos, hit.normal))
+                    reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
                     /* Stepping down into a gap between two surfaces at one level narrower
