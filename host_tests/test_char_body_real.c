@@ -236,6 +236,55 @@ static void test_crack_walk_across(void)
         }
 }
 
+/* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
+
+/* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
+ * between them along x (soak: bodies standing on the room floor through a gap between
+ * tiles, up to 0.2-0.5 m below the tile tops). The capsule (r 0.5) cannot reach the
+ * groove's bottom: it rests on the two edges, sagging r - sqrt(r^2 - 0.05^2) = 2.5 mm below
+ * them, however it comes there. Before, stepping down from the blocks and landing in the
+ * groove were held, but a body walking along the floor into its open end stood on the
+ * floor at its bottom with its foot 15 cm inside the blocks. */
+static void build_groove(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(5.0f, 0.075f, -2.05f), cb_vec(5.0f, 0.075f, 2.0f), 0.0f); /* z in [-4.05, -0.05] */
+    cb_geo_box(cb_vec(5.0f, 0.075f, 2.05f), cb_vec(5.0f, 0.075f, 2.0f), 0.0f);  /* z in [0.05, 4.05] */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_groove_between_low_blocks(void)
+{
+    const float rest = 0.15f - crack_sag(0.5f, 0.10f);
+    /* landing in it */
+    cb_world_reset();
+    build_groove();
+    cb_body_init(&body, &pos, cb_vec(3.0f, 0.6f, 0.0f));
+    for (int f = 0; f < 60; f++) CB_STEP(&body, 1.0f / 60.0f);
+    cb_report("groove: foot after landing (edges at 0.15, rest 0.1475)", pos.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, rest, pos.y);
+    /* walking along the floor into its open end, at three rates */
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        build_groove();
+        cb_body_init(&body, &pos, cb_vec(-2.0f, 0.0f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest_inside = 1.0f;
+        for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > 0.6f && pos.y < lowest_inside) lowest_inside = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "groove at %.0f Hz: lowest foot past the blocks' end", (double)rates[i]);
+        cb_report(name, lowest_inside, "m");
+        TEST_ASSERT_TRUE(pos.x > 2.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(lowest_inside > rest - 0.001f);
+    }
+}
+
 /* A real ledge is still a ledge: past the edge with nothing beyond, the body falls. */
 static void test_ledge_beside_wide_gap_falls(void)
 {
@@ -547,6 +596,7 @@ int main(void)
     RUN_TEST(test_crack_spawn_over);
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
+    RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);

@@ -243,12 +243,14 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
-                    /* Stepping down into a gap between two surfaces at one level narrower
-                     * than the capsule (modular tiles over a base floor): the capsule rests
-                     * on their edges instead; a stair's next tread stays a step down. */
+                    /* A gap between two surfaces at one level narrower than the capsule
+                     * (modular tiles over a base floor, a groove between two low blocks):
+                     * the capsule rests on their edges, not on the floor the foot point
+                     * finds through the gap, however it came there (stepping down into
+                     * it, landing in it, walking along the floor into it); a stair's next
+                     * tread stays a step down. */
                     support_t w = {0};
-                    if (was_grounded && gap > contact_eps && ball_held(c, *pos, reach, NULL, gap, &w) &&
-                        w.gap < gap - step_eps)
+                    if (ball_held(c, *pos, reach, NULL, gap, &w) && w.gap < gap - step_eps)
                         s = w;
                 }
             } else if (nu > 0.0f) {
