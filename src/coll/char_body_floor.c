@@ -198,7 +198,12 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
          * moved this step: never back, off the nosing ahead of a body climbing stairs). */
         if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
         left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
-        if (!(cb_dot(left, b->velocity) > 0.0f)) return;
+        /* onwards: across up, within 60 degrees of the velocity (not down a steep face
+         * beside a body sliding along a wall: that is back, or sideways, off it); a body
+         * moving only along up keeps the old rule: along its velocity */
+        fm_vec3_t la = cb_reject(left, c->up), va = cb_reject(b->velocity, c->up);
+        float lv = cb_len(la) * cb_len(va);
+        if (lv > 0.0f ? !(cb_dot(la, va) > 0.5f * lv) : !(cb_dot(left, b->velocity) > 0.0f)) return;
         if (!(cb_dot(left, c->up) < -c->tiny)) return;
     }
 }
