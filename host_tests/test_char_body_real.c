@@ -552,6 +552,44 @@ static void test_wall_as_floor_tilted_up_walks_forward(void)
     TEST_ASSERT_TRUE(worst < 0.001f);
 }
 
+/* ---- 5d. a jump that a sloped ceiling turns downwards (dm6ish body 11) ---- */
+
+/* A ceiling descending towards +x at 30 degrees 0.23 m above a 2 m capsule standing on the
+ * floor. Jumping (3 m/s up) while walking into it, the slide along the ceiling turns the
+ * rise downwards; a jump skipped the floor probe, so the foot ended inside the floor (the
+ * step zone hides it from the sweep) and later stood there, below a floor it had no room
+ * to rise onto. The probe now runs on a step that did not rise. */
+static void test_jump_turned_down_by_sloped_ceiling(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    const float t30 = tanf(30.0f * DEG);
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        /* underside y = 2.05 - tan 30 * x, facing down */
+        cb_geo_quad(cb_vec(-5.0f, 2.05f + 5.0f * t30, -5.0f), cb_vec(5.0f, 2.05f - 5.0f * t30, -5.0f),
+                    cb_vec(5.0f, 2.05f - 5.0f * t30, 5.0f), cb_vec(-5.0f, 2.05f + 5.0f * t30, 5.0f));
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-1.5f, 0.0f, 0.0f));
+        for (int f = 0; f < 3; f++) CB_STEP(&body, 1.0f / rates[i]);
+        body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+        float lowest = 0.0f;
+        for (int jump = 0; jump < 3; jump++) {
+            char_body_set_velocity(&body, cb_vec(0.0f, 3.0f, 0.0f));
+            for (int f = 0; f < (int)(0.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (pos.y < lowest) lowest = pos.y;
+            }
+        }
+        char name[96];
+        snprintf(name, sizeof name, "jump under a sloped ceiling at %.0f Hz: lowest foot", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+    }
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -603,6 +641,7 @@ int main(void)
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
+    RUN_TEST(test_jump_turned_down_by_sloped_ceiling);
     RUN_TEST(test_wall_as_floor_tilted_up_walks_forward);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);

@@ -457,7 +457,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */
     const fm_vec3_t slid = pos;
-    if (!coll_cb_probe_floor(&c, &pos, was_grounded, jumping)) {
+    /* A jump skips the probe (it is not snapped back to the floor it leaves), but only
+     * while it rises: a rise that an overhang's slope turned downwards this step is not
+     * leaving anything, and without the probe it ended with the foot inside the floor it
+     * started from (the step zone hides a floor from the sweep). */
+    const bool rising = jumping && cb_dot(cb_sub(slid, start), up) > 0.0f;
+    if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
         /* Falling, only the move across up is undone: the body still falls straight down
          * from where it was (landing in front of a kerb it has no room to climb, under an
          * overhang, instead of hanging in the air at the start of every step). */
@@ -467,12 +472,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
             pos = start;
             coll_cb_move_swept(&c, &pos, cb_scale(up, fall));
             body->velocity = cb_scale(cb_sub(pos, start), 1.0f / dt);
-            kept = coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+            kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }
         if (!kept) {
             pos = start;
             body->velocity = cb_v(0.0f, 0.0f, 0.0f);
-            coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+            coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }
     }
 
