@@ -236,6 +236,55 @@ static void test_crack_walk_across(void)
         }
 }
 
+/* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
+
+/* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
+ * between them along x (soak: bodies standing on the room floor through a gap between
+ * tiles, up to 0.2-0.5 m below the tile tops). The capsule (r 0.5) cannot reach the
+ * groove's bottom: it rests on the two edges, sagging r - sqrt(r^2 - 0.05^2) = 2.5 mm below
+ * them, however it comes there. Before, stepping down from the blocks and landing in the
+ * groove were held, but a body walking along the floor into its open end stood on the
+ * floor at its bottom with its foot 15 cm inside the blocks. */
+static void build_groove(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(5.0f, 0.075f, -2.05f), cb_vec(5.0f, 0.075f, 2.0f), 0.0f); /* z in [-4.05, -0.05] */
+    cb_geo_box(cb_vec(5.0f, 0.075f, 2.05f), cb_vec(5.0f, 0.075f, 2.0f), 0.0f);  /* z in [0.05, 4.05] */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_groove_between_low_blocks(void)
+{
+    const float rest = 0.15f - crack_sag(0.5f, 0.10f);
+    /* landing in it */
+    cb_world_reset();
+    build_groove();
+    cb_body_init(&body, &pos, cb_vec(3.0f, 0.6f, 0.0f));
+    for (int f = 0; f < 60; f++) CB_STEP(&body, 1.0f / 60.0f);
+    cb_report("groove: foot after landing (edges at 0.15, rest 0.1475)", pos.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, rest, pos.y);
+    /* walking along the floor into its open end, at three rates */
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        build_groove();
+        cb_body_init(&body, &pos, cb_vec(-2.0f, 0.0f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest_inside = 1.0f;
+        for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > 0.6f && pos.y < lowest_inside) lowest_inside = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "groove at %.0f Hz: lowest foot past the blocks' end", (double)rates[i]);
+        cb_report(name, lowest_inside, "m");
+        TEST_ASSERT_TRUE(pos.x > 2.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(lowest_inside > rest - 0.001f);
+    }
+}
+
 /* A real ledge is still a ledge: past the edge with nothing beyond, the body falls. */
 static void test_ledge_beside_wide_gap_falls(void)
 {
@@ -363,6 +412,184 @@ static void test_low_ledge_blocks(void)
     }
 }
 
+/* ---- 5b. landing in front of a kerb it has no room to climb (soak seed 1 level 33) ---- */
+
+/* A 15 cm kerb (x >= 0, within step_height) under a slab whose underside is 2.1 m up: on the
+ * floor the 2 m capsule fits, on the kerb it does not. The body comes down 5 mm above the
+ * floor with its foot 2 cm before the kerb, walking into it. Each step carries the foot over
+ * the kerb, where the lift has no room and the step is undone; undoing the fall too left the
+ * body hanging 5 mm above the floor for ever (airborne at rest). It lands in front of the
+ * kerb and stands there. */
+static void test_landing_before_kerb_under_overhang(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(5.0f, 0.075f, 0.0f), cb_vec(5.0f, 0.075f, 5.0f), 0.0f);  /* kerb top 0.15, x >= 0 */
+        cb_geo_box(cb_vec(0.0f, 2.1f + 0.25f, 0.0f), cb_vec(6.0f, 0.25f, 6.0f), 0.0f); /* underside 2.1 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-0.02f, 0.005f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        int landed = -1;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (landed < 0 && char_body_is_on_floor(&body)) landed = f;
+            TEST_ASSERT_TRUE(pos.y < 0.01f);
+        }
+        char name[96];
+        snprintf(name, sizeof name, "kerb under an overhang at %.0f Hz: frames to land from 5 mm", (double)rates[i]);
+        cb_report(name, landed, "");
+        TEST_ASSERT_TRUE(landed >= 0 && landed <= 3);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+        TEST_ASSERT_TRUE(pos.x < 0.0f);
+    }
+}
+
+/* ---- 5c. a walkable slope the capsule's bottom cannot reach with its foot (soak s2 l55) ---- */
+
+/* A 28 degree slope, walkable (33 degrees allowed), under a wide capsule with a low step
+ * (r 0.95, step 0.05; the seed's "radius and stepping height must allow the angle" does not
+ * hold: r / cos 28 = 1.076 > r + step): the sweep capsule's bottom ball rests on the slope
+ * with the foot point 76 mm above it. Walking onto it the snap keeps the body grounded
+ * there; landing on it (not grounded before: the probe reaches only 2 mm) left it airborne
+ * at rest for ever. Now the probe stands on a walkable floor where the sweep capsule rests
+ * on it: it lands, stays at rest, and walks up and down the slope on the floor. */
+static void test_landing_on_slope_too_steep_for_the_capsule(void)
+{
+    const float deg = 28.0f, r = 0.95f, step = 0.05f;
+    const float t = tanf(deg * DEG);
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
+                cb_vec(10.0f, 10.0f * t, -10.0f)); /* rises along +x */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0.0f, 0.5f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = r;
+    s.height = 2.0f;
+    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
+    s.step_height = step;
+    s.floor_snap_distance = 0.33f;
+    s.floor_max_angle = 33.4f * DEG;
+    char_body_configure(&body, &s);
+    const float hover = r / cosf(deg * DEG) - r - step; /* foot above the slope at rest */
+    int landed = -1;
+    for (int f = 0; f < 60; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (landed < 0 && char_body_is_on_floor(&body)) landed = f;
+    }
+    cb_report("slope too steep for the capsule: frames to land from 0.5 m", landed, "");
+    TEST_ASSERT_TRUE(landed >= 0 && landed < 20);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    float above = pos.y - pos.x * t; /* foot height above the slope along up */
+    TEST_ASSERT_FLOAT_WITHIN(0.003f, hover, above);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    TEST_ASSERT_TRUE(fabsf(v.x) + fabsf(v.y) + fabsf(v.z) < 0.01f);
+    /* across the slope and down it: stays on the floor */
+    body.input_velocity = cb_vec(0.0f, 0.0f, 2.0f);
+    for (int f = 0; f < 30; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    TEST_ASSERT_TRUE(pos.z > 0.9f);
+    body.input_velocity = cb_vec(-2.0f, 0.0f, 0.0f);
+    for (int f = 0; f < 30; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    TEST_ASSERT_TRUE(pos.x < -0.9f);
+}
+
+/* A wall that is the floor for a tilted up (soak s1 l7: up (0.586 -0.329 -0.741), the room
+ * wall z = 24 at 42 degrees, r 0.91, step 0.27: the sweep capsule rests on it with the foot
+ * 49 mm above it). Landing there, then walking in sixteen directions, the body never moves
+ * against its input across up: a float residue of the velocity along up after the
+ * rejection read as a jump (not walking), and the snap slid the body 84 mm back along its
+ * contact. */
+static void test_wall_as_floor_tilted_up_walks_forward(void)
+{
+    const float r = 0.9058f;
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-30.0f, -30.0f, 0.0f), cb_vec(30.0f, -30.0f, 0.0f), cb_vec(30.0f, 30.0f, 0.0f),
+                cb_vec(-30.0f, 30.0f, 0.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    float ul = sqrtf(0.586f * 0.586f + 0.329f * 0.329f + 0.741f * 0.741f);
+    fm_vec3_t up = cb_vec(0.586f / ul, -0.329f / ul, -0.741f / ul);
+    pos = cb_vec(0.0f, 0.0f, -0.2f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.up = up;
+    s.radius = r;
+    s.height = 3.8919f;
+    s.center_offset = cb_vec(1.946f * up.x, 1.946f * up.y, 1.946f * up.z);
+    s.step_height = 0.2679f;
+    s.floor_snap_distance = 0.2929f;
+    s.floor_max_angle = 59.4f * DEG;
+    s.max_slides = 2;
+    char_body_configure(&body, &s);
+    for (int f = 0; f < 60; f++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    float worst = 0.0f;
+    for (int d = 0; d < 16; d++) {
+        float a = (float)d * 22.5f * DEG;
+        fm_vec3_t in = cb_vec(1.5f * cosf(a), 1.5f * sinf(a), 0.3f * cosf(3.0f * a));
+        float iu = in.x * up.x + in.y * up.y + in.z * up.z;
+        in = cb_vec(in.x - iu * up.x, in.y - iu * up.y, in.z - iu * up.z);
+        float il = sqrtf(in.x * in.x + in.y * in.y + in.z * in.z);
+        body.input_velocity = in;
+        for (int f = 0; f < 10; f++) {
+            fm_vec3_t before = pos;
+            CB_STEP(&body, 1.0f / 60.0f);
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            fm_vec3_t dp = cb_vec(pos.x - before.x, pos.y - before.y, pos.z - before.z);
+            float back = -(dp.x * in.x + dp.y * in.y + dp.z * in.z) / il;
+            if (back > worst) worst = back;
+        }
+    }
+    cb_report("wall as a floor, tilted up: worst motion against the input", worst, "m");
+    TEST_ASSERT_TRUE(worst < 0.001f);
+}
+
+/* ---- 5d. a jump that a sloped ceiling turns downwards (dm6ish body 11) ---- */
+
+/* A ceiling descending towards +x at 30 degrees 0.23 m above a 2 m capsule standing on the
+ * floor. Jumping (3 m/s up) while walking into it, the slide along the ceiling turns the
+ * rise downwards; a jump skipped the floor probe, so the foot ended inside the floor (the
+ * step zone hides it from the sweep) and later stood there, below a floor it had no room
+ * to rise onto. The probe now runs on a step that did not rise. */
+static void test_jump_turned_down_by_sloped_ceiling(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    const float t30 = tanf(30.0f * DEG);
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        /* underside y = 2.05 - tan 30 * x, facing down */
+        cb_geo_quad(cb_vec(-5.0f, 2.05f + 5.0f * t30, -5.0f), cb_vec(5.0f, 2.05f - 5.0f * t30, -5.0f),
+                    cb_vec(5.0f, 2.05f - 5.0f * t30, 5.0f), cb_vec(-5.0f, 2.05f + 5.0f * t30, 5.0f));
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-1.5f, 0.0f, 0.0f));
+        for (int f = 0; f < 3; f++) CB_STEP(&body, 1.0f / rates[i]);
+        body.input_velocity = cb_vec(4.0f, 0.0f, 0.0f);
+        float lowest = 0.0f;
+        for (int jump = 0; jump < 3; jump++) {
+            char_body_set_velocity(&body, cb_vec(0.0f, 3.0f, 0.0f));
+            for (int f = 0; f < (int)(0.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (pos.y < lowest) lowest = pos.y;
+            }
+        }
+        char name[96];
+        snprintf(name, sizeof name, "jump under a sloped ceiling at %.0f Hz: lowest foot", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
+    }
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -407,10 +634,15 @@ int main(void)
     RUN_TEST(test_crack_spawn_over);
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
+    RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_low_ledge_blocks);
+    RUN_TEST(test_landing_before_kerb_under_overhang);
+    RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
+    RUN_TEST(test_jump_turned_down_by_sloped_ceiling);
+    RUN_TEST(test_wall_as_floor_tilted_up_walks_forward);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
     return UNITY_END();

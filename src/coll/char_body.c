@@ -405,7 +405,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     fm_vec3_t in_h = cb_reject(input, up);
     float v_up = cb_dot(body->velocity, up);
     fm_vec3_t v;
-    bool walking = was_grounded && !was_steep && v_up <= 0.0f;
+    /* (a float rejection along a tilted up leaves a residue of either sign: not a jump) */
+    bool walking = was_grounded && !was_steep && v_up <= c.tiny / dt;
     if (walking) {
         v_up = 0.0f;
         v = follow_slope(in_h, up, body->floor_normal, c.unit);
@@ -461,10 +462,29 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */
-    if (!coll_cb_probe_floor(&c, &pos, was_grounded, jumping)) {
-        pos = start;
-        body->velocity = cb_v(0.0f, 0.0f, 0.0f);
-        coll_cb_probe_floor(&c, &pos, was_grounded, jumping);
+    const fm_vec3_t slid = pos;
+    /* A jump skips the probe (it is not snapped back to the floor it leaves), but only
+     * while it rises: a rise that an overhang's slope turned downwards this step is not
+     * leaving anything, and without the probe it ended with the foot inside the floor it
+     * started from (the step zone hides a floor from the sweep). */
+    const bool rising = jumping && cb_dot(cb_sub(slid, start), up) > 0.0f;
+    if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
+        /* Falling, only the move across up is undone: the body still falls straight down
+         * from where it was (landing in front of a kerb it has no room to climb, under an
+         * overhang, instead of hanging in the air at the start of every step). */
+        float fall = cb_dot(cb_sub(slid, start), up);
+        bool kept = false;
+        if (!walking && !jumping && fall < -c.tiny) {
+            pos = start;
+            coll_cb_move_swept(&c, &pos, cb_scale(up, fall));
+            body->velocity = cb_scale(cb_sub(pos, start), 1.0f / dt);
+            kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+        }
+        if (!kept) {
+            pos = start;
+            body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+            coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+        }
     }
 
     /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as

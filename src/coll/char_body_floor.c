@@ -198,9 +198,23 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
          * moved this step: never back, off the nosing ahead of a body climbing stairs). */
         if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
         left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
-        if (!(cb_dot(left, b->velocity) > 0.0f)) return;
+        /* onwards: across up, within 60 degrees of the velocity (not down a steep face
+         * beside a body sliding along a wall: that is back, or sideways, off it); a body
+         * moving only along up keeps the old rule: along its velocity */
+        fm_vec3_t la = cb_reject(left, c->up), va = cb_reject(b->velocity, c->up);
+        float lv = cb_len(la) * cb_len(va);
+        if (lv > 0.0f ? !(cb_dot(la, va) > 0.5f * lv) : !(cb_dot(left, b->velocity) > 0.0f)) return;
         if (!(cb_dot(left, c->up) < -c->tiny)) return;
     }
+}
+
+/** True when the sweep capsule at pos touches a plane of normal n right below it (within
+ * the contact tolerance): what holds it up is that plane. */
+static bool resting_on(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t n)
+{
+    coll_sweep_hit_t h;
+    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, cb_scale(c->up, -c->contact_eps), &h) &&
+           isfinite(h.t) && cb_finite(h.normal) && cb_dot(h.normal, n) > 0.999f;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
@@ -224,14 +238,24 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 /* A one-way platform is a floor within a step of the foot, not one the
                  * body fell back into after jumping up through it short of its top. */
                 bool one_way_deep = hit.instance && (hit.instance->flags & COLL_INSTANCE_ONE_WAY) && gap < -c->step;
+                /* A walkable slope steeper than the capsule's bottom allows (r / cos > r +
+                 * step: the seed's "radius and stepping height must allow the angle") holds
+                 * the sweep capsule's bottom ball r / cos - (r + step) above the foot's
+                 * point on it: landing there is standing on it, as walking onto it is. */
+                float rest = c->radius / nu - (c->radius + c->step);
+                if (gap > reach && rest > reach && gap <= rest + contact_eps && !one_way_deep &&
+                    resting_on(c, *pos, hit.normal))
+                    reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
-                    /* Stepping down into a gap between two surfaces at one level narrower
-                     * than the capsule (modular tiles over a base floor): the capsule rests
-                     * on their edges instead; a stair's next tread stays a step down. */
+                    /* A gap between two surfaces at one level narrower than the capsule
+                     * (modular tiles over a base floor, a groove between two low blocks):
+                     * the capsule rests on their edges, not on the floor the foot point
+                     * finds through the gap, however it came there (stepping down into
+                     * it, landing in it, walking along the floor into it); a stair's next
+                     * tread stays a step down. */
                     support_t w = {0};
-                    if (was_grounded && gap > contact_eps && ball_held(c, *pos, reach, NULL, gap, &w) &&
-                        w.gap < gap - step_eps)
+                    if (ball_held(c, *pos, reach, NULL, gap, &w) && w.gap < gap - step_eps)
                         s = w;
                 }
             } else if (nu > 0.0f) {
