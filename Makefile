@@ -159,7 +159,7 @@ $(BUILD)/$(1)/tests/%: $(BUILD)/$(1)/obj/host_tests/%.o $$($(1)_SUPPORT_OBJS) $$
 $(1)_TESTS := $$(addprefix $(BUILD)/$(1)/tests/,$(TEST_NAMES))
 .PRECIOUS: $(BUILD)/$(1)/obj/host_tests/%.o
 # header dependencies of the test objects too, so a struct change rebuilds every suite
--include $$(wildcard $(BUILD)/$(1)/obj/host_tests/*.d $(BUILD)/$(1)/obj/host_tests/support/*.d)
+-include $$(wildcard $(BUILD)/$(1)/obj/host_tests/*.d $(BUILD)/$(1)/obj/host_tests/support/*.d $(BUILD)/$(1)/obj/host_tests/soak/*.d)
 endef
 $(foreach v,$(VARIANTS),$(eval $(call test_rules,$(v))))
 
