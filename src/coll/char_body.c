@@ -33,8 +33,8 @@ void char_body_init(char_body_t *body, fm_vec3_t *owner_pos)
     if (!body) return;
     *body = (char_body_t){0};
     body->owner_pos = owner_pos;
-    if (owner_pos && cb_finite(*owner_pos)) body->origin = *owner_pos;
-    body->settings.up = cb_v(0.0f, 1.0f, 0.0f);
+    if (owner_pos && v3_finite(*owner_pos)) body->origin = *owner_pos;
+    body->settings.up = v3(0.0f, 1.0f, 0.0f);
     body->floor_id = -1;
     char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
     char_body_configure(body, &s);
@@ -47,13 +47,13 @@ void char_body_configure(char_body_t *body, const char_body_settings_t *settings
     char_body_settings_t s = *settings;
     fm_vec3_t prev_up = body->settings.up;
 
-    fm_vec3_t up = cb_norm(s.up);
-    if (!cb_finite(s.up) || cb_len(up) < 0.5f) {
-        up = cb_norm(prev_up);
-        if (cb_len(up) < 0.5f) up = cb_v(0.0f, 1.0f, 0.0f);
+    fm_vec3_t up = v3_norm(s.up);
+    if (!v3_finite(s.up) || v3_len(up) < 0.5f) {
+        up = v3_norm(prev_up);
+        if (v3_len(up) < 0.5f) up = v3(0.0f, 1.0f, 0.0f);
     }
     s.up = up;
-    if (!cb_finite(s.center_offset)) s.center_offset = cb_v(0.0f, 0.0f, 0.0f);
+    if (!v3_finite(s.center_offset)) s.center_offset = v3(0.0f, 0.0f, 0.0f);
 
     /* The length unit first: every length, speed and acceleration limit is metres times it
      * (and so are the fallbacks for NaN settings, the seed's defaults in metres). */
@@ -86,16 +86,16 @@ const char_body_settings_t *char_body_get_settings(const char_body_t *body)
 
 void char_body_set_up(char_body_t *body, fm_vec3_t up)
 {
-    if (!body || !cb_finite(up)) return;
-    fm_vec3_t n = cb_norm(up);
-    if (cb_len(n) < 0.5f) return;
+    if (!body || !v3_finite(up)) return;
+    fm_vec3_t n = v3_norm(up);
+    if (v3_len(n) < 0.5f) return;
     body->settings.up = n;
     sync_collider(body);
 }
 
 void char_body_set_center_offset(char_body_t *body, fm_vec3_t offset)
 {
-    if (!body || !cb_finite(offset)) return;
+    if (!body || !v3_finite(offset)) return;
     body->settings.center_offset = offset;
     sync_collider(body);
 }
@@ -114,31 +114,31 @@ bool char_body_is_on_steep_surface(const char_body_t *body)
 
 fm_vec3_t char_body_floor_normal(const char_body_t *body)
 {
-    return body ? body->floor_normal : cb_v(0.0f, 0.0f, 0.0f);
+    return body ? body->floor_normal : v3(0.0f, 0.0f, 0.0f);
 }
 
 fm_vec3_t char_body_get_velocity(const char_body_t *body)
 {
-    return body ? body->velocity : cb_v(0.0f, 0.0f, 0.0f);
+    return body ? body->velocity : v3(0.0f, 0.0f, 0.0f);
 }
 
 void char_body_set_velocity(char_body_t *body, fm_vec3_t velocity)
 {
-    if (!body || !cb_finite(velocity)) return;
+    if (!body || !v3_finite(velocity)) return;
     body->velocity = velocity;
 }
 
 static fm_vec3_t owner_position(const char_body_t *body)
 {
-    if (body->owner_pos && cb_finite(*body->owner_pos)) return *body->owner_pos;
+    if (body->owner_pos && v3_finite(*body->owner_pos)) return *body->owner_pos;
     return body->origin;
 }
 
 fm_vec3_t char_body_foot_pos(const char_body_t *body)
 {
-    if (!body) return cb_v(0.0f, 0.0f, 0.0f);
-    fm_vec3_t c = cb_add(owner_position(body), body->settings.center_offset);
-    return cb_madd(c, body->settings.up, -0.5f * body->settings.height);
+    if (!body) return v3(0.0f, 0.0f, 0.0f);
+    fm_vec3_t c = v3_add(owner_position(body), body->settings.center_offset);
+    return v3_madd(c, body->settings.up, -0.5f * body->settings.height);
 }
 
 int32_t char_body_floor_id(const char_body_t *body)
@@ -154,7 +154,7 @@ char_body_ground_state_t char_body_ground_state(const char_body_t *body)
 
 fm_vec3_t char_body_ground_velocity(const char_body_t *body)
 {
-    return body ? body->ground_velocity : cb_v(0.0f, 0.0f, 0.0f);
+    return body ? body->ground_velocity : v3(0.0f, 0.0f, 0.0f);
 }
 
 const char_body_events_t *char_body_events(const char_body_t *body)
@@ -165,14 +165,14 @@ const char_body_events_t *char_body_events(const char_body_t *body)
 /** Rotation taking +Y to unit u (shortest arc). */
 static fm_quat_t quat_y_to(fm_vec3_t u)
 {
-    fm_vec3_t y = cb_v(0.0f, 1.0f, 0.0f);
-    float d = cb_dot(y, u);
+    fm_vec3_t y = v3(0.0f, 1.0f, 0.0f);
+    float d = v3_dot(y, u);
     fm_quat_t q;
     if (d < -0.999999f) {
         q = (fm_quat_t){{1.0f, 0.0f, 0.0f, 0.0f}}; /* half turn about X */
         return q;
     }
-    fm_vec3_t a = cb_cross(y, u);
+    fm_vec3_t a = v3_cross(y, u);
     q = (fm_quat_t){{a.x, a.y, a.z, 1.0f + d}};
     fm_quat_norm(&q, &q);
     return q;
@@ -184,10 +184,10 @@ static void sync_collider(char_body_t *body)
     coll_body_t *k = body->collider;
     if (!k) return;
     k->shape = COLL_SHAPE_CAPSULE;
-    k->half_extents = cb_v(body->settings.radius, body->inner_half_height, body->settings.radius);
-    k->xf.pos = cb_add(owner_position(body), body->settings.center_offset);
+    k->half_extents = v3(body->settings.radius, body->inner_half_height, body->settings.radius);
+    k->xf.pos = v3_add(owner_position(body), body->settings.center_offset);
     k->xf.rot = quat_y_to(body->settings.up);
-    k->xf.scale = cb_v(1.0f, 1.0f, 1.0f);
+    k->xf.scale = v3(1.0f, 1.0f, 1.0f);
 }
 
 void char_body_set_collider(char_body_t *body, coll_body_t *collider)
@@ -229,16 +229,16 @@ static void clear_floor(char_body_t *body)
 
 void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_forces)
 {
-    if (!body || !cb_finite(owner_pos)) return;
+    if (!body || !v3_finite(owner_pos)) return;
     body->origin = owner_pos;
     if (body->owner_pos) *body->owner_pos = owner_pos;
     /* The carry anchor belongs to the old place either way. */
     body->flags &= (uint8_t)~(CB_FLAG_CARRY | CB_FLAG_CARRIED);
     body->floor_instance = NULL;
-    body->ground_velocity = cb_v(0.0f, 0.0f, 0.0f);
+    body->ground_velocity = v3(0.0f, 0.0f, 0.0f);
     if (reset_forces) {
-        body->air_velocity = cb_v(0.0f, 0.0f, 0.0f);
-        body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+        body->air_velocity = v3(0.0f, 0.0f, 0.0f);
+        body->velocity = v3(0.0f, 0.0f, 0.0f);
         body->slide_speed = 0.0f;
         clear_floor(body);
     }
@@ -249,9 +249,9 @@ void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_force
 
 static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
 {
-    if (!cb_finite(v)) return cb_v(0.0f, 0.0f, 0.0f);
-    float l = cb_len(v);
-    if (l > max_speed) v = cb_scale(v, max_speed / l);
+    if (!v3_finite(v)) return v3(0.0f, 0.0f, 0.0f);
+    float l = v3_len(v);
+    if (l > max_speed) v = v3_scale(v, max_speed / l);
     return v;
 }
 
@@ -261,13 +261,13 @@ static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
  */
 static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n, float unit)
 {
-    float speed = cb_len(in_h);
-    float nu = cb_dot(n, up);
+    float speed = v3_len(in_h);
+    float nu = v3_dot(n, up);
     if (speed <= 0.0f || nu < 1e-3f) return in_h;
-    fm_vec3_t v = cb_madd(in_h, up, -cb_dot(in_h, n) / nu);
-    float l = cb_len(v);
+    fm_vec3_t v = v3_madd(in_h, up, -v3_dot(in_h, n) / nu);
+    float l = v3_len(v);
     if (!(l > 1e-9f * unit)) return in_h;
-    return cb_scale(v, speed / l);
+    return v3_scale(v, speed / l);
 }
 
 /** Gathers the candidates of a step that starts at pos (see cb_ctx_t.gather). */
@@ -278,7 +278,7 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
     /* The step's velocity (step 3 below) is at most the input across up, plus the air
      * velocity kept and the speed along up (airborne) or down a steep floor, plus a step of
      * gravity; the velocity across up is the input's again, so it is not counted twice. */
-    float speed = cb_len(cb_reject(input, up)) + cb_len(b->air_velocity) + fabsf(cb_dot(b->velocity, up)) +
+    float speed = v3_len(v3_reject(input, up)) + v3_len(b->air_velocity) + fabsf(v3_dot(b->velocity, up)) +
                   b->slide_speed + b->settings.gravity * dt;
     float move = speed * dt + carry + 4.0f * c->skin;
     /* the floor probe's reach, and the crack rule's ball dropped from the foot (it reaches
@@ -314,7 +314,7 @@ static void record_events(char_body_t *body, bool was_grounded, fm_vec3_t was_no
     float step = ev->step;
     ev->step = 0.0f;
     if (was_grounded && grounded && fabsf(step) >= 0.1f * body->settings.step_height && fabsf(step) > 0.0f &&
-        cb_dot(was_normal, body->floor_normal) > 0.9998f) {
+        v3_dot(was_normal, body->floor_normal) > 0.9998f) {
         ev->flags |= CHAR_BODY_EVENT_STEPPED;
         ev->step = step;
     }
@@ -369,14 +369,14 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     fm_vec3_t pos = owner_position(body);
     body->velocity = clamp_speed(body->velocity, max_speed);
-    fm_vec3_t input = cb_finite(body->input_velocity) ? body->input_velocity : cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t input = v3_finite(body->input_velocity) ? body->input_velocity : v3(0.0f, 0.0f, 0.0f);
     /* Only the part across up is used. A huge one (its square overflows a float) is
      * scaled down first, keeping its direction: it asks for the fastest motion, not none. */
-    input = cb_reject(input, s->up);
+    input = v3_reject(input, s->up);
     float big = fabsf(input.x) > fabsf(input.y) ? fabsf(input.x) : fabsf(input.y);
     if (fabsf(input.z) > big) big = fabsf(input.z);
-    if (big > max_speed) input = cb_scale(input, max_speed / big);
-    if (!cb_finite(input)) input = cb_v(0.0f, 0.0f, 0.0f);
+    if (big > max_speed) input = v3_scale(input, max_speed / big);
+    if (!v3_finite(input)) input = v3(0.0f, 0.0f, 0.0f);
 
     bool was_grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
     bool was_steep = (body->flags & CB_FLAG_STEEP) != 0;
@@ -387,14 +387,14 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
      * grown by this step's reach of motion (the platform's carry included), a stair step's
      * lift above and the floor probe below. Queries beyond it (the crack rule's ball, an
      * unstick) go to the scene. */
-    fm_vec3_t carry = cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t carry = v3(0.0f, 0.0f, 0.0f);
     bool carried = was_grounded && s->follow_floor && coll_cb_carry_delta(&c, &carry);
     coll_gather_t gather;
-    gather_step(&c, &gather, pos, input, cb_len(carry), dt);
+    gather_step(&c, &gather, pos, input, v3_len(carry), dt);
     c.gather = &gather;
 
     /* 1. carry */
-    fm_vec3_t ground_v = cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t ground_v = v3(0.0f, 0.0f, 0.0f);
     if (carried) ground_v = coll_cb_carry(&c, &pos, carry);
     else body->flags &= (uint8_t)~CB_FLAG_CARRIED;
 
@@ -402,8 +402,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     coll_cb_recover(&c, &pos, &body->velocity);
 
     /* 3. velocity: input across up, the along-up part from the resolved velocity */
-    fm_vec3_t in_h = cb_reject(input, up);
-    float v_up = cb_dot(body->velocity, up);
+    fm_vec3_t in_h = v3_reject(input, up);
+    float v_up = v3_dot(body->velocity, up);
     fm_vec3_t v;
     /* (a float rejection along a tilted up leaves a residue of either sign: not a jump) */
     bool walking = was_grounded && !was_steep && v_up <= c.tiny / dt;
@@ -414,21 +414,21 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         v_up -= s->gravity * dt;
         if (v_up < -s->max_fall_speed) v_up = -s->max_fall_speed;
         /* airborne: the input, plus what was kept of the floor's velocity on leaving it */
-        v = cb_madd(cb_add(in_h, body->air_velocity), up, v_up);
+        v = v3_madd(v3_add(in_h, body->air_velocity), up, v_up);
         fm_vec3_t n = body->floor_normal;
-        fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), n));
-        float sin_slope = -cb_dot(down_hill, up);
+        fm_vec3_t down_hill = v3_norm(v3_reject(v3_scale(up, -1.0f), n));
+        float sin_slope = -v3_dot(down_hill, up);
         if (was_grounded && was_steep && v_up <= 0.0f && sin_slope > 1e-3f) {
             /* Steep floor: gravity acts along it. The body keeps its speed down the slope
              * and gains g sin(slope) per second; input moves it across, never uphill. */
-            fm_vec3_t nh = cb_norm(cb_reject(n, up));
-            float into = cb_dot(in_h, nh);
-            if (into < 0.0f) in_h = cb_madd(in_h, nh, -into);
+            fm_vec3_t nh = v3_norm(v3_reject(n, up));
+            float into = v3_dot(in_h, nh);
+            if (into < 0.0f) in_h = v3_madd(in_h, nh, -into);
             float speed = body->slide_speed + s->gravity * sin_slope * dt;
             float cap = s->max_fall_speed / sin_slope;
             body->slide_speed = speed < cap ? speed : cap;
-            v = cb_madd(in_h, down_hill, body->slide_speed);
-            v_up = cb_dot(v, up);
+            v = v3_madd(in_h, down_hill, body->slide_speed);
+            v_up = v3_dot(v, up);
         } else {
             body->slide_speed = 0.0f;
         }
@@ -441,11 +441,11 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.ev = &body->events;
     const fm_vec3_t start = pos;
     fm_vec3_t old_foot = cb_foot(&c, pos);
-    coll_cb_slide(&c, &pos, cb_scale(v, dt), &body->velocity, walking);
+    coll_cb_slide(&c, &pos, v3_scale(v, dt), &body->velocity, walking);
     if (body->slide_speed > 0.0f) {
         /* Whatever blocked the slide down the slope also took its speed. */
-        fm_vec3_t down_hill = cb_norm(cb_reject(cb_scale(up, -1.0f), body->floor_normal));
-        float kept = cb_dot(body->velocity, down_hill);
+        fm_vec3_t down_hill = v3_norm(v3_reject(v3_scale(up, -1.0f), body->floor_normal));
+        float kept = v3_dot(body->velocity, down_hill);
         if (kept < body->slide_speed) body->slide_speed = kept > 0.0f ? kept : 0.0f;
     }
 
@@ -457,8 +457,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
      * with, so no fall speed accumulates at rest, and a rise stopped by a ceiling shows on
      * the next step (it moves no further up). Unobstructed, the velocity stays exact. The
      * floor probe then drops the part along up on a walkable floor. */
-    fm_vec3_t moved = cb_scale(cb_sub(pos, start), 1.0f / dt);
-    if (cb_finite(moved) && cb_len(cb_sub(moved, body->velocity)) * dt > 1e-4f * c.radius) body->velocity = moved;
+    fm_vec3_t moved = v3_scale(v3_sub(pos, start), 1.0f / dt);
+    if (v3_finite(moved) && v3_len(v3_sub(moved, body->velocity)) * dt > 1e-4f * c.radius) body->velocity = moved;
 
     /* 6. probe; where the body cannot stand (no room for the lift onto the floor under
      *    a ledge or an overhang) it does not go: back to the start of the slide. */
@@ -467,22 +467,22 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
      * while it rises: a rise that an overhang's slope turned downwards this step is not
      * leaving anything, and without the probe it ended with the foot inside the floor it
      * started from (the step zone hides a floor from the sweep). */
-    const bool rising = jumping && cb_dot(cb_sub(slid, start), up) > 0.0f;
+    const bool rising = jumping && v3_dot(v3_sub(slid, start), up) > 0.0f;
     if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
         /* Falling, only the move across up is undone: the body still falls straight down
          * from where it was (landing in front of a kerb it has no room to climb, under an
          * overhang, instead of hanging in the air at the start of every step). */
-        float fall = cb_dot(cb_sub(slid, start), up);
+        float fall = v3_dot(v3_sub(slid, start), up);
         bool kept = false;
         if (!walking && !jumping && fall < -c.tiny) {
             pos = start;
-            coll_cb_move_swept(&c, &pos, cb_scale(up, fall));
-            body->velocity = cb_scale(cb_sub(pos, start), 1.0f / dt);
+            coll_cb_move_swept(&c, &pos, v3_scale(up, fall));
+            body->velocity = v3_scale(v3_sub(pos, start), 1.0f / dt);
             kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }
         if (!kept) {
             pos = start;
-            body->velocity = cb_v(0.0f, 0.0f, 0.0f);
+            body->velocity = v3(0.0f, 0.0f, 0.0f);
             coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }
     }
@@ -492,24 +492,24 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     bool grounded = (body->flags & CB_FLAG_GROUNDED) != 0;
     if (was_grounded && !grounded) {
         fm_vec3_t keep = ground_v;
-        if (s->leave_velocity == CHAR_BODY_LEAVE_HORIZONTAL) keep = cb_reject(keep, up);
-        if (s->leave_velocity == CHAR_BODY_LEAVE_DROP) keep = cb_v(0.0f, 0.0f, 0.0f);
-        body->velocity = cb_add(body->velocity, keep);
-        body->air_velocity = cb_reject(keep, up); /* the part along up is in the velocity */
+        if (s->leave_velocity == CHAR_BODY_LEAVE_HORIZONTAL) keep = v3_reject(keep, up);
+        if (s->leave_velocity == CHAR_BODY_LEAVE_DROP) keep = v3(0.0f, 0.0f, 0.0f);
+        body->velocity = v3_add(body->velocity, keep);
+        body->air_velocity = v3_reject(keep, up); /* the part along up is in the velocity */
         body->flags &= (uint8_t)~CB_FLAG_CARRIED;
     } else if (grounded) {
-        body->air_velocity = cb_v(0.0f, 0.0f, 0.0f);
+        body->air_velocity = v3(0.0f, 0.0f, 0.0f);
     } else if (body->events.flags & CHAR_BODY_EVENT_HIT_WALL) {
         /* a wall met in the air stops the kept velocity going into it */
         fm_vec3_t n = body->events.wall_normal;
-        float into = cb_dot(body->air_velocity, n);
-        if (into < 0.0f) body->air_velocity = cb_madd(body->air_velocity, n, -into);
+        float into = v3_dot(body->air_velocity, n);
+        if (into < 0.0f) body->air_velocity = v3_madd(body->air_velocity, n, -into);
     }
-    body->ground_velocity = grounded ? ground_v : cb_v(0.0f, 0.0f, 0.0f);
+    body->ground_velocity = grounded ? ground_v : v3(0.0f, 0.0f, 0.0f);
     record_events(body, was_grounded, was_floor_normal, v_up, jumping);
 
     body->velocity = clamp_speed(body->velocity, max_speed);
-    if (cb_finite(pos)) {
+    if (v3_finite(pos)) {
         body->origin = pos;
         if (body->owner_pos) *body->owner_pos = pos;
     }

@@ -17,19 +17,19 @@
  */
 static fm_vec3_t extrapolate_half_step(fm_vec3_t prev, fm_vec3_t cur, float still)
 {
-    float lp = cb_len(prev), lc = cb_len(cur);
-    if (!(lp > still) || !(lc > still)) return cb_madd(cur, cb_sub(cur, prev), 0.5f);
-    fm_vec3_t axis = cb_cross(prev, cur);
-    float s = cb_len(axis) / (lp * lc), co = cb_dot(prev, cur) / (lp * lc);
+    float lp = v3_len(prev), lc = v3_len(cur);
+    if (!(lp > still) || !(lc > still)) return v3_madd(cur, v3_sub(cur, prev), 0.5f);
+    fm_vec3_t axis = v3_cross(prev, cur);
+    float s = v3_len(axis) / (lp * lc), co = v3_dot(prev, cur) / (lp * lc);
     fm_vec3_t v = cur;
     if (s > 1e-7f) {
-        axis = cb_scale(axis, 1.0f / (s * lp * lc));
+        axis = v3_scale(axis, 1.0f / (s * lp * lc));
         float ch = sqrtf(0.5f * (1.0f + co) > 0.0f ? 0.5f * (1.0f + co) : 0.0f), sh = sqrtf(0.5f * (1.0f - co) > 0.0f ? 0.5f * (1.0f - co) : 0.0f);
         /* Rodrigues, by half the angle; axis is perpendicular to cur */
-        v = cb_add(cb_scale(cur, ch), cb_scale(cb_cross(axis, cur), sh));
+        v = v3_add(v3_scale(cur, ch), v3_scale(v3_cross(axis, cur), sh));
     }
     float grow = lc + 0.5f * (lc - lp);
-    return cb_scale(v, (grow > 0.0f ? grow : 0.0f) / lc);
+    return v3_scale(v, (grow > 0.0f ? grow : 0.0f) / lc);
 }
 
 bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
@@ -42,8 +42,8 @@ bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
         if (c->scene->meshes[i] == b->floor_instance) present = true;
     if (!present) return false;
     fm_vec3_t now = coll_transform_point(&b->floor_instance->xf, b->floor_local_point);
-    *delta = cb_sub(now, b->floor_world_point);
-    return cb_finite(*delta);
+    *delta = v3_sub(now, b->floor_world_point);
+    return v3_finite(*delta);
 }
 
 fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
@@ -55,12 +55,12 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
      * velocity over the step (at mid-step); extrapolated by half a step from the previous
      * chord, a turning platform's tangent at take-off is right to second order (a jump off
      * a turntable at 1 rev/s would otherwise leave rotated by half a step). */
-    fm_vec3_t chord = cb_scale(delta, 1.0f / c->dt);
+    fm_vec3_t chord = v3_scale(delta, 1.0f / c->dt);
     fm_vec3_t v = chord;
     if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord, c->tiny);
     b->carry_velocity = chord;
     b->flags |= CB_FLAG_CARRIED;
-    return cb_finite(v) ? v : cb_v(0.0f, 0.0f, 0.0f);
+    return v3_finite(v) ? v : v3(0.0f, 0.0f, 0.0f);
 }
 
 /** What holds the body up at the end of a step. */
@@ -99,58 +99,58 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const fm_vec3_t up = c->up;
     const float r = c->radius, len = c->step + reach + 0.5f * r;
     const fm_vec3_t foot = cb_foot(c, pos);
-    fm_vec3_t b0 = cb_madd(foot, up, r + c->step);
+    fm_vec3_t b0 = v3_madd(foot, up, r + c->step);
     coll_sweep_hit_t h1;
-    if (!cb_sweep(c, b0, r, 0.0f, cb_scale(up, -len), &h1) ||
-        !isfinite(h1.t) || !cb_finite(h1.normal) || !cb_finite(h1.point))
+    if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -len), &h1) ||
+        !isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point))
         return false;
-    float n1u = cb_dot(h1.normal, up);
+    float n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
      * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
-    if (under && cb_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(cb_dot(cb_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
+    if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
+        fabsf(v3_dot(v3_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
-    float contact = cb_dot(cb_sub(h1.point, foot), up); /* lowest contact height above the foot */
+    float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
     float gap = d1 - c->step; /* resting on the first contact (the body is not moved sideways) */
     fm_vec3_t normal = h1.normal;
-    fm_vec3_t tangent = cb_madd(cb_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
-    if (cb_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
-        fm_vec3_t downhill = cb_norm(tangent);
+    fm_vec3_t tangent = v3_madd(v3_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
+    if (v3_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
+        fm_vec3_t downhill = v3_norm(tangent);
         /* lifted off the first contact by more than the queries' touch tolerance */
-        fm_vec3_t b1 = cb_madd(cb_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
+        fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
-        bool met = cb_sweep(c, b1, r, 0.0f, cb_scale(downhill, 2.0f * r), &h2);
-        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -cb_dot(downhill, up) : 0.0f;
-        fm_vec3_t across = cb_norm(cb_reject(downhill, up));
-        if (!met && n1u > 0.995f && cb_len(across) > 0.5f) {
+        bool met = cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, 2.0f * r), &h2);
+        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -v3_dot(downhill, up) : 0.0f;
+        fm_vec3_t across = v3_norm(v3_reject(downhill, up));
+        if (!met && n1u > 0.995f && v3_len(across) > 0.5f) {
             /* Resting on an edge almost under its centre the tangent barely descends: the
              * ball would roll off it and drop. Move it off across up by a radius, then down
              * by half a radius: the far side of a gap a few millimetres lower than this edge
              * (a tile beside a tile) is met on the way. */
-            fm_vec3_t off = cb_scale(across, r);
+            fm_vec3_t off = v3_scale(across, r);
             met = cb_sweep(c, b1, r, 0.0f, off, &h2);
-            if (!met && cb_sweep(c, cb_add(b1, off), r, 0.0f, cb_scale(up, -0.5f * r), &h2)) {
+            if (!met && cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &h2)) {
                 met = true;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
             }
         }
-        if (!met || !isfinite(h2.t) || !cb_finite(h2.normal) || cb_dot(h2.normal, up) < -0.1f)
+        if (!met || !isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
             return false; /* rolls off (a ledge), or into a ceiling */
         if (descent > 0.5f * r) return false;
-        float c2 = cb_dot(cb_sub(h2.point, foot), up);
+        float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
-        fm_vec3_t side1 = cb_norm(cb_reject(h1.normal, up)), side2 = cb_norm(cb_reject(h2.normal, up));
+        fm_vec3_t side1 = v3_norm(v3_reject(h1.normal, up)), side2 = v3_norm(v3_reject(h2.normal, up));
         /* Over a floor the foot could step down to, only a gap between surfaces at one
          * level holds the ball (tiles, a slab beside a slab), not a stair's nosings. */
         if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - c->contact_eps))
             return false;
-        if (cb_dot(side1, side2) < -0.05f) {
-            normal = cb_norm(cb_add(h1.normal, h2.normal)); /* a wedge */
-            if (cb_dot(normal, up) < b->cos_floor_max_angle) normal = up;
-        } else if (cb_dot(h2.normal, up) >= b->cos_floor_max_angle && descent <= 0.1f * r) {
+        if (v3_dot(side1, side2) < -0.05f) {
+            normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
+            if (v3_dot(normal, up) < b->cos_floor_max_angle) normal = up;
+        } else if (v3_dot(h2.normal, up) >= b->cos_floor_max_angle && descent <= 0.1f * r) {
             normal = h2.normal; /* rolled across a narrow crack onto the floor beyond it */
         } else {
             return false;
@@ -176,35 +176,35 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
 static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
 {
     const char_body_t *b = c->body;
-    fm_vec3_t left = cb_scale(c->up, -dist);
+    fm_vec3_t left = v3_scale(c->up, -dist);
     for (int it = 0; it < 3; it++) {
-        float len = cb_len(left);
+        float len = v3_len(left);
         if (!(len > c->tiny)) return;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit) ||
-            !isfinite(hit.t) || !cb_finite(hit.normal)) {
-            *pos = cb_add(*pos, left);
+            !isfinite(hit.t) || !v3_finite(hit.normal)) {
+            *pos = v3_add(*pos, left);
             return;
         }
         if (hit.t <= 0.0f && hit.depth > 0.0f) return;
         float travel = len * hit.t - c->skin;
         if (travel >= len - c->skin) {
-            *pos = cb_add(*pos, left); /* the contact is the target itself */
+            *pos = v3_add(*pos, left); /* the contact is the target itself */
             return;
         }
-        if (travel > 0.0f) *pos = cb_madd(*pos, left, travel / len);
-        left = cb_scale(left, 1.0f - (travel > 0.0f ? travel / len : 0.0f));
+        if (travel > 0.0f) *pos = v3_madd(*pos, left, travel / len);
+        left = v3_scale(left, 1.0f - (travel > 0.0f ? travel / len : 0.0f));
         /* Only an edge under the capsule is slid off, and only onwards (the way the body
          * moved this step: never back, off the nosing ahead of a body climbing stairs). */
-        if (!(cb_dot(hit.normal, c->up) > 0.05f)) return;
-        left = cb_madd(left, hit.normal, -cb_dot(left, hit.normal));
+        if (!(v3_dot(hit.normal, c->up) > 0.05f)) return;
+        left = v3_madd(left, hit.normal, -v3_dot(left, hit.normal));
         /* onwards: across up, within 60 degrees of the velocity (not down a steep face
          * beside a body sliding along a wall: that is back, or sideways, off it); a body
          * moving only along up keeps the old rule: along its velocity */
-        fm_vec3_t la = cb_reject(left, c->up), va = cb_reject(b->velocity, c->up);
-        float lv = cb_len(la) * cb_len(va);
-        if (lv > 0.0f ? !(cb_dot(la, va) > 0.5f * lv) : !(cb_dot(left, b->velocity) > 0.0f)) return;
-        if (!(cb_dot(left, c->up) < -c->tiny)) return;
+        fm_vec3_t la = v3_reject(left, c->up), va = v3_reject(b->velocity, c->up);
+        float lv = v3_len(la) * v3_len(va);
+        if (lv > 0.0f ? !(v3_dot(la, va) > 0.5f * lv) : !(v3_dot(left, b->velocity) > 0.0f)) return;
+        if (!(v3_dot(left, c->up) < -c->tiny)) return;
     }
 }
 
@@ -213,8 +213,8 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
 static bool resting_on(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t n)
 {
     coll_sweep_hit_t h;
-    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, cb_scale(c->up, -c->contact_eps), &h) &&
-           isfinite(h.t) && cb_finite(h.normal) && cb_dot(h.normal, n) > 0.999f;
+    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) &&
+           isfinite(h.t) && v3_finite(h.normal) && v3_dot(h.normal, n) > 0.999f;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
@@ -227,13 +227,13 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     support_t s = {0};
     bool fits = true;
     if (!jumping) {
-        fm_vec3_t origin = cb_madd(cb_foot(c, *pos), up, above);
+        fm_vec3_t origin = v3_madd(cb_foot(c, *pos), up, above);
         coll_ray_hit_t hit;
-        bool found = cb_ray(c, origin, cb_scale(up, -1.0f), above + c->snap, &hit) &&
-                     cb_finite(hit.normal) && cb_finite(hit.point);
+        bool found = cb_ray(c, origin, v3_scale(up, -1.0f), above + c->snap, &hit) &&
+                     v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
             float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
-            float nu = cb_dot(hit.normal, up);
+            float nu = v3_dot(hit.normal, up);
             if (nu >= b->cos_floor_max_angle) {
                 /* A one-way platform is a floor within a step of the foot, not one the
                  * body fell back into after jumping up through it short of its top. */
@@ -277,14 +277,14 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             if (s.gap > 0.0f) {
                 snap_down(c, pos, s.gap);
             } else {
-                float done = coll_cb_move_swept(c, pos, cb_scale(up, -s.gap));
+                float done = coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
                 if (s.gap < -step_eps && done * -s.gap < -s.gap - step_eps) fits = false;
             }
-            if (c->ev) c->ev->step += cb_dot(cb_sub(*pos, before), up);
+            if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
              * motion, and the velocity says so */
-            fm_vec3_t across = cb_reject(cb_sub(*pos, before), up);
-            if (cb_dot(across, across) > 0.0f) b->velocity = cb_madd(b->velocity, across, 1.0f / c->dt);
+            fm_vec3_t across = v3_reject(v3_sub(*pos, before), up);
+            if (v3_dot(across, across) > 0.0f) b->velocity = v3_madd(b->velocity, across, 1.0f / c->dt);
         }
     }
 
@@ -301,7 +301,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     b->floor_id = s.id;
     /* A walkable floor ends any motion along up: no creep, no bounce. On a steep surface
      * the velocity stays the one the body moved with (the slide took what went into it). */
-    if (!s.steep) b->velocity = cb_reject(b->velocity, up);
+    if (!s.steep) b->velocity = v3_reject(b->velocity, up);
     if (s.instance && b->settings.follow_floor) {
         fm_vec3_t anchor = s.steep ? s.point : cb_foot(c, *pos);
         fm_vec3_t local;

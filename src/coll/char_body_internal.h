@@ -1,7 +1,7 @@
 /**
  * @file char_body_internal.h
- * @brief Private pieces of the character body shared by its source files: small by-value
- *        vector helpers, the per-step context and the phase functions of one step.
+ * @brief Private pieces of the character body shared by its source files: the per-step
+ *        context and the phase functions of one step (vectors: vec3.h).
  */
 #ifndef COLL_CHAR_BODY_INTERNAL_H
 #define COLL_CHAR_BODY_INTERNAL_H
@@ -9,6 +9,7 @@
 #include <math.h>
 #include "coll/char_body.h"
 #include "gather.h"
+#include "vec3.h"
 
 /** Private bits of char_body_t.flags. */
 enum {
@@ -51,27 +52,6 @@ enum {
 /** Contacts used by the overlap recovery. */
 #define CB_MAX_CONTACTS 4
 
-static inline fm_vec3_t cb_v(float x, float y, float z) { fm_vec3_t r = {{x, y, z}}; return r; }
-static inline fm_vec3_t cb_add(fm_vec3_t a, fm_vec3_t b) { return cb_v(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline fm_vec3_t cb_sub(fm_vec3_t a, fm_vec3_t b) { return cb_v(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline fm_vec3_t cb_scale(fm_vec3_t a, float s) { return cb_v(a.x * s, a.y * s, a.z * s); }
-static inline fm_vec3_t cb_madd(fm_vec3_t a, fm_vec3_t b, float s) { return cb_v(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
-static inline float cb_dot(fm_vec3_t a, fm_vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static inline fm_vec3_t cb_cross(fm_vec3_t a, fm_vec3_t b)
-{
-    return cb_v(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static inline float cb_len(fm_vec3_t a) { return sqrtf(cb_dot(a, a)); }
-static inline bool cb_finite(fm_vec3_t a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
-/** Unit vector, or the zero vector when a is (nearly) zero or not finite. */
-static inline fm_vec3_t cb_norm(fm_vec3_t a)
-{
-    float l = cb_len(a);
-    if (!(l > 1e-12f) || !isfinite(l)) return cb_v(0.0f, 0.0f, 0.0f);
-    return cb_scale(a, 1.0f / l);
-}
-/** a without its component along unit n. */
-static inline fm_vec3_t cb_reject(fm_vec3_t a, fm_vec3_t n) { return cb_madd(a, n, -cb_dot(a, n)); }
 
 /** What one step works with: the scene, the body's cached geometry and the current up. */
 typedef struct {
@@ -123,17 +103,17 @@ static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_con
 /** Full capsule centre of an owner position. */
 static inline fm_vec3_t cb_center(const cb_ctx_t *c, fm_vec3_t pos)
 {
-    return cb_add(pos, c->body->settings.center_offset);
+    return v3_add(pos, c->body->settings.center_offset);
 }
 /** Bottom point of the full capsule. */
 static inline fm_vec3_t cb_foot(const cb_ctx_t *c, fm_vec3_t pos)
 {
-    return cb_madd(cb_center(c, pos), c->up, -c->half_height);
+    return v3_madd(cb_center(c, pos), c->up, -c->half_height);
 }
 /** Centre of the shortened sweep capsule. */
 static inline fm_vec3_t cb_sweep_center(const cb_ctx_t *c, fm_vec3_t pos)
 {
-    return cb_madd(cb_center(c, pos), c->up, c->sweep_lift);
+    return v3_madd(cb_center(c, pos), c->up, c->sweep_lift);
 }
 
 

@@ -8,14 +8,14 @@
 /** v without its part going into plane n (a part leaving the plane is kept). */
 static fm_vec3_t clip_plane(fm_vec3_t v, fm_vec3_t n)
 {
-    float d = cb_dot(v, n);
-    return d < 0.0f ? cb_madd(v, n, -d) : v;
+    float d = v3_dot(v, n);
+    return d < 0.0f ? v3_madd(v, n, -d) : v;
 }
 
 static bool outside_all(fm_vec3_t v, const fm_vec3_t *planes, int np, float tol)
 {
     for (int k = 0; k < np; k++)
-        if (cb_dot(v, planes[k]) < -tol) return false;
+        if (v3_dot(v, planes[k]) < -tol) return false;
     return true;
 }
 
@@ -29,23 +29,23 @@ static bool outside_all(fm_vec3_t v, const fm_vec3_t *planes, int np, float tol)
  */
 static fm_vec3_t clip_planes(fm_vec3_t v, const fm_vec3_t *planes, int np)
 {
-    float tol = 1e-5f * cb_len(v);
+    float tol = 1e-5f * v3_len(v);
     if (outside_all(v, planes, np, tol)) return v;
-    fm_vec3_t best = cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t best = v3(0.0f, 0.0f, 0.0f);
     float best_l2 = 0.0f;
     for (int i = 0; i < np; i++) {
-        float d = cb_dot(v, planes[i]);
+        float d = v3_dot(v, planes[i]);
         if (d >= 0.0f) continue;
-        fm_vec3_t cv = cb_madd(v, planes[i], -d);
-        float l2 = cb_dot(cv, cv);
+        fm_vec3_t cv = v3_madd(v, planes[i], -d);
+        float l2 = v3_dot(cv, cv);
         if (l2 > best_l2 && outside_all(cv, planes, np, tol)) { best = cv; best_l2 = l2; }
     }
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++) {
-            fm_vec3_t dir = cb_norm(cb_cross(planes[i], planes[j]));
-            if (cb_len(dir) < 0.5f) continue;
-            fm_vec3_t cv = cb_scale(dir, cb_dot(dir, v));
-            float l2 = cb_dot(cv, cv);
+            fm_vec3_t dir = v3_norm(v3_cross(planes[i], planes[j]));
+            if (v3_len(dir) < 0.5f) continue;
+            fm_vec3_t cv = v3_scale(dir, v3_dot(dir, v));
+            float l2 = v3_dot(cv, cv);
             if (l2 > best_l2 && outside_all(cv, planes, np, tol)) { best = cv; best_l2 = l2; }
         }
     return best;
@@ -61,21 +61,21 @@ static fm_vec3_t clip_planes(fm_vec3_t v, const fm_vec3_t *planes, int np)
  */
 static fm_vec3_t no_climb(const cb_ctx_t *c, fm_vec3_t v0, fm_vec3_t v, const fm_vec3_t *planes, int np)
 {
-    float u0 = cb_dot(v0, c->up);
+    float u0 = v3_dot(v0, c->up);
     float cap = u0 > 0.0f ? u0 : 0.0f;
-    if (!(cb_dot(v, c->up) > cap + 1e-6f * cb_len(v0))) return v;
+    if (!(v3_dot(v, c->up) > cap + 1e-6f * v3_len(v0))) return v;
     for (int k = np - 1; k >= 0; k--) {
         fm_vec3_t n = planes[k];
-        float nu = cb_dot(n, c->up);
+        float nu = v3_dot(n, c->up);
         if (nu <= 0.0f || nu >= c->body->cos_floor_max_angle) continue;
-        fm_vec3_t nh = cb_norm(cb_reject(n, c->up));
-        float nn = cb_dot(n, nh);
+        fm_vec3_t nh = v3_norm(v3_reject(n, c->up));
+        float nn = v3_dot(n, nh);
         if (!(nn > 1e-3f)) continue;
-        fm_vec3_t side = cb_norm(cb_cross(n, c->up));
+        fm_vec3_t side = v3_norm(v3_cross(n, c->up));
         /* on the plane (w.n = 0) with w.up = u0: a nh + u0 up, plus v's part along the plane's level line */
-        fm_vec3_t w = cb_madd(cb_madd(cb_scale(side, cb_dot(v, side)), nh, -u0 * nu / nn), c->up, u0);
-        if (outside_all(w, planes, np, 1e-5f * cb_len(v0))) return w;
-        return cb_v(0.0f, 0.0f, 0.0f);
+        fm_vec3_t w = v3_madd(v3_madd(v3_scale(side, v3_dot(v, side)), nh, -u0 * nu / nn), c->up, u0);
+        if (outside_all(w, planes, np, 1e-5f * v3_len(v0))) return w;
+        return v3(0.0f, 0.0f, 0.0f);
     }
     return v;
 }
@@ -89,36 +89,36 @@ static fm_vec3_t no_climb(const cb_ctx_t *c, fm_vec3_t v0, fm_vec3_t v, const fm
  */
 static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *hit)
 {
-    float nu = cb_dot(hit->normal, c->up);
-    float h = cb_dot(cb_sub(hit->point, cb_foot(c, pos)), c->up);
+    float nu = v3_dot(hit->normal, c->up);
+    float h = v3_dot(v3_sub(hit->point, cb_foot(c, pos)), c->up);
     if (nu > 0.0f && h <= c->step + cb_len_tol(c, CB_MARGIN)) return hit->normal;
-    fm_vec3_t nh = cb_norm(cb_reject(hit->normal, c->up));
-    return cb_len(nh) > 0.5f ? nh : hit->normal;
+    fm_vec3_t nh = v3_norm(v3_reject(hit->normal, c->up));
+    return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
 float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
-    float len = cb_len(d);
+    float len = v3_len(d);
     if (!(len > c->tiny) || !isfinite(len)) {
-        if (isfinite(len)) *pos = cb_add(*pos, d); /* sub-micrometre: below every tolerance */
+        if (isfinite(len)) *pos = v3_add(*pos, d); /* sub-micrometre: below every tolerance */
         return 1.0f;
     }
     coll_sweep_hit_t hit;
     if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit) ||
         !isfinite(hit.t)) {
-        *pos = cb_add(*pos, d);
+        *pos = v3_add(*pos, d);
         return 1.0f;
     }
     float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
     float reach = len * t;
     if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f)) {
         /* Touches only at the very end, within the skin: that is the target itself. */
-        *pos = cb_add(*pos, d);
+        *pos = v3_add(*pos, d);
         return 1.0f;
     }
     float travel = reach - c->skin;
     if (!(travel > 0.0f)) return 0.0f;
-    *pos = cb_madd(*pos, d, travel / len);
+    *pos = v3_madd(*pos, d, travel / len);
     return travel / len;
 }
 
@@ -130,29 +130,29 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
  */
 static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_hit_t *hit)
 {
-    float nu = cb_dot(hit->normal, c->up);
+    float nu = v3_dot(hit->normal, c->up);
     if (nu <= 0.05f) return false;
-    fm_vec3_t ball = cb_madd(cb_sweep_center(c, *pos), c->up, -c->sweep_ihh);
-    fm_vec3_t rel = cb_sub(ball, hit->point);
-    if (cb_dot(rel, c->up) <= cb_len_tol(c, CB_STEP_EPS)) return false; /* not under the bottom ball */
+    fm_vec3_t ball = v3_madd(cb_sweep_center(c, *pos), c->up, -c->sweep_ihh);
+    fm_vec3_t rel = v3_sub(ball, hit->point);
+    if (v3_dot(rel, c->up) <= cb_len_tol(c, CB_STEP_EPS)) return false; /* not under the bottom ball */
     /* A plane under the contact lies r / nu below the ball centre along the axis. */
     float reach = c->radius / (nu > 0.1f ? nu : 0.1f) + 2.0f * cb_len_tol(c, CB_MARGIN);
     coll_ray_hit_t rh;
-    if (cb_ray(c, ball, cb_scale(c->up, -1.0f), reach, &rh))
+    if (cb_ray(c, ball, v3_scale(c->up, -1.0f), reach, &rh))
         return false;
-    fm_vec3_t h = cb_reject(rel, c->up);
-    float hl = cb_len(h);
-    fm_vec3_t dir = hl > cb_len_tol(c, 1e-5f) ? cb_scale(h, 1.0f / hl) : cb_norm(cb_reject(hit->normal, c->up));
-    if (cb_len(dir) < 0.5f) return false;
+    fm_vec3_t h = v3_reject(rel, c->up);
+    float hl = v3_len(h);
+    fm_vec3_t dir = hl > cb_len_tol(c, 1e-5f) ? v3_scale(h, 1.0f / hl) : v3_norm(v3_reject(hit->normal, c->up));
+    if (v3_len(dir) < 0.5f) return false;
     float need = c->radius + c->skin - hl;
     if (need <= 0.0f) return false;
-    fm_vec3_t d = cb_scale(dir, need);
+    fm_vec3_t d = v3_scale(dir, need);
     coll_sweep_hit_t h2;
     if (cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &h2)) {
         float travel = need * h2.t - c->skin;
-        if (travel > 0.0f) *pos = cb_madd(*pos, dir, travel);
+        if (travel > 0.0f) *pos = v3_madd(*pos, dir, travel);
     } else {
-        *pos = cb_add(*pos, d);
+        *pos = v3_add(*pos, d);
     }
     return true;
 }
@@ -163,10 +163,10 @@ static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float belo
 {
     const char_body_t *b = c->body;
     coll_ray_hit_t rh;
-    if (!cb_ray(c, cb_madd(p, c->up, above), cb_scale(c->up, -1.0f), above + below, &rh) ||
-        cb_dot(rh.normal, c->up) < b->cos_floor_max_angle)
+    if (!cb_ray(c, v3_madd(p, c->up, above), v3_scale(c->up, -1.0f), above + below, &rh) ||
+        v3_dot(rh.normal, c->up) < b->cos_floor_max_angle)
         return false;
-    *h = cb_dot(cb_sub(rh.point, ref), c->up);
+    *h = v3_dot(v3_sub(rh.point, ref), c->up);
     return true;
 }
 
@@ -189,45 +189,45 @@ static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float belo
  */
 static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const coll_sweep_hit_t *hit, float *moved)
 {
-    if (!(cb_dot(hit->normal, c->up) > 0.0f) || !(c->step > 0.0f)) return false;
-    fm_vec3_t h = cb_reject(left, c->up);
-    float hl = cb_len(h);
+    if (!(v3_dot(hit->normal, c->up) > 0.0f) || !(c->step > 0.0f)) return false;
+    fm_vec3_t h = v3_reject(left, c->up);
+    float hl = v3_len(h);
     if (!(hl > cb_len_tol(c, 1e-5f))) return false;
     const float above = c->radius + c->step, eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot0 = cb_foot(c, *pos);
     float base;
     if (!floor_height(c, foot0, above, c->snap, foot0, &base)) return false;
     fm_vec3_t p = *pos;
-    float lift = c->step * coll_cb_move_swept(c, &p, cb_scale(c->up, c->step));
+    float lift = c->step * coll_cb_move_swept(c, &p, v3_scale(c->up, c->step));
     if (!(lift > cb_len_tol(c, 1e-4f))) return false;
     float f = coll_cb_move_swept(c, &p, h);
     if (!(f * hl > cb_len_tol(c, 1e-4f))) return false;
     /* down by the lift, keeping the contact that stops it */
-    fm_vec3_t down = cb_scale(c->up, -lift);
+    fm_vec3_t down = v3_scale(c->up, -lift);
     coll_sweep_hit_t dh;
     bool hung = cb_sweep(c, cb_sweep_center(c, p), c->radius, c->sweep_ihh, down, &dh) && isfinite(dh.t);
     float travel = hung ? lift * (dh.t > 0.0f ? dh.t : 0.0f) - c->skin : lift;
-    if (travel > 0.0f) p = cb_madd(p, c->up, -travel);
+    if (travel > 0.0f) p = v3_madd(p, c->up, -travel);
     fm_vec3_t foot = cb_foot(c, p);
-    float rise = cb_dot(cb_sub(foot, foot0), c->up) - base;
+    float rise = v3_dot(v3_sub(foot, foot0), c->up) - base;
     float floor_h;
     if (!floor_height(c, foot, above, c->snap, foot0, &floor_h)) return false;
     floor_h -= base;
     if (floor_h > c->step + eps || rise > c->step + eps) return false;
     if (rise > floor_h + c->skin + eps) {
         /* riding a nosing: a higher tread within a step must lie between foot and contact */
-        fm_vec3_t ahead = cb_reject(cb_sub(dh.point, foot), c->up);
-        fm_vec3_t probe = cb_madd(foot, ahead, 0.75f);
+        fm_vec3_t ahead = v3_reject(v3_sub(dh.point, foot), c->up);
+        fm_vec3_t probe = v3_madd(foot, ahead, 0.75f);
         float tread;
-        if (!hung || cb_len(ahead) > c->radius + eps ||
+        if (!hung || v3_len(ahead) > c->radius + eps ||
             !floor_height(c, probe, above + rise, c->snap, foot0, &tread))
             return false;
         tread -= base;
         if (!(tread > eps) || tread > c->step + eps) return false;
-    } else if (floor_h > rise && coll_cb_move_swept(c, &p, cb_scale(c->up, floor_h - rise)) < 1.0f) {
+    } else if (floor_h > rise && coll_cb_move_swept(c, &p, v3_scale(c->up, floor_h - rise)) < 1.0f) {
         return false;
     }
-    if (c->ev) c->ev->step += cb_dot(cb_sub(p, *pos), c->up);
+    if (c->ev) c->ev->step += v3_dot(v3_sub(p, *pos), c->up);
     *pos = p;
     *moved = f;
     return true;
@@ -247,25 +247,25 @@ static fm_vec3_t face_normal(const coll_sweep_hit_t *hit)
     fm_vec3_t v[3];
     coll_mesh_triangle(in->mesh, (uint32_t)hit->triangle, v);
     /* world-space face normal: local normal through the inverse scale, then the rotation */
-    fm_vec3_t ln = cb_cross(cb_sub(v[1], v[0]), cb_sub(v[2], v[0]));
+    fm_vec3_t ln = v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0]));
     const fm_vec3_t *sc = &in->xf.scale;
     if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return n;
-    ln = cb_v(ln.x / sc->x, ln.y / sc->y, ln.z / sc->z);
+    ln = v3(ln.x / sc->x, ln.y / sc->y, ln.z / sc->z);
     fm_vec3_t wn;
     fm_quat_rotate_vec3(&wn, &in->xf.rot, &ln);
-    wn = cb_norm(wn);
-    float d = cb_dot(wn, n);
-    if (d < 0.0f) { wn = cb_scale(wn, -1.0f); d = -d; }
+    wn = v3_norm(wn);
+    float d = v3_dot(wn, n);
+    if (d < 0.0f) { wn = v3_scale(wn, -1.0f); d = -d; }
     return d > 0.999f ? wn : n;
 }
 
 /** Step events of a slide hit: a ceiling met moving up, a wall (the plane slid along). */
 static void record_hit(const cb_ctx_t *c, fm_vec3_t motion, fm_vec3_t plane, fm_vec3_t normal)
 {
-    float nu = cb_dot(normal, c->up);
+    float nu = v3_dot(normal, c->up);
     if (nu < -0.3f) {
-        if (cb_dot(motion, c->up) > 0.0f) c->ev->flags |= CHAR_BODY_EVENT_HIT_CEILING;
-    } else if (cb_dot(plane, c->up) < c->body->cos_floor_max_angle) {
+        if (v3_dot(motion, c->up) > 0.0f) c->ev->flags |= CHAR_BODY_EVENT_HIT_CEILING;
+    } else if (v3_dot(plane, c->up) < c->body->cos_floor_max_angle) {
         c->ev->flags |= CHAR_BODY_EVENT_HIT_WALL;
         c->ev->wall_normal = plane;
     }
@@ -281,17 +281,17 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     /* Each clip starts from the intended motion and velocity (scaled by the time left), not
      * from the last clipped one: clipping an already-clipped leftover again can turn it
      * back out of a wide corner and ping-pong (Quake's primal_velocity check, made exact). */
-    const fm_vec3_t vel0 = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    const fm_vec3_t vel0 = vel ? *vel : v3(0.0f, 0.0f, 0.0f);
     float time_left = 1.0f;
     for (int it = 0; it < b->settings.max_slides; it++) {
-        float len = cb_len(rem);
+        float len = v3_len(rem);
         if (!(len > c->tiny)) break;
         coll_sweep_hit_t hit;
         if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, rem, &hit)) {
-            *pos = cb_add(*pos, rem);
+            *pos = v3_add(*pos, rem);
             break;
         }
-        if (!cb_finite(hit.normal) || !isfinite(hit.t)) break;
+        if (!v3_finite(hit.normal) || !isfinite(hit.t)) break;
         hit.normal = face_normal(&hit);
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
@@ -300,7 +300,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
              * (not swept: a sweep from inside stops at once); a push that would end
              * inside something else ends the slide here instead. */
             float d = hit.depth < c->radius ? hit.depth : c->radius;
-            if (!coll_cb_push_verified(c, pos, cb_scale(hit.normal, d + c->skin * 0.5f))) break;
+            if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -309,38 +309,38 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             float back = c->skin;
             if (travel > 0.0f) {
                 done = travel / len;
-                *pos = cb_madd(*pos, rem, done);
+                *pos = v3_madd(*pos, rem, done);
             } else {
                 back = len * t;
             }
-            float sep = back * -cb_dot(rem, hit.normal) / len;
-            if (sep < c->skin) *pos = cb_madd(*pos, hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f));
+            float sep = back * -v3_dot(rem, hit.normal) / len;
+            if (sep < c->skin) *pos = v3_madd(*pos, hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f));
         }
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
-        fm_vec3_t left = cb_scale(rem, 1.0f - done);
+        fm_vec3_t left = v3_scale(rem, 1.0f - done);
         time_left *= 1.0f - done;
-        if (!grounded && cb_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit)) {
+        if (!grounded && v3_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit)) {
             rem = left;
             continue;
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
         if (c->ev) record_hit(c, rem, n, hit.normal);
         float stepped = 0.0f;
-        if (grounded && step_ups < 2 && cb_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
+        if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
-            rem = cb_scale(cb_reject(left, c->up), 1.0f - stepped);
+            rem = v3_scale(v3_reject(left, c->up), 1.0f - stepped);
             time_left *= 1.0f - stepped;
             continue;
         }
         bool known = false;
         for (int i = 0; i < np; i++)
-            if (cb_dot(planes[i], n) > 0.9999f) known = true;
+            if (v3_dot(planes[i], n) > 0.9999f) known = true;
         if (!known && np < CB_MAX_PLANES) planes[np++] = n;
         if (known) {
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
-            *pos = cb_madd(*pos, n, c->skin * 0.1f);
+            *pos = v3_madd(*pos, n, c->skin * 0.1f);
         }
-        fm_vec3_t want = cb_scale(disp, time_left);
+        fm_vec3_t want = v3_scale(disp, time_left);
         rem = clip_planes(want, planes, np);
         if (vel) *vel = clip_planes(vel0, planes, np);
         if (!grounded) {
@@ -381,9 +381,9 @@ bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
     uint32_t n0 = overlaps_at(c, *pos, ct0);
-    fm_vec3_t np = cb_add(*pos, delta);
+    fm_vec3_t np = v3_add(*pos, delta);
     uint32_t n = overlaps_at(c, np, ct);
-    if (!cb_finite(np) || !no_worse(ct, n, ct0, n0, c->min_depth)) return false;
+    if (!v3_finite(np) || !no_worse(ct, n, ct0, n0, c->min_depth)) return false;
     *pos = np;
     return true;
 }
@@ -420,11 +420,11 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
 {
     const char_body_t *b = c->body;
     fm_vec3_t o = cb_sweep_center(c, from), e = cb_sweep_center(c, to);
-    fm_vec3_t d = cb_sub(e, o);
-    float len = cb_len(d);
+    fm_vec3_t d = v3_sub(e, o);
+    float len = v3_len(d);
     if (!(len > c->tiny)) return true;
-    fm_vec3_t dir = cb_scale(d, 1.0f / len);
-    float axial = fabsf(cb_dot(dir, c->up)), radial = sqrtf(axial < 1.0f ? 1.0f - axial * axial : 0.0f);
+    fm_vec3_t dir = v3_scale(d, 1.0f / len);
+    float axial = fabsf(v3_dot(dir, c->up)), radial = sqrtf(axial < 1.0f ? 1.0f - axial * axial : 0.0f);
     float reach = axial > 0.999f ? c->sweep_ihh : 0.0f;
     if (deep) {
         /* where the ray leaves the capsule: through the cylinder or through a cap */
@@ -434,7 +434,7 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
     }
     if (reach >= len) return true;
     coll_ray_hit_t h;
-    return !coll_raycast(c->scene, cb_madd(o, dir, reach), dir, len - reach, b->settings.read_mask, COLL_TYPE_MESH, &h);
+    return !coll_raycast(c->scene, v3_madd(o, dir, reach), dir, len - reach, b->settings.read_mask, COLL_TYPE_MESH, &h);
 }
 
 /**
@@ -458,35 +458,35 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     float deepest = 0.0f;
     bool trust = true, ceiling = false;
     for (uint32_t i = 0; i < n; i++) {
-        if (!(ct[i].depth > min_depth) || !cb_finite(ct[i].normal)) continue;
+        if (!(ct[i].depth > min_depth) || !v3_finite(ct[i].normal)) continue;
         if (ct[i].depth > deepest) deepest = ct[i].depth;
         if (ct[i].depth > c->radius) trust = false;
-        float nu = cb_dot(ct[i].normal, c->up);
+        float nu = v3_dot(ct[i].normal, c->up);
         if (nu < -0.1f) trust = false;
         if (nu < -0.3f) ceiling = true;
     }
     if (!(deepest > c->skin)) return;
     const bool deep = deepest >= 0.5f * c->radius;
     if (trust) {
-        fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
+        fm_vec3_t delta = v3(0.0f, 0.0f, 0.0f);
         for (int iter = 0; iter < 4; iter++)
             for (uint32_t i = 0; i < n; i++) {
                 if (!(ct[i].depth > min_depth)) continue;
-                float want = ct[i].depth + c->skin - cb_dot(delta, ct[i].normal);
-                if (want > 0.0f) delta = cb_madd(delta, ct[i].normal, want);
+                float want = ct[i].depth + c->skin - v3_dot(delta, ct[i].normal);
+                if (want > 0.0f) delta = v3_madd(delta, ct[i].normal, want);
             }
-        fm_vec3_t p = cb_add(*pos, delta);
-        if (cb_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep)) {
+        fm_vec3_t p = v3_add(*pos, delta);
+        if (v3_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep)) {
             *pos = p;
-            if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
+            if (vel) *vel = v3(0.0f, 0.0f, 0.0f);
             return;
         }
     }
     /* Search rings of growing distance: up first (unless a ceiling presses on it), then
      * eight directions across up. Never down. */
-    fm_vec3_t side = cb_norm(cb_reject(cb_v(1.0f, 0.0f, 0.0f), c->up));
-    if (cb_len(side) < 0.5f) side = cb_norm(cb_reject(cb_v(0.0f, 0.0f, 1.0f), c->up));
-    fm_vec3_t side2 = cb_cross(c->up, side);
+    fm_vec3_t side = v3_norm(v3_reject(v3(1.0f, 0.0f, 0.0f), c->up));
+    if (v3_len(side) < 0.5f) side = v3_norm(v3_reject(v3(0.0f, 0.0f, 1.0f), c->up));
+    fm_vec3_t side2 = v3_cross(c->up, side);
     const float h = 2.0f * c->half_height;
     const float dists[4] = {0.25f * h, 0.5f * h, h, 2.0f * h};
     for (int k = 0; k < 4; k++) {
@@ -494,13 +494,13 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
             fm_vec3_t d = c->up;
             if (dir > 0) {
                 float a = (float)(dir - 1) * (0.25f * FM_PI);
-                d = cb_madd(cb_scale(side, cosf(a)), side2, sinf(a));
+                d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             }
-            fm_vec3_t p = cb_madd(*pos, d, dists[k]);
+            fm_vec3_t p = v3_madd(*pos, d, dists[k]);
             /* deep in a solid, up is the way out even through other faces (a slab stack) */
-            if (cb_finite(p) && free_at(c, p) && ((deep && dir == 0) || reachable(c, *pos, p, deep))) {
+            if (v3_finite(p) && free_at(c, p) && ((deep && dir == 0) || reachable(c, *pos, p, deep))) {
                 *pos = p;
-                if (vel) *vel = cb_v(0.0f, 0.0f, 0.0f);
+                if (vel) *vel = v3(0.0f, 0.0f, 0.0f);
                 return;
             }
         }
@@ -514,36 +514,36 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     uint32_t n = n0;
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
     fm_vec3_t p = *pos;
-    fm_vec3_t v = vel ? *vel : cb_v(0.0f, 0.0f, 0.0f);
+    fm_vec3_t v = vel ? *vel : v3(0.0f, 0.0f, 0.0f);
     const float min_depth = c->min_depth;
     bool stuck = deeper_than(ct0, n0, c->skin); /* at the last kept position */
     for (int pass = 0; pass < 3; pass++) {
-        fm_vec3_t delta = cb_v(0.0f, 0.0f, 0.0f);
+        fm_vec3_t delta = v3(0.0f, 0.0f, 0.0f);
         bool any = false;
         /* Gauss-Seidel on positions: each contact wants depth + half a skin of separation. */
         for (int iter = 0; iter < 4; iter++) {
             for (uint32_t i = 0; i < n; i++) {
-                if (!(ct[i].depth > min_depth) || !cb_finite(ct[i].normal)) continue;
-                float want = ct[i].depth + 0.5f * c->skin - cb_dot(delta, ct[i].normal);
+                if (!(ct[i].depth > min_depth) || !v3_finite(ct[i].normal)) continue;
+                float want = ct[i].depth + 0.5f * c->skin - v3_dot(delta, ct[i].normal);
                 if (want > 0.0f) {
-                    delta = cb_madd(delta, ct[i].normal, want);
+                    delta = v3_madd(delta, ct[i].normal, want);
                     any = true;
                 }
             }
         }
         if (!any) break;
-        float dl = cb_len(delta);
+        float dl = v3_len(delta);
         float lim = 2.0f * c->radius + 2.0f * c->half_height;
-        if (dl > lim) delta = cb_scale(delta, lim / dl);
+        if (dl > lim) delta = v3_scale(delta, lim / dl);
         for (uint32_t i = 0; i < n; i++)
-            if (ct[i].depth > min_depth && cb_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
+            if (ct[i].depth > min_depth && v3_finite(ct[i].normal)) v = clip_plane(v, ct[i].normal);
         /* A push-out never turns into speed along up: clipping a walk against a nosing the
          * capsule touches would otherwise launch it (a "jump" that skips the floor probe). */
-        float v_up0 = vel ? cb_dot(*vel, c->up) : 0.0f, cap = v_up0 > 0.0f ? v_up0 : 0.0f;
-        float v_up = cb_dot(v, c->up);
-        if (v_up > cap) v = cb_madd(v, c->up, cap - v_up);
-        p = cb_add(p, delta);
-        if (!cb_finite(p)) return;
+        float v_up0 = vel ? v3_dot(*vel, c->up) : 0.0f, cap = v_up0 > 0.0f ? v_up0 : 0.0f;
+        float v_up = v3_dot(v, c->up);
+        if (v_up > cap) v = v3_madd(v, c->up, cap - v_up);
+        p = v3_add(p, delta);
+        if (!v3_finite(p)) return;
         n = overlaps_at(c, p, ct);
         /* Verified result (the push is not swept): a pass's position is kept only when it
          * overlaps nothing new or deeper than the start did. Otherwise the last verified
@@ -565,20 +565,20 @@ void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
-    fm_vec3_t o = cb_madd(old_foot, c->up, c->contact_eps);
-    fm_vec3_t d = cb_sub(foot, o);
-    float len = cb_len(d);
+    fm_vec3_t o = v3_madd(old_foot, c->up, c->contact_eps);
+    fm_vec3_t d = v3_sub(foot, o);
+    float len = v3_len(d);
     if (!(len > cb_len_tol(c, 1e-5f))) return;
-    fm_vec3_t dir = cb_scale(d, 1.0f / len);
+    fm_vec3_t dir = v3_scale(d, 1.0f / len);
     coll_ray_hit_t hit;
     if (!cb_ray(c, o, dir, len, &hit)) return;
     fm_vec3_t n = hit.normal;
-    if (!cb_finite(n) || cb_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
+    if (!v3_finite(n) || v3_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
     /* Slide the foot along the wall it would have entered. */
-    fm_vec3_t after = cb_sub(foot, hit.point);
-    fm_vec3_t target = cb_add(cb_madd(hit.point, n, c->skin), clip_plane(after, n));
+    fm_vec3_t after = v3_sub(foot, hit.point);
+    fm_vec3_t target = v3_add(v3_madd(hit.point, n, c->skin), clip_plane(after, n));
     /* Swept, like every positional change: the push must not put the capsule into
      * something else (a slope or wall on the other side). */
-    coll_cb_move_swept(c, pos, cb_sub(target, foot));
+    coll_cb_move_swept(c, pos, v3_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
 }

@@ -3,6 +3,7 @@
  * @brief Fixed-capacity registry of caller-owned mesh instances and collider bodies.
  *        The queries live in query.c.
  */
+#include "vec3.h"
 #include "coll/scene.h"
 #include <math.h>
 #include <string.h>
@@ -23,19 +24,14 @@ void coll_scene_set_current(coll_scene_t *scene) { g_current = scene; }
 
 coll_scene_t *coll_scene_current(void) { return g_current; }
 
-static bool vec_finite(const fm_vec3_t *v)
-{
-    return isfinite(v->x) && isfinite(v->y) && isfinite(v->z);
-}
-
 static bool xf_valid(const coll_transform_t *xf, bool check_scale)
 {
-    if (!vec_finite(&xf->pos)) return false;
+    if (!v3_finite(xf->pos)) return false;
     const fm_quat_t *q = &xf->rot;
     if (!isfinite(q->x) || !isfinite(q->y) || !isfinite(q->z) || !isfinite(q->w)) return false;
     if (!(q->x * q->x + q->y * q->y + q->z * q->z + q->w * q->w > 1e-12f)) return false;
     if (check_scale) {
-        if (!vec_finite(&xf->scale)) return false;
+        if (!v3_finite(xf->scale)) return false;
         if (xf->scale.x == 0.0f || xf->scale.y == 0.0f || xf->scale.z == 0.0f) return false;
     }
     return true;
@@ -69,7 +65,7 @@ coll_err_t coll_scene_remove_mesh(coll_scene_t *scene, coll_mesh_instance_t *ins
 
 coll_err_t coll_scene_add_body(coll_scene_t *scene, coll_body_t *body)
 {
-    if (!scene || !body || !xf_valid(&body->xf, false) || !vec_finite(&body->half_extents) ||
+    if (!scene || !body || !xf_valid(&body->xf, false) || !v3_finite(body->half_extents) ||
         (unsigned)body->shape > (unsigned)COLL_SHAPE_CYLINDER)
         return COLL_ERR_INVALID_ARG;
     for (uint16_t i = 0; i < scene->body_count; i++)
