@@ -98,6 +98,16 @@ static void round_axis(const body_frame_t *f, fm_vec3_t out[3])
     else capsule_axis(f, out);
 }
 
+/* Squared distance between the capsule's segment and a round body's axis (ax, filled
+ * here), with the closest points cp (on the segment) and cq (on the axis). */
+static float round_axis_dist2(const body_frame_t *f, const fm_vec3_t seg[2], fm_vec3_t ax[3], fm_vec3_t *cp,
+                              fm_vec3_t *cq)
+{
+    round_axis(f, ax);
+    float u, v;
+    return coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, cp, cq);
+}
+
 /* ---------------------------------------------------------------- rays */
 
 static bool ray_box_local(fm_vec3_t o, fm_vec3_t d, fm_vec3_t he, float s_max, prim_ray_t *out)
@@ -661,14 +671,11 @@ bool coll_capsule_body_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
     switch (f.shape) {
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
-        fm_vec3_t ax[3];
-        round_axis(&f, ax);
         /* Cheap exact reject first: the segments farther apart at the start than the two
          * radii plus the whole motion cannot meet (the general sweep below costs ~5k). */
-        fm_vec3_t cp, cq;
-        float u, v, reach = r + f.he.x + sqrtf(v3_dot(*disp, *disp)) * t_max;
-        if (coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq) > reach * reach * 1.0001f + 1e-8f)
-            return false;
+        fm_vec3_t ax[3], cp, cq;
+        float reach = r + f.he.x + sqrtf(v3_dot(*disp, *disp)) * t_max;
+        if (round_axis_dist2(&f, seg, ax, &cp, &cq) > reach * reach * 1.0001f + 1e-8f) return false;
         if (!coll_capsule_triangle_sweep(seg, r + f.he.x, disp, ax, t_max, hit)) return false;
         hit->point = v3_madd(hit->point, hit->normal, f.he.x);
         return true;
@@ -697,13 +704,11 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
     switch (f.shape) {
     case COLL_SHAPE_SPHERE:
     case COLL_SHAPE_CAPSULE: {
-        fm_vec3_t ax[3];
-        round_axis(&f, ax);
         /* Round shapes against the capsule: the closest points of the two axes are the
          * whole answer (what the general triangle path would compute, without its setup). */
-        fm_vec3_t cp, cq;
-        float u, v, reach = r + f.he.x;
-        float d2 = coll_prim_closest_seg_seg(seg[0], seg[1], ax[0], ax[1], &u, &v, &cp, &cq);
+        fm_vec3_t ax[3], cp, cq;
+        float reach = r + f.he.x;
+        float d2 = round_axis_dist2(&f, seg, ax, &cp, &cq);
         float rin = reach - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * reach);
         if (!(d2 < rin * rin)) return false;
         float d = sqrtf(d2);
@@ -717,8 +722,6 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
         hit->depth = reach - d;
         hit->normal = n;
         hit->point = v3_madd(cq, n, f.he.x);
-        return true;
-        hit->point = v3_madd(hit->point, hit->normal, f.he.x);
         return true;
     }
     case COLL_SHAPE_BOX: {
