@@ -35,7 +35,8 @@ extern "C" {
 #endif
 
 /**
- * Character body settings (the seed's "Character-Body Component Settings" table, plus additions; defaults in CHAR_BODY_SETTINGS_DEFAULT).
+ * Character body settings: the seed's "Character-Body Component Settings" table, plus
+ * additions; defaults in CHAR_BODY_SETTINGS_DEFAULT.
  *
  * Lengths are in the game's length unit, speeds in units/s, gravity in units/s^2. The
  * comments give the defaults in metres. A game in another unit sets units_per_meter (100
