@@ -321,6 +321,7 @@ typedef struct {
     tri_t tri;
     fm_vec3_t a, b, s, d;
     float ss;
+    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
 
@@ -389,6 +390,29 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     float rr = r + 1e-5f * (1.0f + r);
     if (sd2 > rr * rr) return;
     take(best, tt, v3_scale(mu, sig), v3_madd(e0, e, v));
+}
+
+/**
+ * Separating-axis cull along u (any direction; not normalised): true when the capsule's
+ * inner segment, swept by d over [0, t_max], stays farther than rc from the triangle along u
+ * (the four swept segment ends against the three vertices), with a relative allowance for
+ * the rounding of the projections and of the feature tests it stands in for. The distance
+ * of convex sets is at least their separation along any axis, so a true answer means no
+ * contact within rc over the whole motion. Squared compare: no sqrt, no division.
+ */
+static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max)
+{
+    float uu = v3_len2(u);
+    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
+    const tri_t *t = &c->tri;
+    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
+    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
+    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    if (!(sep > 0.0f)) return false;
+    float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
+    sep -= 1e-5f * u1 * c->mag;
+    float rr = rc * 1.0001f + 1e-7f;
+    return sep > 0.0f && sep * sep > rr * rr * uu;
 }
 
 /** Earliest entry of t*d into K(r) over [0, t_max]; any = stop at the first piece found. */
@@ -469,6 +493,18 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     }
     if (!moving) return false;
 
+    /* Cull on the closest pair's direction at the start: the swept capsule stays clear of
+     * the triangle along it (most candidates near stairs and corners that the plane cull
+     * keeps: the capsule beside a riser or a tread's edge). With confirm, a contact that
+     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices. */
+    c.mag = 0.0f;
+    {
+        const fm_vec3_t *m3[6] = { &c.a, &c.b, &c.d, &c.tri.v[0], &c.tri.v[1], &c.tri.v[2] };
+        for (int i = 0; i < 6; i++)
+            c.mag += (fabsf(m3[i]->x) + fabsf(m3[i]->y) + fabsf(m3[i]->z)) * (i == 2 ? t_max : 1.0f);
+    }
+    if (sweep_separated(&c, v3_sub(ps, pt), confirm ? rin : r, t_max)) return false;
+
     feat_hit_t best;
     if (d2 <= r * r) {
         best.hit = true;
@@ -517,6 +553,8 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
         fm_vec3_t off = v3_scale(c.d, t_max);
         float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
         if (!(d2e < rin * rin)) {
+            /* clear of rin along the closest pair's direction at the end: never deeper */
+            if (sweep_separated(&c, v3_sub(ps, pt), rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
