@@ -161,16 +161,19 @@ typedef struct {
     bool has_face;
 } tri_t;
 
-static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
+/* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
+ * *apex: the vertex shared by the two shortest edges, *nn: |nraw|^2, *lmax: the longest
+ * edge squared. */
+static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
 {
     for (int i = 0; i < 3; i++) t->v[i] = tri[i];
     for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
     /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
     float l0 = v3_len2(t->e[0]), l1 = v3_len2(t->e[1]), l2 = v3_len2(t->e[2]);
     int ia, ib;
-    if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; }
-    else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; }
-    else                           { ia = 0; ib = 1; }
+    if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; *apex = 2; }
+    else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; *apex = 0; }
+    else                           { ia = 0; ib = 1; *apex = 1; }
     t->nraw = v3_cross(t->e[ia], t->e[ib]);
     float nn = v3_len2(t->nraw);
     /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
@@ -178,7 +181,15 @@ static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
         t->nraw = cross_accurate(t->e[ia], t->e[ib]);
         nn = v3_len2(t->nraw);
     }
-    float lmax = f_max(l0, f_max(l1, l2));
+    *nn_out = nn;
+    *lmax = f_max(l0, f_max(l1, l2));
+}
+
+static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
+{
+    int apex;
+    float nn, lmax;
+    tri_setup_raw(t, tri, &apex, &nn, &lmax);
     t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
     t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
@@ -622,15 +633,12 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     (void)sz;
     /* The distance from the plane through the vertex shared by the two shortest edges:
      * better conditioned than the sheared-z interpolation for slivers. */
-    tri_t t;
-    tri_setup(&t, tri);
-    int apex = 0;
-    {
-        float l0 = v3_len2(t.e[0]), l1 = v3_len2(t.e[1]), l2 = v3_len2(t.e[2]);
-        if (l0 >= l1 && l0 >= l2) apex = 2;
-        else if (l1 >= l0 && l1 >= l2) apex = 0;
-        else apex = 1;
-    }
+    tri_t t; /* the raw normal only: its unit normal (a sqrt and a division) is not used */
+    int apex;
+    float nn, lmax;
+    tri_setup_raw(&t, tri, &apex, &nn, &lmax);
+    (void)nn;
+    (void)lmax;
     float dn = v3_dot(t.nraw, *d);
     if (dn == 0.0f) return false;
     float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;
