@@ -583,8 +583,8 @@ static bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm
 
 /* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
  * w0 and shape (shape[0] = 0); false when its box misses lo..hi (query-relative). */
-static bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *lo,
-                       const fm_vec3_t *hi, fm_vec3_t *w0, fm_vec3_t shape[3])
+CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *lo,
+                            const fm_vec3_t *hi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
     const coll_gather_tri_t *gt = &g->tris[k];
     for (int a = 0; a < 3; a++)
