@@ -25,11 +25,20 @@
 
 /* ---------------------------------------------------------------- elementary ray tests */
 
+/* The elementary tests run a dozen times per exact sweep: the sweep takes them inline
+ * (PRIM_INLINE *_in versions; on the console's o32 calls every by-value vector argument
+ * went through the stack and the integer registers), the exported names wrap them. */
+#if defined(__GNUC__)
+#define PRIM_INLINE static inline __attribute__((always_inline))
+#else
+#define PRIM_INLINE static inline
+#endif
+
 /* Where the line m + d s (m: the origin relative to a centre point, or across an axis)
  * first reaches distance r: ROUND_INSIDE when it starts within r, ROUND_MISS when it never
  * gets there or only after s_max, else ROUND_ENTERS at *s. */
 enum { ROUND_MISS, ROUND_INSIDE, ROUND_ENTERS };
-static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
+PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 {
     float cc = v3_dot(m, m) - r * r;
     if (cc <= 0.0f) return ROUND_INSIDE;
@@ -46,12 +55,12 @@ static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 }
 
 /* Outward normal at m + d s, or away from the motion when that point is the centre. */
-static fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
+PRIM_INLINE fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
 {
     return v3_unit_or(v3_madd(m, d, s), v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f)));
 }
 
-bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+PRIM_INLINE bool ray_sphere_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
 {
     fm_vec3_t m = v3_sub(o, c);
     float s = 0.0f;
@@ -62,8 +71,8 @@ bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float 
     return true;
 }
 
-bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
-                            prim_ray_t *out)
+PRIM_INLINE bool ray_cylinder_side_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                      prim_ray_t *out)
 {
     fm_vec3_t ax = v3_sub(c1, c0);
     float ss = v3_dot(ax, ax);
@@ -82,10 +91,33 @@ bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3
     return true;
 }
 
-bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
-                      prim_ray_t *out)
+PRIM_INLINE bool ray_capsule_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                prim_ray_t *out)
 {
-    prim_ray_t h;
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
+    bool any = false;
+    if (ray_cylinder_side_in(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
+    if (ray_sphere_in(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
+    if (ray_sphere_in(o, d, c1, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; any = true; }
+    return any;
+}
+
+bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+{
+    return ray_sphere_in(o, d, c, r, s_max, out);
+}
+
+bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                 prim_ray_t *out)
+{
+    return ray_cylinder_side_in(o, d, c0, c1, r, s_max, out);
+}
+
+bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                           prim_ray_t *out)
+{
+    /* the same three tests as ray_capsule_in, through the out-of-line ones (code size) */
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } };
     bool any = false;
     if (coll_prim_ray_cylinder_side(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
     if (coll_prim_ray_sphere(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
@@ -93,8 +125,8 @@ bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1,
     return any;
 }
 
-float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
-                           float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
+PRIM_INLINE float closest_seg_seg_in(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                                     float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
     const float eps = 1e-20f;
     fm_vec3_t d1 = v3_sub(p1, p0), d2 = v3_sub(q1, q0), w = v3_sub(p0, q0);
@@ -123,6 +155,12 @@ float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec
     if (cp) *cp = x;
     if (cq) *cq = y;
     return v3_len2(v3_sub(x, y));
+}
+
+float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                                float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
+{
+    return closest_seg_seg_in(p0, p1, q0, q1, u_out, v_out, cp, cq);
 }
 
 /* ---------------------------------------------------------------- triangle helpers */
@@ -237,7 +275,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     for (int i = 0; i < 3; i++) {
         fm_vec3_t cp, cq;
         float u, v;
-        float d2 = coll_prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
+        float d2 = closest_seg_seg_in(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
         if (d2 < best) { best = d2; *ps = cp; *pt = cq; *edge = i; *eu = u; *ev = v; }
     }
     return best;
@@ -433,7 +471,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     int nend = c->sphere ? 1 : 2;
     fm_vec3_t ends[2] = { c->a, c->b };
     best->hit = false;
-    prim_ray_t h;
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
     for (int k = 0; k < nend; k++) {
         if (t->has_face) {
             face_test(c, ends[k], r, t_max, best);
@@ -441,7 +479,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
         }
         for (int i = 0; i < 3; i++) {
             float lim = best->hit ? best->t : t_max;
-            if (coll_prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
+            if (ray_cylinder_side_in(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
                 take(best, h.s, h.n, v3_madd(v3_madd(ends[k], c->d, h.s), h.n, -r));
                 if (any) return true;
             }
@@ -450,8 +488,8 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     fm_vec3_t nd = v3_neg(c->d);
     for (int i = 0; i < 3; i++) {
         float lim = best->hit ? best->t : t_max;
-        bool got = c->sphere ? coll_prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
-                             : coll_prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
+        bool got = c->sphere ? ray_sphere_in(t->v[i], nd, c->a, r, lim, &h)
+                             : ray_capsule_in(t->v[i], nd, c->a, c->b, r, lim, &h);
         if (got) {
             take(best, h.s, v3_neg(h.n), t->v[i]);
             if (any) return true;
