@@ -449,7 +449,13 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
+static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack);
 static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max)
+{
+    return sweep_separated_k(c, u, rc, t_max, 1e-5f);
+}
+
+static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack)
 {
     float uu = v3_len2(u);
     if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
@@ -459,7 +465,7 @@ static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t
     float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
     if (!(sep > 0.0f)) return false;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
-    sep -= 1e-5f * u1 * c->mag;
+    sep -= slack * u1 * c->mag;
     float rr = rc * 1.0001f + 1e-7f;
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
@@ -599,6 +605,7 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     /* Count the contact only when the motion goes deeper than the touch tolerance: first
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
+        if (sweep_separated_k(&c, hit->normal, rin, t_max, 1e-6f)) return false;
         fm_vec3_t off = v3_scale(c.d, t_max);
         float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
         if (!(d2e < rin * rin)) {
