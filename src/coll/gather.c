@@ -8,6 +8,37 @@
 #include "gather.h"
 #include "grid_walk.h"
 
+/* The walk of one instance, with the mesh layout lay a constant at each call below (the
+ * per-entry fetch then carries no flag tests); false when the buffer overflowed. */
+CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_instance_t *inst, const xf3_t *x,
+                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay)
+{
+    const coll_scene_t *scene = g->scene;
+    while (grid_walk_next_cell(w))
+        for (uint32_t k = w->k; k < w->kend; k++) {
+            uint32_t t;
+            fm_vec3_t shape[3], w0, tri[3];
+            if (!grid_walk_take_in_box_lay(w, lay, k, x, o_l, &g->lo, &g->hi, &t, &w0, shape, tri)) continue;
+            if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
+                STATS_ADD(scene, gather_overflows);
+                g->valid = false;
+                seen_clear(seen);
+                return false;
+            }
+            coll_gather_tri_t *gt = &g->tris[g->ntris++];
+            gt->w0 = w0;
+            gt->e1 = shape[1];
+            gt->e2 = shape[2];
+            for (int a = 0; a < 3; a++) {
+                gt->lo.v[a] = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
+                gt->hi.v[a] = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
+            }
+            gt->inst = inst;
+            gt->tri = (int32_t)t;
+        }
+    return true;
+}
+
 void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
                        uint8_t types)
 {
@@ -38,28 +69,18 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
         grid_walk_t w;
         if (!grid_walk_box(&w, m, &llo, &lhi, &seen)) continue;
-        while (grid_walk_next_cell(&w))
-            for (uint32_t k = w.k; k < w.kend; k++) {
-                uint32_t t;
-                fm_vec3_t shape[3], w0, tri[3];
-                if (!grid_walk_take_in_box(&w, k, &x, &o_l, &g->lo, &g->hi, &t, &w0, shape, tri)) continue;
-                if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
-                    STATS_ADD(scene, gather_overflows);
-                    g->valid = false;
-                    seen_clear(&seen);
-                    return;
-                }
-                coll_gather_tri_t *gt = &g->tris[g->ntris++];
-                gt->w0 = w0;
-                gt->e1 = shape[1];
-                gt->e2 = shape[2];
-                for (int a = 0; a < 3; a++) {
-                    gt->lo.v[a] = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
-                    gt->hi.v[a] = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
-                }
-                gt->inst = inst;
-                gt->tri = (int32_t)t;
-            }
+        /* the baker's small-mesh layouts (16-bit indices and refs; float or quantized
+         * vertices) get their own loops, any other the generic one */
+        const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
+        bool ok;
+        switch (grid_walk_layout(&w)) {
+        case COLL_MESHF_IDX16 | COLL_MESHF_REF16: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16); break;
+        case COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_REF16:
+            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16);
+            break;
+        default: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, grid_walk_layout(&w)); break;
+        }
+        if (!ok) return;
         grid_walk_end(&w, scene);
     }
 }

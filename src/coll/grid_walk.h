@@ -26,6 +26,14 @@
 
 /* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */
 
+/* Code that runs once per visited cell entry or per survivor: inlined even where the
+ * compiler's size heuristics would not (the console build outlined tri_rel_of otherwise). */
+#if defined(__GNUC__)
+#define CAND_INLINE static inline __attribute__((always_inline))
+#else
+#define CAND_INLINE static inline
+#endif
+
 
 typedef struct {
     float m[3][3];   /* world_rel = m * local_delta (m[row][col]) */
@@ -106,8 +114,8 @@ static inline fm_vec3_t to_local_dir(const xf3_t *x, const fm_vec3_t *d)
  * query origin (*w0) plus a shape whose first vertex is the origin. The edges are
  * transformed from exact local differences, so the triangle's shape (and normal) stays
  * exact even when it is far from the query; only its placement carries rounding. */
-static inline void tri_rel_of(const fm_vec3_t v[3], const xf3_t *x, const fm_vec3_t *o_local, fm_vec3_t *w0,
-                       fm_vec3_t out[3])
+CAND_INLINE void tri_rel_of(const fm_vec3_t v[3], const xf3_t *x, const fm_vec3_t *o_local, fm_vec3_t *w0,
+                            fm_vec3_t out[3])
 {
     fm_vec3_t d;
     fm_vec3_sub(&d, &v[0], o_local);
@@ -336,20 +344,35 @@ static inline bool cell_misses(const coll_mesh_t *m, uint32_t cx, uint32_t cy, u
  * llo..lhi (exactly tri_box_reject's test). Every visited cell entry pays this, so the
  * common layout (float vertices) reads the coordinates in place, one axis at a time,
  * across axes first (the up axis rejects least on floors), and copies only survivors. */
-#if defined(__GNUC__)
-#define CAND_INLINE static inline __attribute__((always_inline))
-#else
-#define CAND_INLINE static inline
-#endif
-CAND_INLINE bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
-                            fm_vec3_t v[3])
+/* The layout flags a walk's loops depend on (vertices, indices and refs: the dense or
+ * hashed grid does not matter inside a cell). The _lay variants below take them as an
+ * argument: a caller that passes a constant (grid_walk_layout() dispatched to a few
+ * constant cases) gets a loop with the layout folded in, instead of two to three flag
+ * tests per visited entry. */
+#define GRID_LAYOUT_BITS (COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_REF16)
+
+CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, const fm_vec3_t *llo,
+                              const fm_vec3_t *lhi, fm_vec3_t v[3])
 {
-    if (mv->flags & COLL_MESHF_QUANT) {
-        coll_mesh_view_tri(mv, t, v);
+    if (lay & COLL_MESHF_QUANT) {
+        uint32_t ix[3];
+        if (lay & COLL_MESHF_IDX16) {
+            const uint16_t *ti = (const uint16_t *)(const void *)mv->tris + 3u * t;
+            ix[0] = ti[0]; ix[1] = ti[1]; ix[2] = ti[2];
+        } else {
+            const uint32_t *ti = (const uint32_t *)(const void *)mv->tris + 3u * t;
+            ix[0] = ti[0]; ix[1] = ti[1]; ix[2] = ti[2];
+        }
+        for (int k = 0; k < 3; k++) { /* exactly coll_mesh_view_tri()'s dequantization */
+            const uint16_t *q = (const uint16_t *)(const void *)mv->verts + 3u * ix[k];
+            v[k].x = mv->qo[0] + (float)q[0] * mv->qs[0];
+            v[k].y = mv->qo[1] + (float)q[1] * mv->qs[1];
+            v[k].z = mv->qo[2] + (float)q[2] * mv->qs[2];
+        }
         return !tri_box_reject(v, llo, lhi);
     }
     uint32_t i0, i1, i2;
-    if (mv->flags & COLL_MESHF_IDX16) {
+    if (lay & COLL_MESHF_IDX16) {
         const uint16_t *ix = (const uint16_t *)(const void *)mv->tris + 3u * t;
         i0 = ix[0]; i1 = ix[1]; i2 = ix[2];
     } else {
@@ -368,6 +391,19 @@ CAND_INLINE bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_
     v[1].x = b[0]; v[1].y = b[1]; v[1].z = b[2];
     v[2].x = c[0]; v[2].y = c[1]; v[2].z = c[2];
     return true;
+}
+
+CAND_INLINE bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+                          fm_vec3_t v[3])
+{
+    return cand_tri_lay(mv, mv->flags, t, llo, lhi, v);
+}
+
+/* Ref k of a cell list (coll_mesh_view_ref with the layout given). */
+CAND_INLINE uint32_t view_ref_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t k)
+{
+    if (lay & COLL_MESHF_REF16) return ((const uint16_t *)(const void *)mv->refs)[k];
+    return ((const uint32_t *)(const void *)mv->refs)[k];
 }
 
 
@@ -491,10 +527,10 @@ static inline bool grid_walk_next_cell(grid_walk_t *w)
  * its box meets the walk's box and the walk has not given it before. A full table: a
  * box walk looks the triangle up in the cells visited earlier (exact); a lazy walk (a ray)
  * gives it again (harmless, its test repeats). */
-CAND_INLINE bool grid_walk_take(grid_walk_t *w, uint32_t k, uint32_t *t, fm_vec3_t v[3])
+CAND_INLINE bool grid_walk_take_lay(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3])
 {
-    *t = coll_mesh_view_ref(&w->mv, k);
-    if (!cand_tri(&w->mv, *t, w->llo, w->lhi, v)) return false;
+    *t = view_ref_lay(&w->mv, lay, k);
+    if (!cand_tri_lay(&w->mv, lay, *t, w->llo, w->lhi, v)) return false;
     if (!w->dedup) return true;
     int sc = seen_check(w->seen, *t);
     if (sc == SEEN_BEFORE) return false;
@@ -506,18 +542,33 @@ CAND_INLINE bool grid_walk_take(grid_walk_t *w, uint32_t k, uint32_t *t, fm_vec3
     return true;
 }
 
+CAND_INLINE bool grid_walk_take(grid_walk_t *w, uint32_t k, uint32_t *t, fm_vec3_t v[3])
+{
+    return grid_walk_take_lay(w, w->mv.flags, k, t, v);
+}
+
+/* The walk's layout flags (GRID_LAYOUT_BITS), for a dispatch to constant cases. */
+static inline uint32_t grid_walk_layout(const grid_walk_t *w) { return w->mv.flags & GRID_LAYOUT_BITS; }
+
 /* grid_walk_take for a box query: the triangle relative to the query origin (w0 + shape,
  * as the per-triangle tests take it) and in absolute form (tri), false when it is not
  * taken or lies wholly outside the world-relative box lo..hi. */
+CAND_INLINE bool grid_walk_take_in_box_lay(grid_walk_t *w, uint32_t lay, uint32_t k, const xf3_t *x,
+                                           const fm_vec3_t *o_l, const fm_vec3_t *lo, const fm_vec3_t *hi,
+                                           uint32_t *t, fm_vec3_t *w0, fm_vec3_t shape[3], fm_vec3_t tri[3])
+{
+    fm_vec3_t v[3];
+    if (!grid_walk_take_lay(w, lay, k, t, v)) return false;
+    tri_rel_of(v, x, o_l, w0, shape);
+    tri_abs(w0, shape, tri);
+    return !tri_box_reject(tri, lo, hi);
+}
+
 CAND_INLINE bool grid_walk_take_in_box(grid_walk_t *w, uint32_t k, const xf3_t *x, const fm_vec3_t *o_l,
                                        const fm_vec3_t *lo, const fm_vec3_t *hi, uint32_t *t, fm_vec3_t *w0,
                                        fm_vec3_t shape[3], fm_vec3_t tri[3])
 {
-    fm_vec3_t v[3];
-    if (!grid_walk_take(w, k, t, v)) return false;
-    tri_rel_of(v, x, o_l, w0, shape);
-    tri_abs(w0, shape, tri);
-    return !tri_box_reject(tri, lo, hi);
+    return grid_walk_take_in_box_lay(w, w->mv.flags, k, x, o_l, lo, hi, t, w0, shape, tri);
 }
 
 /* Ends the walk: the table is cleared for the next instance; an overflow is counted. */

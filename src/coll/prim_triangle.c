@@ -25,11 +25,20 @@
 
 /* ---------------------------------------------------------------- elementary ray tests */
 
+/* The elementary tests run a dozen times per exact sweep: the sweep takes them inline
+ * (PRIM_INLINE *_in versions; on the console's o32 calls every by-value vector argument
+ * went through the stack and the integer registers), the exported names wrap them. */
+#if defined(__GNUC__)
+#define PRIM_INLINE static inline __attribute__((always_inline))
+#else
+#define PRIM_INLINE static inline
+#endif
+
 /* Where the line m + d s (m: the origin relative to a centre point, or across an axis)
  * first reaches distance r: ROUND_INSIDE when it starts within r, ROUND_MISS when it never
  * gets there or only after s_max, else ROUND_ENTERS at *s. */
 enum { ROUND_MISS, ROUND_INSIDE, ROUND_ENTERS };
-static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
+PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 {
     float cc = v3_dot(m, m) - r * r;
     if (cc <= 0.0f) return ROUND_INSIDE;
@@ -46,12 +55,12 @@ static int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, float *s)
 }
 
 /* Outward normal at m + d s, or away from the motion when that point is the centre. */
-static fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
+PRIM_INLINE fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
 {
     return v3_unit_or(v3_madd(m, d, s), v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f)));
 }
 
-bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+PRIM_INLINE bool ray_sphere_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
 {
     fm_vec3_t m = v3_sub(o, c);
     float s = 0.0f;
@@ -62,8 +71,8 @@ bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float 
     return true;
 }
 
-bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
-                            prim_ray_t *out)
+PRIM_INLINE bool ray_cylinder_side_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                      prim_ray_t *out)
 {
     fm_vec3_t ax = v3_sub(c1, c0);
     float ss = v3_dot(ax, ax);
@@ -82,10 +91,33 @@ bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3
     return true;
 }
 
-bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
-                      prim_ray_t *out)
+PRIM_INLINE bool ray_capsule_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                prim_ray_t *out)
 {
-    prim_ray_t h;
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
+    bool any = false;
+    if (ray_cylinder_side_in(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
+    if (ray_sphere_in(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
+    if (ray_sphere_in(o, d, c1, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; any = true; }
+    return any;
+}
+
+bool coll_prim_ray_sphere(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
+{
+    return ray_sphere_in(o, d, c, r, s_max, out);
+}
+
+bool coll_prim_ray_cylinder_side(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                                 prim_ray_t *out)
+{
+    return ray_cylinder_side_in(o, d, c0, c1, r, s_max, out);
+}
+
+bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1, float r, float s_max,
+                           prim_ray_t *out)
+{
+    /* the same three tests as ray_capsule_in, through the out-of-line ones (code size) */
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } };
     bool any = false;
     if (coll_prim_ray_cylinder_side(o, d, c0, c1, r, s_max, &h)) { *out = h; s_max = h.s; any = true; }
     if (coll_prim_ray_sphere(o, d, c0, r, s_max, &h) && (!any || h.s < out->s)) { *out = h; s_max = h.s; any = true; }
@@ -93,8 +125,8 @@ bool coll_prim_ray_capsule(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c0, fm_vec3_t c1,
     return any;
 }
 
-float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
-                           float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
+PRIM_INLINE float closest_seg_seg_in(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                                     float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
     const float eps = 1e-20f;
     fm_vec3_t d1 = v3_sub(p1, p0), d2 = v3_sub(q1, q0), w = v3_sub(p0, q0);
@@ -123,6 +155,12 @@ float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec
     if (cp) *cp = x;
     if (cq) *cq = y;
     return v3_len2(v3_sub(x, y));
+}
+
+float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
+                                float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
+{
+    return closest_seg_seg_in(p0, p1, q0, q1, u_out, v_out, cp, cq);
 }
 
 /* ---------------------------------------------------------------- triangle helpers */
@@ -161,16 +199,19 @@ typedef struct {
     bool has_face;
 } tri_t;
 
-static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
+/* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
+ * *apex: the vertex shared by the two shortest edges, *nn: |nraw|^2, *lmax: the longest
+ * edge squared. */
+static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
 {
     for (int i = 0; i < 3; i++) t->v[i] = tri[i];
     for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
     /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
     float l0 = v3_len2(t->e[0]), l1 = v3_len2(t->e[1]), l2 = v3_len2(t->e[2]);
     int ia, ib;
-    if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; }
-    else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; }
-    else                           { ia = 0; ib = 1; }
+    if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; *apex = 2; }
+    else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; *apex = 0; }
+    else                           { ia = 0; ib = 1; *apex = 1; }
     t->nraw = v3_cross(t->e[ia], t->e[ib]);
     float nn = v3_len2(t->nraw);
     /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
@@ -178,7 +219,15 @@ static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
         t->nraw = cross_accurate(t->e[ia], t->e[ib]);
         nn = v3_len2(t->nraw);
     }
-    float lmax = f_max(l0, f_max(l1, l2));
+    *nn_out = nn;
+    *lmax = f_max(l0, f_max(l1, l2));
+}
+
+static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
+{
+    int apex;
+    float nn, lmax;
+    tri_setup_raw(t, tri, &apex, &nn, &lmax);
     t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
     t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
@@ -226,7 +275,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     for (int i = 0; i < 3; i++) {
         fm_vec3_t cp, cq;
         float u, v;
-        float d2 = coll_prim_closest_seg_seg(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
+        float d2 = closest_seg_seg_in(a, b, t->v[i], t->v[(i + 1) % 3], &u, &v, &cp, &cq);
         if (d2 < best) { best = d2; *ps = cp; *pt = cq; *edge = i; *eu = u; *ev = v; }
     }
     return best;
@@ -321,6 +370,7 @@ typedef struct {
     tri_t tri;
     fm_vec3_t a, b, s, d;
     float ss;
+    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
 
@@ -391,6 +441,35 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     take(best, tt, v3_scale(mu, sig), v3_madd(e0, e, v));
 }
 
+/**
+ * Separating-axis cull along u (any direction; not normalised): true when the capsule's
+ * inner segment, swept by d over [0, t_max], stays farther than rc from the triangle along u
+ * (the four swept segment ends against the three vertices), with a relative allowance for
+ * the rounding of the projections and of the feature tests it stands in for. The distance
+ * of convex sets is at least their separation along any axis, so a true answer means no
+ * contact within rc over the whole motion. Squared compare: no sqrt, no division.
+ */
+static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack);
+static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max)
+{
+    return sweep_separated_k(c, u, rc, t_max, 1e-5f);
+}
+
+static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack)
+{
+    float uu = v3_len2(u);
+    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
+    const tri_t *t = &c->tri;
+    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
+    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
+    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    if (!(sep > 0.0f)) return false;
+    float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
+    sep -= slack * u1 * c->mag;
+    float rr = rc * 1.0001f + 1e-7f;
+    return sep > 0.0f && sep * sep > rr * rr * uu;
+}
+
 /** Earliest entry of t*d into K(r) over [0, t_max]; any = stop at the first piece found. */
 static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any, feat_hit_t *best)
 {
@@ -398,7 +477,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     int nend = c->sphere ? 1 : 2;
     fm_vec3_t ends[2] = { c->a, c->b };
     best->hit = false;
-    prim_ray_t h;
+    prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
     for (int k = 0; k < nend; k++) {
         if (t->has_face) {
             face_test(c, ends[k], r, t_max, best);
@@ -406,7 +485,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
         }
         for (int i = 0; i < 3; i++) {
             float lim = best->hit ? best->t : t_max;
-            if (coll_prim_ray_cylinder_side(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
+            if (ray_cylinder_side_in(ends[k], c->d, t->v[i], t->v[(i + 1) % 3], r, lim, &h)) {
                 take(best, h.s, h.n, v3_madd(v3_madd(ends[k], c->d, h.s), h.n, -r));
                 if (any) return true;
             }
@@ -415,8 +494,8 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     fm_vec3_t nd = v3_neg(c->d);
     for (int i = 0; i < 3; i++) {
         float lim = best->hit ? best->t : t_max;
-        bool got = c->sphere ? coll_prim_ray_sphere(t->v[i], nd, c->a, r, lim, &h)
-                             : coll_prim_ray_capsule(t->v[i], nd, c->a, c->b, r, lim, &h);
+        bool got = c->sphere ? ray_sphere_in(t->v[i], nd, c->a, r, lim, &h)
+                             : ray_capsule_in(t->v[i], nd, c->a, c->b, r, lim, &h);
         if (got) {
             take(best, h.s, v3_neg(h.n), t->v[i]);
             if (any) return true;
@@ -469,6 +548,18 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     }
     if (!moving) return false;
 
+    /* Cull on the closest pair's direction at the start: the swept capsule stays clear of
+     * the triangle along it (most candidates near stairs and corners that the plane cull
+     * keeps: the capsule beside a riser or a tread's edge). With confirm, a contact that
+     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices. */
+    c.mag = 0.0f;
+    {
+        const fm_vec3_t *m3[6] = { &c.a, &c.b, &c.d, &c.tri.v[0], &c.tri.v[1], &c.tri.v[2] };
+        for (int i = 0; i < 6; i++)
+            c.mag += (fabsf(m3[i]->x) + fabsf(m3[i]->y) + fabsf(m3[i]->z)) * (i == 2 ? t_max : 1.0f);
+    }
+    if (sweep_separated(&c, v3_sub(ps, pt), confirm ? rin : r, t_max)) return false;
+
     feat_hit_t best;
     if (d2 <= r * r) {
         best.hit = true;
@@ -514,9 +605,12 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     /* Count the contact only when the motion goes deeper than the touch tolerance: first
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
+        if (sweep_separated_k(&c, hit->normal, rin, t_max, 1e-6f)) return false;
         fm_vec3_t off = v3_scale(c.d, t_max);
         float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
         if (!(d2e < rin * rin)) {
+            /* clear of rin along the closest pair's direction at the end: never deeper */
+            if (sweep_separated(&c, v3_sub(ps, pt), rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
@@ -584,15 +678,12 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     (void)sz;
     /* The distance from the plane through the vertex shared by the two shortest edges:
      * better conditioned than the sheared-z interpolation for slivers. */
-    tri_t t;
-    tri_setup(&t, tri);
-    int apex = 0;
-    {
-        float l0 = v3_len2(t.e[0]), l1 = v3_len2(t.e[1]), l2 = v3_len2(t.e[2]);
-        if (l0 >= l1 && l0 >= l2) apex = 2;
-        else if (l1 >= l0 && l1 >= l2) apex = 0;
-        else apex = 1;
-    }
+    tri_t t; /* the raw normal only: its unit normal (a sqrt and a division) is not used */
+    int apex;
+    float nn, lmax;
+    tri_setup_raw(&t, tri, &apex, &nn, &lmax);
+    (void)nn;
+    (void)lmax;
     float dn = v3_dot(t.nraw, *d);
     if (dn == 0.0f) return false;
     float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;

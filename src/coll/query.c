@@ -16,14 +16,21 @@
 
 /* A one-way instance's up (local +Y in world orientation); zero for an ordinary instance,
  * which every test below then lets through. */
-static fm_vec3_t one_way_up(const coll_mesh_instance_t *inst)
+static fm_vec3_t one_way_up_rotated(const coll_mesh_instance_t *inst)
 {
     fm_vec3_t u = {{0.0f, 0.0f, 0.0f}};
-    if (!(inst->flags & COLL_INSTANCE_ONE_WAY)) return u;
     fm_vec3_t y = {{0.0f, 1.0f, 0.0f}};
     fm_quat_t q = inst->xf.rot;
     fm_quat_norm(&q, &q);
     fm_quat_rotate_vec3(&u, &q, &y);
+    return u;
+}
+
+/* (inline: the gathered queries ask once per triangle; nearly every instance is ordinary) */
+CAND_INLINE fm_vec3_t one_way_up(const coll_mesh_instance_t *inst)
+{
+    if (inst->flags & COLL_INSTANCE_ONE_WAY) return one_way_up_rotated(inst);
+    fm_vec3_t u = {{0.0f, 0.0f, 0.0f}};
     return u;
 }
 
@@ -73,10 +80,17 @@ typedef struct {
     int32_t tri;
 } best_hit_t;
 
-static void best_init(best_hit_t *b, float limit)
+CAND_INLINE void best_init(best_hit_t *b, float limit)
 {
-    memset(b, 0, sizeof *b);
+    /* field by field (a memset call per query on the console); ph is read only once have */
+    b->have = false;
     b->best = limit;
+    b->ph.t = 0.0f;
+    b->ph.depth = 0.0f;
+    b->ph.normal.x = b->ph.normal.y = b->ph.normal.z = 0.0f;
+    b->ph.point.x = b->ph.point.y = b->ph.point.z = 0.0f;
+    b->inst = NULL;
+    b->body = NULL;
     b->tri = -1;
 }
 
@@ -264,7 +278,7 @@ static bool ray_result(const best_hit_t *rb, const fm_vec3_t *origin, coll_ray_h
     return true;
 }
 
-static bool ray_args_ok(const fm_vec3_t *origin, const fm_vec3_t *dir, float max_dist)
+CAND_INLINE bool ray_args_ok(const fm_vec3_t *origin, const fm_vec3_t *dir, float max_dist)
 {
     return vfin(origin) && vfin(dir) && isfinite(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
 }
@@ -298,7 +312,7 @@ typedef struct {
 } capsule_q_t;
 
 /* World-relative AABB of the capsule swept from 0 to t. */
-static void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *hi)
+CAND_INLINE void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *hi)
 {
     for (int a = 0; a < 3; a++) {
         float d = q->disp.v[a] * t;
@@ -358,12 +372,12 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
     grid_walk_end(&w, scene);
 }
 
-static bool capsule_args_ok(const fm_vec3_t *center, const fm_vec3_t *axis, float radius, float hh)
+CAND_INLINE bool capsule_args_ok(const fm_vec3_t *center, const fm_vec3_t *axis, float radius, float hh)
 {
     return vfin(center) && vfin(axis) && isfinite(radius) && radius > 0.0f && isfinite(hh) && hh >= 0.0f;
 }
 
-static void capsule_setup(capsule_q_t *q, const fm_vec3_t *axis, float radius, float hh, const fm_vec3_t *disp)
+CAND_INLINE void capsule_setup(capsule_q_t *q, const fm_vec3_t *axis, float radius, float hh, const fm_vec3_t *disp)
 {
     fm_vec3_scale(&q->seg[1], axis, hh);
     fm_vec3_negate(&q->seg[0], &q->seg[1]);
@@ -569,7 +583,7 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
 
 /* The query box lo..hi (relative to the query's own origin at rel from the gather's) lies
  * inside the gathered box: every triangle that can touch the query was gathered. */
-static bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
+CAND_INLINE bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
 {
     if (!g->valid) return false;
     for (int a = 0; a < 3; a++)
@@ -583,8 +597,8 @@ static bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm
 
 /* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
  * w0 and shape (shape[0] = 0); false when its box misses lo..hi (query-relative). */
-static bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *lo,
-                       const fm_vec3_t *hi, fm_vec3_t *w0, fm_vec3_t shape[3])
+CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *lo,
+                            const fm_vec3_t *hi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
     const coll_gather_tri_t *gt = &g->tris[k];
     for (int a = 0; a < 3; a++)
