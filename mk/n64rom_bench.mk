@@ -9,7 +9,7 @@ N64BENCH_ROM  := $(N64BENCH_DIR)/bench.z64
 N64BENCH_C1   := $(N64BENCH_DIR)/assets_c1
 N64BENCH_ASSETS := $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/platform_rotate.coll
 N64BENCH_OBJS := $(addprefix $(N64BENCH_DIR)/,bench_main.o bench_methods.o bench_hooks.o bench_scn.o rom_bench.o ccd.o polytope.o files.o)
-N64BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion -DCOLL_METHOD_HOOKS $(N64ROM_CFLAGS) $(N64ROM_INC) -Ibench
+N64BENCH_CFLAGS = $(STD) -D_DEFAULT_SOURCE $(WARN) -Wno-double-promotion -DCOLL_METHOD_HOOKS $(N64ROM_CFLAGS) $(N64ROM_INC) -Ibench -MMD -MP
 
 # the 1 m cell request as bench/run.sh bakes it
 $(N64BENCH_C1)/test_course.coll: assets/levels/test_course.gltf $(COLLBAKE)
@@ -38,6 +38,9 @@ $(N64BENCH_DIR)/rom_bench.o: host_tests/n64/rom_bench.c host_tests/n64/rom.h $(B
 $(N64BENCH_DIR)/%.o: $(DEPS)/libccd/src/%.c $(BUILD)/n64/.flags | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(n64_CC) -std=gnu11 -w $(N64ROM_CFLAGS) $(CCD_INC) -c $< -o $@
+# header dependencies: a struct change (char_body_t, coll_scene_t) rebuilds the harness
+-include $(wildcard $(N64BENCH_DIR)/*.d)
+
 $(N64BENCH_DIR)/files.S: $(N64BENCH_ASSETS) $(N64BENCH_C1)/test_course.coll $(N64BENCH_C1)/platform_rotate.coll tools/n64rom_files.sh
 	bash tools/n64rom_files.sh "" $(N64BENCH_ASSETS) \
 	    assets_c1/test_course.coll=$(N64BENCH_C1)/test_course.coll \
