@@ -168,6 +168,50 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
 }
 
 /**
+ * The crack rule's cheap first look over a floor the foot ray found: the ball dropped from
+ * where ball_held drops it reaches (to within twice the skin) the plane of that floor
+ * without touching anything. Then nothing above the floor can hold it (no groove edge, no
+ * tile beside the gap) and the full rule, whose sweeps would meet every floor triangle under
+ * the ball, is skipped. The stop short of the plane keeps its triangles out of reach, so
+ * their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
+ */
+static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
+                               coll_sweep_hit_t *edge)
+{
+    const fm_vec3_t up = c->up;
+    const float r = c->radius;
+    edge->normal = up; /* no first look: an edge right under the ball (the full rule decides) */
+    float nu = v3_dot(floor->normal, up);
+    if (!(nu > 0.02f)) return false;
+    fm_vec3_t b0 = v3_madd(cb_foot(c, pos), up, r + c->step);
+    /* descent along up at which the ball would touch the floor's plane, less the margin */
+    float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
+    if (!(s > c->tiny)) return false;
+    if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -s), edge)) return true;
+    if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
+    return false;
+}
+
+/**
+ * For a body standing on the floor the foot ray found (not stepping down onto it): can the
+ * edge the ball met be one side of a groove? Only if, a radius away on the other side, a
+ * surface lies at that edge's level (within the tenth of a radius ball_held allows): the
+ * groove's far block. A stair's nosing ahead has the lower tread behind; a bump of uneven
+ * ground has ground at another height. One ray instead of the full rule's sweeps.
+ */
+static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge)
+{
+    const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
+    fm_vec3_t side = v3_norm(v3_reject(edge->normal, up)); /* from the edge towards the ball */
+    if (v3_len2(side) < 0.5f) return true; /* met right under its centre: the full rule decides */
+    float c1 = v3_dot(v3_sub(edge->point, foot), up), top = c->radius + c->step;
+    fm_vec3_t o = v3_madd(v3_madd(foot, side, c->radius), up, top);
+    coll_ray_hit_t h;
+    if (!cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) || !isfinite(h.distance)) return false;
+    return fabsf((top - h.distance) - c1) <= 0.1f * c->radius;
+}
+
+/**
  * Snaps the body down by dist along -up, swept. Where the capsule's rounded bottom catches
  * on an edge on the way (the nosing of the stair behind, walking down short treads), it
  * slides down off it along the contact plane, as a resting ball would, instead of hanging
@@ -255,7 +299,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * it, landing in it, walking along the floor into it); a stair's next
                      * tread stays a step down. */
                     support_t w = {0};
-                    if (ball_held(c, *pos, reach, NULL, gap, &w) && w.gap < gap - step_eps)
+                    coll_sweep_hit_t edge;
+                    if (!ball_reaches_floor(c, *pos, &hit, &edge) &&
+                        (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
+                        ball_held(c, *pos, reach, &hit, gap, &w) && w.gap < gap - step_eps)
                         s = w;
                 }
             } else if (nu > 0.0f) {
