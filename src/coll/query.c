@@ -322,6 +322,26 @@ CAND_INLINE void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3
     }
 }
 
+/* One mesh instance's part of a capsule query: its transform, one-way up, the capsule's
+ * centre in mesh space, and the box of the capsule swept to t (world-relative and local,
+ * where the walk reads it: the sweep shrinks it in place as hits come nearer). */
+typedef struct {
+    xf3_t x;
+    fm_vec3_t up1, o_l, lo, hi, llo, lhi;
+} inst_walk_t;
+
+static inline bool inst_walk_begin(const coll_mesh_instance_t *inst, const fm_vec3_t *center, const capsule_q_t *q,
+                                   float t, inst_walk_t *iw, grid_walk_t *w, seen_t *seen)
+{
+    const coll_mesh_t *m = inst->mesh;
+    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &iw->x)) return false;
+    iw->up1 = one_way_up(inst);
+    iw->o_l = to_local_point(&iw->x, &inst->xf, m, center);
+    swept_box(q, t, &iw->lo, &iw->hi);
+    local_box(m, &iw->x, &iw->o_l, &iw->lo, &iw->hi, &iw->llo, &iw->lhi);
+    return grid_walk_box(w, m, &iw->llo, &iw->lhi, seen);
+}
+
 static bool sweep_better(const coll_prim_hit_t *h, const best_hit_t *sb)
 {
     if (!sb->have) return true;
@@ -348,24 +368,17 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
 static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *center,
                            const capsule_q_t *q, seen_t *seen, best_hit_t *sb)
 {
-    const coll_mesh_t *m = inst->mesh;
-    xf3_t x;
-    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
-    const fm_vec3_t up1 = one_way_up(inst);
-    fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, center);
-    fm_vec3_t lo, hi, llo, lhi;
-    swept_box(q, sb->best, &lo, &hi);
-    local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
+    inst_walk_t iw;
     grid_walk_t w;
-    if (!grid_walk_box(&w, m, &llo, &lhi, seen)) return;
+    if (!inst_walk_begin(inst, center, q, sb->best, &iw, &w, seen)) return;
     while (grid_walk_next_cell(&w))
         for (uint32_t k = w.k; k < w.kend; k++) {
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
-            if (!grid_walk_take_in_box(&w, k, &x, &o_l, &lo, &hi, &t, &w0, shape, tri)) continue;
-            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &up1, sb)) {
-                swept_box(q, sb->best, &lo, &hi); /* shrink the sweep, and skip cells it misses */
-                local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
+            if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
+            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, sb)) {
+                swept_box(q, sb->best, &iw.lo, &iw.hi); /* shrink the sweep, and skip cells it misses */
+                local_box(inst->mesh, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &iw.llo, &iw.lhi);
                 w.skip_missed = true;
             }
         }
@@ -522,22 +535,15 @@ static void overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, 
 static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const capsule_q_t *q,
                              seen_t *seen, contacts_t *c)
 {
-    const coll_mesh_t *m = inst->mesh;
-    xf3_t x;
-    if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
-    const fm_vec3_t up1 = one_way_up(inst);
-    fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &c->center);
-    fm_vec3_t lo, hi, llo, lhi;
-    swept_box(q, 0.0f, &lo, &hi);
-    local_box(m, &x, &o_l, &lo, &hi, &llo, &lhi);
+    inst_walk_t iw;
     grid_walk_t w;
-    if (!grid_walk_box(&w, m, &llo, &lhi, seen)) return;
+    if (!inst_walk_begin(inst, &c->center, q, 0.0f, &iw, &w, seen)) return;
     while (grid_walk_next_cell(&w))
         for (uint32_t k = w.k; k < w.kend; k++) {
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
-            if (!grid_walk_take_in_box(&w, k, &x, &o_l, &lo, &hi, &t, &w0, shape, tri)) continue;
-            overlap_tri(q, inst, (int32_t)t, &w0, shape, &up1, c);
+            if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
+            overlap_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, c);
         }
     grid_walk_end(&w, scene);
 }
