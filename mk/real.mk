@@ -53,3 +53,7 @@ $(BSP_TEST_RESULTS): $(COLLBAKE_ASAN) tools/collbake/test_bsp.sh tools/collbake/
 bsp-test: $(BSP_TEST_RESULTS)
 	@! grep -v '^ok' $<
 TEST_PREREQS += $(BSP_TEST_RESULTS)
+
+# make bench measures the real maps' cost per step when they can be built (mk/bench.mk)
+BENCH_REAL := $(if $(wildcard $(REAL_PK3)),$(REAL_COLLS))
+bench: $(BENCH_REAL)
