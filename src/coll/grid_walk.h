@@ -133,8 +133,6 @@ static inline void tri_abs(const fm_vec3_t *w0, const fm_vec3_t shape[3], fm_vec
     for (int k = 0; k < 3; k++) fm_vec3_add(&out[k], w0, &shape[k]);
 }
 
-/* The grid's registration margin, as the builder stored it (format version 3). */
-static inline float mesh_margin(const coll_mesh_t *m) { return m->grid_margin; }
 
 
 /* Per-instance set of triangles already tested by this query: open addressing over a
@@ -292,7 +290,7 @@ static inline void local_box(const coll_mesh_t *m, const xf3_t *x, const fm_vec3
     }
     fm_vec3_t cl = x->simple ? c : mul3(x->inv, &c);
     fm_vec3_t hl = x->simple ? h : mul3_abs(x->inv, &h);
-    float mg = mesh_margin(m);
+    float mg = m->grid_margin; /* the builder's registration margin (format version 3) */
     for (int a = 0; a < 3; a++) {
         llo->v[a] = o_l->v[a] + cl.v[a] - hl.v[a] - mg;
         lhi->v[a] = o_l->v[a] + cl.v[a] + hl.v[a] + mg;

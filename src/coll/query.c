@@ -162,7 +162,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
     if (!m || m->ntris == 0 || !xf_prepare(&inst->xf, &x)) return;
     fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, origin);
     fm_vec3_t d_l = to_local_dir(&x, dir);
-    float mg = mesh_margin(m);
+    float mg = m->grid_margin; /* the builder's registration margin (format version 3) */
     float lo[3], hi[3];
     for (int a = 0; a < 3; a++) { lo[a] = m->bmin[a] - mg; hi[a] = m->bmax[a] + mg; }
     float s0 = 0.0f, s1 = rb->best;
