@@ -91,6 +91,13 @@ typedef struct {
  * (across a crack too narrow for the ball to dip into; not down a ledge onto a lower floor). At a ledge the roll meets nothing, or
  * nothing it can stand on, and the foot-as-a-point rule stands: the body falls.
  */
+/* Where the crack rule drops the full capsule's bottom ball from: the sweep capsule's
+ * bottom ball centre (free space: the sweep capsule was just swept there). */
+static inline fm_vec3_t ball_drop_start(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    return v3_madd(cb_foot(c, pos), c->up, c->radius + c->step);
+}
+
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
                       support_t *out)
 {
@@ -99,7 +106,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const fm_vec3_t up = c->up;
     const float r = c->radius, len = c->step + reach + 0.5f * r;
     const fm_vec3_t foot = cb_foot(c, pos);
-    fm_vec3_t b0 = v3_madd(foot, up, r + c->step);
+    fm_vec3_t b0 = ball_drop_start(c, pos);
     coll_sweep_hit_t h1;
     if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -len), &h1) ||
         !isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point))
@@ -183,7 +190,7 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     edge->normal = up; /* no first look: an edge right under the ball (the full rule decides) */
     float nu = v3_dot(floor->normal, up);
     if (!(nu > 0.02f)) return false;
-    fm_vec3_t b0 = v3_madd(cb_foot(c, pos), up, r + c->step);
+    fm_vec3_t b0 = ball_drop_start(c, pos);
     /* descent along up at which the ball would touch the floor's plane, less the margin */
     float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
     if (!(s > c->tiny)) return false;
