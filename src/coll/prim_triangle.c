@@ -586,7 +586,8 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
         /* Near a flat minimum rounding can pick a candidate pair slightly off the true one
          * (e.g. a vertex instead of a point just past it on the next edge); alternating
          * projections (segment point nearest the triangle point, and back) settle it. */
-        bool interior = edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f;
+        /* (a sphere's centre is a point: its closest pair is exact already) */
+        bool interior = c.sphere || (edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f);
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
             fm_vec3_t qs, qt, dummy;
             coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
