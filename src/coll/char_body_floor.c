@@ -129,8 +129,15 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
-        bool met = cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, 2.0f * r), &h2);
-        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -v3_dot(downhill, up) : 0.0f;
+        /* The roll counts only within half a radius of descent (below), so on a tilted
+         * contact it ends there: a shorter sweep meets fewer triangles and stays inside the
+         * step's gathered box more often. (Tilts under 0.25 keep the whole diameter: the
+         * edge-under-the-centre case below depends on whether the roll met anything.) */
+        float sink = -v3_dot(downhill, up);
+        float roll = 2.0f * r;
+        if (sink > 0.25f) roll = f_min(roll, 0.5f * r * 1.01f / sink + c->skin);
+        bool met = cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, roll), &h2);
+        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
         fm_vec3_t across = v3_norm(v3_reject(downhill, up));
         if (!met && n1u > 0.995f && v3_len(across) > 0.5f) {
             /* Resting on an edge almost under its centre the tangent barely descends: the
