@@ -99,7 +99,7 @@ static inline fm_vec3_t ball_drop_start(const cb_ctx_t *c, fm_vec3_t pos)
 }
 
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
-                      support_t *out)
+                      const coll_sweep_hit_t *first, float first_len, support_t *out)
 {
     const bool over_floor = floor_gap < 1e29f;
     const char_body_t *b = c->body;
@@ -108,9 +108,15 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const fm_vec3_t foot = cb_foot(c, pos);
     fm_vec3_t b0 = ball_drop_start(c, pos);
     coll_sweep_hit_t h1;
-    if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -len), &h1) ||
-        !isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point))
+    if (first_len > 0.0f) {
+        /* the first look dropped the ball from b0 too and met *first: the same first contact */
+        h1 = *first;
+        h1.t = first->t * first_len / len;
+        if (!(h1.t <= 1.0f)) return false;
+    } else if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -len), &h1)) {
         return false;
+    }
+    if (!isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point)) return false;
     float n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
@@ -190,11 +196,12 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
  * their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
 static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
-                               coll_sweep_hit_t *edge)
+                               coll_sweep_hit_t *edge, float *edge_len)
 {
     const fm_vec3_t up = c->up;
     const float r = c->radius;
     edge->normal = up; /* no first look: an edge right under the ball (the full rule decides) */
+    *edge_len = 0.0f;  /* > 0: *edge is the drop's first contact over that length */
     float nu = v3_dot(floor->normal, up);
     if (!(nu > 0.02f)) return false;
     fm_vec3_t b0 = ball_drop_start(c, pos);
@@ -203,6 +210,7 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     if (!(s > c->tiny)) return false;
     if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -s), edge)) return true;
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
+    else *edge_len = s;
     return false;
 }
 
@@ -314,9 +322,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * tread stays a step down. */
                     support_t w = {0};
                     coll_sweep_hit_t edge;
-                    if (!ball_reaches_floor(c, *pos, &hit, &edge) &&
+                    float edge_len;
+                    if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &w) && w.gap < gap - step_eps)
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w) && w.gap < gap - step_eps)
                         s = w;
                 }
             } else if (nu > 0.0f) {
@@ -328,7 +337,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
         }
-        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, &s);
+        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
