@@ -50,16 +50,17 @@ static int fix_checksum(uint8_t *b, size_t size)
     if (nverts > size || ntris > size || nrefs > size) return 0;
     coll_mesh_layout_t l = coll_mesh_layout_of(flags, nverts, ntris, ncells, nrefs);
     if (l.total > size) return 0;
-    const struct { uint64_t off, count; unsigned esize; } s[4] = {
+    const struct { uint64_t off, count; unsigned esize; } s[5] = {
         { l.off_verts, nverts * 3u, (flags & COLL_MESHF_QUANT) ? 2u : 4u },
-        { l.off_tris, ntris * 3u, (flags & COLL_MESHF_IDX16) ? 2u : 4u },
+        { l.off_tris, ntris * 3u, (flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 2u : 4u },
+        { l.off_tbase, l.ntbase, 4u },
         { l.off_cells, ncells + 1u, 4u },
         { l.off_refs, nrefs, (flags & COLL_MESHF_REF16) ? 2u : 4u },
     };
     uint32_t h = 2166136261u;
     for (uint32_t w = 1; w < sizeof(struct coll_mesh_s) / 4u; w++)
         if (w != offsetof(struct coll_mesh_s, checksum) / 4u) h = (h ^ be32(b + 4u * w)) * 16777619u;
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < 5; i++)
         for (uint64_t k = 0; k < s[i].count; k++) {
             const uint8_t *p = b + s[i].off + s[i].esize * k;
             uint32_t v = s[i].esize == 2u ? (uint32_t)(p[0] << 8 | p[1]) : be32(p);

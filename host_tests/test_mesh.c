@@ -4,6 +4,7 @@
 #include "alloc_guard.h"
 #include "core_gen.h"
 #include "coll/mesh.h"
+#include "coll/scene.h"
 #include "mesh_format.h"
 #include <math.h>
 #include <stdio.h>
@@ -285,18 +286,158 @@ static void test_fine_cells_are_hashed(void)
     check_grid_complete(m, 8);
 }
 
-static void test_32bit_indices_when_many_vertices(void)
+/* Every stored triangle has exactly the input's vertices (nothing dropped here). */
+static void same_triangles(const coll_mesh_t *m, uint32_t nt)
+{
+    TEST_ASSERT_EQUAL_UINT32(nt, coll_mesh_triangle_count(m));
+    for (uint32_t t = 0; t < nt; t++) {
+        fm_vec3_t v[3];
+        coll_mesh_triangle(m, t, v);
+        for (int k = 0; k < 3; k++)
+            for (int a = 0; a < 3; a++)
+                if (v[k].v[a] != g_verts[3 * g_idx[3 * t + k] + a]) TEST_FAIL_MESSAGE("triangle vertex differs");
+    }
+}
+
+/* The scene queries (their grid walk decodes the indices itself) find each sampled
+ * triangle of a height field straight under its centroid. */
+static void rays_find_triangles(const coll_mesh_t *m, uint32_t nt)
+{
+    coll_mesh_instance_t inst = { .mesh = m, .xf = COLL_TRANSFORM_IDENTITY, .write_mask = 1, .id = 1 };
+    coll_scene_t sc;
+    coll_scene_init(&sc);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&sc, &inst));
+    for (uint32_t t = 0; t < nt; t += 997u) {
+        fm_vec3_t v[3];
+        coll_mesh_triangle(m, t, v);
+        fm_vec3_t c = {{(v[0].x + v[1].x + v[2].x) / 3.0f, (v[0].y + v[1].y + v[2].y) / 3.0f + 10.0f,
+                        (v[0].z + v[1].z + v[2].z) / 3.0f}};
+        coll_ray_hit_t h;
+        TEST_ASSERT_TRUE(coll_raycast(&sc, c, (fm_vec3_t){{0.0f, -1.0f, 0.0f}}, 20.0f, 1, COLL_TYPE_MESH, &h));
+        TEST_ASSERT_EQUAL_INT32((int32_t)t, h.triangle);
+        TEST_ASSERT_FLOAT_WITHIN(1e-3f, 10.0f, h.distance);
+    }
+}
+
+/* The checksum of a native mesh, as mesh_format.h documents it (written here again, so a
+ * test can change a value and keep the mesh otherwise valid). */
+static uint32_t native_checksum(const coll_mesh_t *m)
+{
+    const uint8_t *b = (const uint8_t *)m;
+    uint64_t ncells = coll_mesh_cell_count(m);
+    coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, ncells, m->nrefs);
+    const struct { uint64_t off, n; unsigned es; } s[5] = {
+        { l.off_verts, (uint64_t)m->nverts * 3u, (m->flags & COLL_MESHF_QUANT) ? 2u : 4u },
+        { l.off_tris, (uint64_t)m->ntris * 3u, (m->flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 2u : 4u },
+        { l.off_tbase, l.ntbase, 4u },
+        { l.off_cells, ncells + 1u, 4u },
+        { l.off_refs, m->nrefs, (m->flags & COLL_MESHF_REF16) ? 2u : 4u },
+    };
+    uint32_t h = 2166136261u, w;
+    for (uint32_t i = 1; i < sizeof(struct coll_mesh_s) / 4u; i++)
+        if (i != 4) { memcpy(&w, b + 4 * i, 4); h = (h ^ w) * 16777619u; }
+    for (int i = 0; i < 5; i++)
+        for (uint64_t k = 0; k < s[i].n; k++) {
+            uint16_t u16;
+            if (s[i].es == 2) { memcpy(&u16, b + s[i].off + 2 * k, 2); w = u16; }
+            else memcpy(&w, b + s[i].off + 4 * k, 4);
+            h = (h ^ w) * 16777619u;
+        }
+    return h;
+}
+
+/* More than 65535 vertices: 16-bit indices from a base per block of 64 triangles (6 bytes
+ * a triangle instead of 12), exact, through the big-endian blob and back, and validated. */
+static void test_block_indices_when_many_vertices(void)
 {
     uint32_t nv;
     uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 300, 220, 1.0f, 0, 0, 0);
     TEST_ASSERT_TRUE(nv > 65535);
+    for (int q = 0; q < 2; q++) {
+        coll_mesh_build_opts_t o = { 0.0f, q ? COLL_MESH_QUANTIZE : 0u };
+        const coll_mesh_t *m = build(nv, nt, &o);
+        TEST_ASSERT_TRUE(m->flags & COLL_MESHF_IDXBLK);
+        TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDX16);
+        TEST_ASSERT_FALSE(m->flags & COLL_MESHF_REF16);
+        TEST_ASSERT_EQUAL_UINT32(4, m->version);
+        coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, coll_mesh_cell_count(m), m->nrefs);
+        TEST_ASSERT_TRUE(l.ntbase == (nt + 63) / 64);
+        TEST_ASSERT_TRUE(l.off_tbase == l.off_tris + ((6u * nt + 7u) & ~7u));
+        if (!q) same_triangles(m, nt);
+        /* issue 14's memory targets: 24 bytes a triangle as float, 14 quantized */
+        TEST_ASSERT_TRUE((double)coll_mesh_size(m) / nt < (q ? 14.0 : 24.0));
+        /* the grid walk and coll_mesh_triangle read the same indices */
+        check_grid_complete(m, 4);
+        rays_find_triangles(m, nt);
+        /* big-endian blob and back, in a second buffer */
+        size_t size = coll_mesh_size(m), w = 0;
+        uint8_t *blob = (uint8_t *)g_buf + ((size + 15u) & ~(size_t)7u);
+        TEST_ASSERT_TRUE(2 * size + 16 <= sizeof g_buf);
+        TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_write_blob(m, blob, size, &w));
+        const coll_mesh_t *lm = NULL;
+        TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(blob, size, &lm));
+        TEST_ASSERT_EQUAL_MEMORY(m, lm, size);
+    }
+    /* a block base pointing past the vertices is corrupt, also with a valid checksum */
+    coll_mesh_t *m = (coll_mesh_t *)(void *)g_buf;
+    const coll_mesh_t *lm;
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, coll_mesh_cell_count(m), m->nrefs);
+    uint32_t *tb = (uint32_t *)(void *)((uint8_t *)m + l.off_tbase);
+    uint32_t keep = tb[l.ntbase - 1];
+    tb[l.ntbase - 1] = m->nverts - 1u; /* + the block's offsets: past the last vertex */
+    m->checksum = native_checksum(m);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    tb[l.ntbase - 1] = keep;
+    m->checksum = native_checksum(m);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    /* block indices are version 4: a version 3 header with them is corrupt */
+    m->version = 3;
+    m->checksum = native_checksum(m);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    m->version = 5;
+    m->checksum = native_checksum(m);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_VERSION, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    /* a version 3 mesh (no block indices) still loads */
+    nt = core_grid_level(g_verts, &nv, g_idx, 20, 20, 1.0f, 0, 0, 0);
+    m = (coll_mesh_t *)(void *)build(nv, nt, NULL);
+    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDXBLK);
+    m->version = 3;
+    m->checksum = native_checksum(m);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(m, coll_mesh_size(m), &lm));
+}
+
+/* Vertices numbered with no locality (a block's triangles reach over more than 65535 of
+ * them): 32-bit indices, still exact. A block whose reach is exactly 65535 keeps 16 bits. */
+static void test_32bit_indices_when_blocks_reach_far(void)
+{
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 300, 220, 1.0f, 0, 0, 0);
+    /* renumber the vertices v -> v * 7919 mod nv (a permutation: 7919 is a prime not dividing nv) */
+    static float perm[3 * 70000];
+    TEST_ASSERT_TRUE(nv % 7919u != 0);
+    for (uint32_t v = 0; v < nv; v++) memcpy(perm + 3 * ((uint64_t)v * 7919u % nv), g_verts + 3 * v, 12);
+    memcpy(g_verts, perm, 12u * nv);
+    for (uint32_t k = 0; k < 3 * nt; k++) g_idx[k] = (uint32_t)((uint64_t)g_idx[k] * 7919u % nv);
     const coll_mesh_t *m = build(nv, nt, NULL);
-    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDX16);
-    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_REF16);
-    fm_vec3_t v[3];
-    coll_mesh_triangle(m, nt - 1, v);
-    TEST_ASSERT_EQUAL_FLOAT(g_verts[3 * g_idx[3 * (nt - 1) + 2]], v[2].x);
-    TEST_ASSERT_EQUAL_FLOAT(g_verts[3 * g_idx[3 * (nt - 1) + 2] + 2], v[2].z);
+    TEST_ASSERT_FALSE(m->flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK));
+    same_triangles(m, nt);
+    check_grid_complete(m, 4);
+    /* two triangles 65535 vertices apart in one block: exactly in reach */
+    nt = core_grid_level(g_verts, &nv, g_idx, 300, 220, 1.0f, 0, 0, 0);
+    uint32_t lo = UINT32_MAX;
+    for (uint32_t k = 0; k < 3 * 64; k++)
+        if (k != 3 && g_idx[k] < lo) lo = g_idx[k];
+    uint32_t far = lo + 65535u;
+    TEST_ASSERT_TRUE(far < nv);
+    g_idx[3 * 1 + 0] = far;          /* triangle 1 of block 0 gets a vertex 65535 above */
+    m = build(nv, nt, NULL);
+    TEST_ASSERT_TRUE(m->flags & COLL_MESHF_IDXBLK);
+    same_triangles(m, nt);
+    g_idx[3 * 1 + 0] = far + 1u;     /* one further: 32-bit */
+    m = build(nv, nt, NULL);
+    TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDXBLK);
+    same_triangles(m, nt);
 }
 
 int main(void)
@@ -312,6 +453,7 @@ int main(void)
     RUN_TEST(test_quantized_vertices_close);
     RUN_TEST(test_bytes_per_triangle);
     RUN_TEST(test_fine_cells_are_hashed);
-    RUN_TEST(test_32bit_indices_when_many_vertices);
+    RUN_TEST(test_block_indices_when_many_vertices);
+    RUN_TEST(test_32bit_indices_when_blocks_reach_far);
     return UNITY_END();
 }

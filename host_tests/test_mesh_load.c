@@ -176,7 +176,7 @@ static void test_random_bit_flips_detected(void)
 
 /* ---- re-forging the checksum so field corruption reaches the deeper checks ---- */
 
-/* Header words of format version 3 (136 bytes): magic .. nbuckets, grid_margin, reserved. */
+/* Header words of format versions 3 and 4 (136 bytes): magic .. nbuckets, grid_margin, reserved. */
 #define HDR_WORDS 34
 #define HDR_GRID_MARGIN 32 /* word index */
 #define HDR_CELL_SIZE 17
@@ -192,15 +192,18 @@ static void forge_checksum(uint8_t *b, size_t size)
     uint32_t flags = be32(b + 8), nverts = be32(b + 20), ntris = be32(b + 24), nrefs = be32(b + 28);
     uint64_t ncells = (flags & 8) ? be32(b + 124) : (uint64_t)be32(b + 72) * be32(b + 76) * be32(b + 80);
     if (ncells > size) return;
-    uint64_t off[4] = { be32(b + 108), be32(b + 112), be32(b + 116), be32(b + 120) };
-    uint64_t cnt[4] = { (uint64_t)nverts * 3, (uint64_t)ntris * 3, ncells + 1, nrefs };
-    uint32_t es[4] = { (flags & 1) ? 2u : 4u, (flags & 2) ? 2u : 4u, 4u, (flags & 4) ? 2u : 4u };
-    for (int i = 0; i < 4; i++)
+    /* version 4: with block indices (flag 16) a uint32 base per 64 triangles follows them */
+    uint64_t tb = be32(b + 112) + (((uint64_t)ntris * 6u + 7u) & ~(uint64_t)7u);
+    uint64_t off[5] = { be32(b + 108), be32(b + 112), tb, be32(b + 116), be32(b + 120) };
+    uint64_t cnt[5] = { (uint64_t)nverts * 3, (uint64_t)ntris * 3, (flags & 16) ? ((uint64_t)ntris + 63) / 64 : 0,
+                        ncells + 1, nrefs };
+    uint32_t es[5] = { (flags & 1) ? 2u : 4u, (flags & 18) ? 2u : 4u, 4u, 4u, (flags & 4) ? 2u : 4u };
+    for (int i = 0; i < 5; i++)
         if (off[i] + cnt[i] * es[i] > size) return;
     uint32_t h = 2166136261u;
     for (int w = 1; w < HDR_WORDS; w++)
         if (w != 4) h = (h ^ be32(b + 4 * w)) * 16777619u;
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < 5; i++)
         for (uint64_t k = 0; k < cnt[i]; k++) {
             const uint8_t *p = b + off[i] + k * es[i];
             uint32_t v = es[i] == 2 ? (uint32_t)(p[0] << 8 | p[1]) : be32(p);

@@ -347,20 +347,27 @@ static inline bool cell_misses(const coll_mesh_t *m, uint32_t cx, uint32_t cy, u
  * argument: a caller that passes a constant (grid_walk_layout() dispatched to a few
  * constant cases) gets a loop with the layout folded in, instead of two to three flag
  * tests per visited entry. */
-#define GRID_LAYOUT_BITS (COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_REF16)
+#define GRID_LAYOUT_BITS (COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK | COLL_MESHF_REF16)
+
+/* Vertex indices of triangle t (coll_mesh_view_tri's, with the layout given). */
+CAND_INLINE void view_idx_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, uint32_t ix[3])
+{
+    if (lay & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) {
+        const uint16_t *ti = (const uint16_t *)(const void *)mv->tris + 3u * t;
+        uint32_t b = (lay & COLL_MESHF_IDXBLK) ? mv->tbase[t >> COLL_MESH_TRI_BLOCK_SHIFT] : 0u;
+        ix[0] = b + ti[0]; ix[1] = b + ti[1]; ix[2] = b + ti[2];
+    } else {
+        const uint32_t *ti = (const uint32_t *)(const void *)mv->tris + 3u * t;
+        ix[0] = ti[0]; ix[1] = ti[1]; ix[2] = ti[2];
+    }
+}
 
 CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, const fm_vec3_t *llo,
                               const fm_vec3_t *lhi, fm_vec3_t v[3])
 {
     if (lay & COLL_MESHF_QUANT) {
         uint32_t ix[3];
-        if (lay & COLL_MESHF_IDX16) {
-            const uint16_t *ti = (const uint16_t *)(const void *)mv->tris + 3u * t;
-            ix[0] = ti[0]; ix[1] = ti[1]; ix[2] = ti[2];
-        } else {
-            const uint32_t *ti = (const uint32_t *)(const void *)mv->tris + 3u * t;
-            ix[0] = ti[0]; ix[1] = ti[1]; ix[2] = ti[2];
-        }
+        view_idx_lay(mv, lay, t, ix);
         for (int k = 0; k < 3; k++) { /* exactly coll_mesh_view_tri()'s dequantization */
             const uint16_t *q = (const uint16_t *)(const void *)mv->verts + 3u * ix[k];
             v[k].x = mv->qo[0] + (float)q[0] * mv->qs[0];
@@ -369,14 +376,9 @@ CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t
         }
         return !tri_box_reject(v, llo, lhi);
     }
-    uint32_t i0, i1, i2;
-    if (lay & COLL_MESHF_IDX16) {
-        const uint16_t *ix = (const uint16_t *)(const void *)mv->tris + 3u * t;
-        i0 = ix[0]; i1 = ix[1]; i2 = ix[2];
-    } else {
-        const uint32_t *ix = (const uint32_t *)(const void *)mv->tris + 3u * t;
-        i0 = ix[0]; i1 = ix[1]; i2 = ix[2];
-    }
+    uint32_t ix[3];
+    view_idx_lay(mv, lay, t, ix);
+    const uint32_t i0 = ix[0], i1 = ix[1], i2 = ix[2];
     const float *vs = (const float *)(const void *)mv->verts;
     const float *a = vs + 3u * i0, *b = vs + 3u * i1, *c = vs + 3u * i2;
     float lo = llo->x, hi = lhi->x;

@@ -78,22 +78,28 @@ static uint32_t mix(uint32_t h, uint32_t v) { return (h ^ v) * FNV_PRIME; }
 /* Sections of a mesh as (offset, element size, count). */
 typedef struct { uint64_t off, count; uint32_t esize; } section_t;
 
+#define NSECT 5
+enum { SECT_VERTS, SECT_TRIS, SECT_TBASE, SECT_CELLS, SECT_REFS };
+
 static void sections_of(uint32_t flags, const coll_mesh_layout_t *l, uint64_t nverts, uint64_t ntris,
-                        uint64_t ncells, uint64_t nrefs, section_t s[4])
+                        uint64_t ncells, uint64_t nrefs, section_t s[NSECT])
 {
     s[0].off = l->off_verts; s[0].esize = (flags & COLL_MESHF_QUANT) ? 2u : 4u; s[0].count = nverts * 3u;
-    s[1].off = l->off_tris;  s[1].esize = (flags & COLL_MESHF_IDX16) ? 2u : 4u; s[1].count = ntris * 3u;
-    s[2].off = l->off_cells; s[2].esize = 4u; s[2].count = ncells + 1u;
-    s[3].off = l->off_refs;  s[3].esize = (flags & COLL_MESHF_REF16) ? 2u : 4u; s[3].count = nrefs;
+    s[1].off = l->off_tris;
+    s[1].esize = (flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 2u : 4u;
+    s[1].count = ntris * 3u;
+    s[2].off = l->off_tbase; s[2].esize = 4u; s[2].count = l->ntbase;
+    s[3].off = l->off_cells; s[3].esize = 4u; s[3].count = ncells + 1u;
+    s[4].off = l->off_refs;  s[4].esize = (flags & COLL_MESHF_REF16) ? 2u : 4u; s[4].count = nrefs;
 }
 
 /* Header words from `version` on, checksum word excluded; then all section values. */
-static uint32_t checksum_of(const uint8_t *b, bool swap, const section_t s[4])
+static uint32_t checksum_of(const uint8_t *b, bool swap, const section_t s[NSECT])
 {
     uint32_t h = FNV_BASIS;
     for (uint32_t w = 1; w < sizeof(struct coll_mesh_s) / 4u; w++)
         if (w != offsetof(struct coll_mesh_s, checksum) / 4u) h = mix(h, rd32(b + 4u * w, swap));
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < NSECT; i++) {
         const uint8_t *p = b + s[i].off;
         if (s[i].esize == 2u) {
             for (uint64_t k = 0; k < s[i].count; k++) h = mix(h, rd16(p + 2u * k, swap));
@@ -114,7 +120,7 @@ static coll_mesh_layout_t layout_of_mesh(const coll_mesh_t *m)
 static uint32_t checksum_native(const coll_mesh_t *m)
 {
     coll_mesh_layout_t l = layout_of_mesh(m);
-    section_t s[4];
+    section_t s[NSECT];
     sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
     return checksum_of((const uint8_t *)m, false, s);
 }
@@ -141,6 +147,11 @@ static void tri_indices(const coll_mesh_t *m, uint32_t i, uint32_t idx[3])
     if (m->flags & COLL_MESHF_IDX16) {
         const uint16_t *t = (const uint16_t *)(const void *)base + 3u * i;
         idx[0] = t[0]; idx[1] = t[1]; idx[2] = t[2];
+    } else if (m->flags & COLL_MESHF_IDXBLK) {
+        const uint16_t *t = (const uint16_t *)(const void *)base + 3u * i;
+        const uint32_t *tb = (const uint32_t *)(const void *)((const uint8_t *)m + layout_of_mesh(m).off_tbase);
+        uint32_t b = tb[i >> COLL_MESH_TRI_BLOCK_SHIFT];
+        idx[0] = b + t[0]; idx[1] = b + t[1]; idx[2] = b + t[2];
     } else {
         const uint32_t *t = (const uint32_t *)(const void *)base + 3u * i;
         idx[0] = t[0]; idx[1] = t[1]; idx[2] = t[2];
@@ -200,6 +211,52 @@ static bool input_tri_ok(const float *verts, uint32_t nverts, const uint32_t *ix
     if (ix[0] >= nverts || ix[1] >= nverts || ix[2] >= nverts) return false;
     if (ix[0] == ix[1] || ix[1] == ix[2] || ix[0] == ix[2]) return false;
     return vfinite(verts + 3u * ix[0]) && vfinite(verts + 3u * ix[1]) && vfinite(verts + 3u * ix[2]);
+}
+
+/* Input triangle t is stored: its indices pass, and its stored (possibly quantized)
+ * vertices span an area. The builder keeps exactly these, compacted in input order. */
+static bool tri_kept(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices, uint32_t t)
+{
+    const uint32_t *ix = indices + 3u * t;
+    if (!input_tri_ok(verts, nverts, ix)) return false;
+    fm_vec3_t tri[3] = { vertex_of(m, ix[0]), vertex_of(m, ix[1]), vertex_of(m, ix[2]) };
+    return tri_has_area(tri);
+}
+
+/* Smallest vertex index of the next COLL_MESH_TRI_BLOCK kept triangles from input t on, and
+ * whether they all lie within 65535 of it (*fits). */
+static uint32_t block_base(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices,
+                           uint32_t ntris, uint32_t t, bool *fits)
+{
+    uint32_t lo = UINT32_MAX, hi = 0, n = 0;
+    for (; t < ntris && n < COLL_MESH_TRI_BLOCK; t++) {
+        if (!tri_kept(m, verts, nverts, indices, t)) continue;
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = indices[3u * t + k];
+            if (v < lo) lo = v;
+            if (v > hi) hi = v;
+        }
+        n++;
+    }
+    *fits = n == 0 || hi - lo <= 65535u;
+    return n ? lo : 0u;
+}
+
+/* Block-based 16-bit indices fit this mesh (more than 65535 vertices): every block of kept
+ * triangles reaches over at most 65535 vertices above its smallest index. */
+static bool blocks_fit(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices,
+                       uint32_t ntris)
+{
+    uint32_t t = 0;
+    while (t < ntris) {
+        uint32_t n = 0, start = t;
+        bool fits;
+        block_base(m, verts, nverts, indices, ntris, t, &fits);
+        if (!fits) return false;
+        for (; t < ntris && n < COLL_MESH_TRI_BLOCK; t++) n += tri_kept(m, verts, nverts, indices, t);
+        if (t == start) break;
+    }
+    return true;
 }
 
 /* Separating-axis test of a triangle against a box (center c, half sizes h). */
@@ -492,12 +549,27 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
     memset(base + l.off_verts + (uint64_t)nverts * (quant ? 6u : 12u), 0,
            (size_t)(l.off_tris - l.off_verts - (uint64_t)nverts * (quant ? 6u : 12u)));
 
+    /* More than 65535 vertices: 16-bit indices from a base per block of triangles when
+     * every block's triangles lie within 65535 vertices of it (meshes as modelled and
+     * exported do: neighbouring triangles share nearby vertices), else 32-bit ones. */
+    uint32_t nt_kept = 0;
+    if (!(flags & COLL_MESHF_IDX16)) {
+        for (uint32_t t = 0; t < ntris; t++) nt_kept += tri_kept(m, verts, nverts, indices, t);
+        if (nt_kept > 0u && blocks_fit(m, verts, nverts, indices, ntris)) {
+            flags |= COLL_MESHF_IDXBLK;
+            m->flags = flags;
+        }
+    }
+    coll_mesh_layout_t lb = coll_mesh_layout_of(flags, nverts, nt_kept, 0, 0);
+    uint32_t *tbase = (uint32_t *)(void *)(base + lb.off_tbase);
+    if ((flags & COLL_MESHF_IDXBLK) && lb.off_cells > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
+
     /* Triangles: usable ones compacted in input order; bounds and mean size from the
      * stored (possibly quantized) vertices. */
-    uint32_t nt = 0;
+    uint32_t nt = 0, bbase = 0;
     float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
     float extent_sum = 0.0f;
-    size_t stride = (flags & COLL_MESHF_IDX16) ? 6u : 12u;
+    size_t stride = (flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 6u : 12u;
     for (uint32_t t = 0; t < ntris; t++) {
         const uint32_t *ix = indices + 3u * t;
         if (!input_tri_ok(verts, nverts, ix)) continue;
@@ -508,6 +580,14 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
         if (flags & COLL_MESHF_IDX16) {
             uint16_t *d = (uint16_t *)(void *)dst;
             d[0] = (uint16_t)ix[0]; d[1] = (uint16_t)ix[1]; d[2] = (uint16_t)ix[2];
+        } else if (flags & COLL_MESHF_IDXBLK) {
+            if ((nt & (COLL_MESH_TRI_BLOCK - 1u)) == 0u) {
+                bool fits;
+                bbase = block_base(m, verts, nverts, indices, ntris, t, &fits);
+                tbase[nt >> COLL_MESH_TRI_BLOCK_SHIFT] = bbase;
+            }
+            uint16_t *d = (uint16_t *)(void *)dst;
+            d[0] = (uint16_t)(ix[0] - bbase); d[1] = (uint16_t)(ix[1] - bbase); d[2] = (uint16_t)(ix[2] - bbase);
         } else {
             uint32_t *d = (uint32_t *)(void *)dst;
             d[0] = ix[0]; d[1] = ix[1]; d[2] = ix[2];
@@ -542,8 +622,9 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
     }
     l = coll_mesh_layout_of(flags, nverts, nt, ncells, 0);
     if (l.off_refs > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
-    uint64_t tris_end = l.off_tris + (uint64_t)nt * stride;
-    memset(base + tris_end, 0, (size_t)(l.off_cells - tris_end));
+    uint64_t tris_end = l.off_tris + (uint64_t)nt * stride, tbase_end = l.off_tbase + l.ntbase * 4u;
+    memset(base + tris_end, 0, (size_t)(l.off_tbase - tris_end));
+    memset(base + tbase_end, 0, (size_t)(l.off_cells - tbase_end));
     uint32_t *cells = (uint32_t *)(void *)(base + l.off_cells);
     memset(cells, 0, (size_t)(l.off_refs - l.off_cells));
     hist_ctx_t hc = { cells };
@@ -592,7 +673,7 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
         uint32_t v = rd32(b + 4u * w, swap);
         memcpy((uint8_t *)&h + 4u * w, &v, 4);
     }
-    if (h.version != COLL_MESH_VERSION) return COLL_ERR_VERSION;
+    if (h.version < COLL_MESH_VERSION_MIN || h.version > COLL_MESH_VERSION) return COLL_ERR_VERSION;
     if (h.total_size > size) return COLL_ERR_TRUNCATED;
     if (h.total_size < sizeof h || (h.total_size & 7u)) return COLL_ERR_CORRUPT;
     if (h.flags & ~(uint32_t)COLL_MESHF_ALL) return COLL_ERR_CORRUPT;
@@ -619,13 +700,15 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
     if (!hdr_float_ok(h.grid_margin) || !(h.grid_margin >= 0.0f) || !(h.grid_margin < h.cell_size) || h.reserved != 0u)
         return COLL_ERR_CORRUPT; /* finite first: no ordered compare of a NaN (the console emulator traps) */
     if ((h.flags & COLL_MESHF_IDX16) && h.nverts > 65536u) return COLL_ERR_CORRUPT;
+    /* block-based indices: version 4 only, and never together with plain 16-bit ones */
+    if ((h.flags & COLL_MESHF_IDXBLK) && (h.version < 4u || (h.flags & COLL_MESHF_IDX16))) return COLL_ERR_CORRUPT;
     if ((h.flags & COLL_MESHF_REF16) && h.ntris > 65536u) return COLL_ERR_CORRUPT;
     coll_mesh_layout_t l = coll_mesh_layout_of(h.flags, h.nverts, h.ntris, ncells, h.nrefs);
     if (l.off_verts != h.off_verts || l.off_tris != h.off_tris || l.off_cells != h.off_cells ||
         l.off_refs != h.off_refs || l.total != h.total_size)
         return COLL_ERR_CORRUPT;
 
-    section_t s[4];
+    section_t s[NSECT];
     sections_of(h.flags, &l, h.nverts, h.ntris, ncells, h.nrefs, s);
     if (checksum_of(b, swap, s) != h.checksum) return COLL_ERR_CORRUPT;
 
@@ -634,19 +717,22 @@ static coll_err_t validate(const uint8_t *b, size_t size, bool swap)
         for (uint64_t k = 0; k < s[0].count; k++)
             if (!isfinite(u2f(rd32(b + s[0].off + 4u * k, swap)))) return COLL_ERR_CORRUPT;
     }
-    for (uint64_t k = 0; k < s[1].count; k++) {
-        uint32_t v = s[1].esize == 2u ? rd16(b + s[1].off + 2u * k, swap) : rd32(b + s[1].off + 4u * k, swap);
+    const section_t *st = &s[SECT_TRIS], *sb = &s[SECT_TBASE];
+    for (uint64_t k = 0; k < st->count; k++) {
+        uint64_t v = st->esize == 2u ? rd16(b + st->off + 2u * k, swap) : rd32(b + st->off + 4u * k, swap);
+        if (h.flags & COLL_MESHF_IDXBLK) v += rd32(b + sb->off + 4u * ((k / 3u) >> COLL_MESH_TRI_BLOCK_SHIFT), swap);
         if (v >= h.nverts) return COLL_ERR_CORRUPT;
     }
     uint32_t prev = 0;
     for (uint64_t k = 0; k <= ncells; k++) {
-        uint32_t v = rd32(b + s[2].off + 4u * k, swap);
+        uint32_t v = rd32(b + s[SECT_CELLS].off + 4u * k, swap);
         if ((k == 0 && v != 0u) || v < prev || v > h.nrefs) return COLL_ERR_CORRUPT;
         prev = v;
     }
     if (prev != h.nrefs) return COLL_ERR_CORRUPT;
-    for (uint64_t k = 0; k < s[3].count; k++) {
-        uint32_t v = s[3].esize == 2u ? rd16(b + s[3].off + 2u * k, swap) : rd32(b + s[3].off + 4u * k, swap);
+    const section_t *sr = &s[SECT_REFS];
+    for (uint64_t k = 0; k < sr->count; k++) {
+        uint32_t v = sr->esize == 2u ? rd16(b + sr->off + 2u * k, swap) : rd32(b + sr->off + 4u * k, swap);
         if (v >= h.ntris) return COLL_ERR_CORRUPT;
     }
     return COLL_OK;
@@ -658,9 +744,9 @@ static void swap_in_place(uint8_t *b)
     for (uint32_t i = 0; i < sizeof(struct coll_mesh_s) / 4u; i++) w[i] = bswap32(w[i]);
     const coll_mesh_t *m = (const coll_mesh_t *)(void *)b;
     coll_mesh_layout_t l = layout_of_mesh(m);
-    section_t s[4];
+    section_t s[NSECT];
     sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < NSECT; i++) {
         if (s[i].esize == 2u) {
             uint16_t *p = (uint16_t *)(void *)(b + s[i].off);
             for (uint64_t k = 0; k < s[i].count; k++) p[k] = bswap16(p[k]);
@@ -684,7 +770,10 @@ coll_err_t coll_mesh_load(void *blob, size_t size, const coll_mesh_t **out)
     else if (rd32(b, le) == COLL_MESH_MAGIC_BLOB) native = false;
     else return COLL_ERR_BAD_MAGIC;
     /* another version first: an older (shorter-headed) blob says so, not "truncated" */
-    if (size >= 8u && rd32(b + 4, !native && le) != COLL_MESH_VERSION) return COLL_ERR_VERSION;
+    if (size >= 8u) {
+        uint32_t v = rd32(b + 4, !native && le);
+        if (v < COLL_MESH_VERSION_MIN || v > COLL_MESH_VERSION) return COLL_ERR_VERSION;
+    }
     if (size < sizeof(struct coll_mesh_s)) return COLL_ERR_TRUNCATED;
     bool swap = !native && le;
     coll_err_t err = validate(b, size, swap);
@@ -710,9 +799,9 @@ coll_err_t coll_mesh_write_blob(const coll_mesh_t *m, void *out, size_t out_size
     for (uint32_t w = 0; w < sizeof(struct coll_mesh_s) / 4u; w++) wr32be(o + 4u * w, rd32(b + 4u * w, false));
     wr32be(o, COLL_MESH_MAGIC_BLOB);
     coll_mesh_layout_t l = layout_of_mesh(m);
-    section_t s[4];
+    section_t s[NSECT];
     sections_of(m->flags, &l, m->nverts, m->ntris, ncells_of(m), m->nrefs, s);
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < NSECT; i++) {
         for (uint64_t k = 0; k < s[i].count; k++) {
             if (s[i].esize == 2u) wr16be(o + s[i].off + 2u * k, rd16(b + s[i].off + 2u * k, false));
             else wr32be(o + s[i].off + 4u * k, rd32(b + s[i].off + 4u * k, false));

@@ -8,7 +8,13 @@
  *     header (coll_mesh_s, 136 bytes)
  *     vertices   nverts x {float x,y,z}            (12 B each), or, with COLL_MESHF_QUANT,
  *                nverts x {uint16 x,y,z}           (6 B each): local = qorigin + q * qscale
- *     triangles  ntris x 3 vertex indices, uint16 with COLL_MESHF_IDX16, else uint32
+ *     triangles  ntris x 3 vertex indices, uint16 with COLL_MESHF_IDX16 or COLL_MESHF_IDXBLK,
+ *                else uint32
+ *     tri bases  with COLL_MESHF_IDXBLK (version 4) only: one uint32 per block of
+ *                COLL_MESH_TRI_BLOCK triangles; a triangle's vertex index is its block's
+ *                base plus its stored uint16 (a mesh of more than 65535 vertices whose
+ *                triangles each reach over fewer than 65536 vertices of their block's base:
+ *                6 bytes a triangle instead of 12)
  *     cells      (ncells + 1) x uint32 prefix array: the triangles of cell entry c are
  *                refs[cells[c] .. cells[c+1]). Dense grid: ncells = dims[0] * dims[1] *
  *                dims[2], cell (x,y,z) has entry x + dims[0] * (y + dims[1] * z).
@@ -32,7 +38,8 @@
  * Checksum: FNV-1a style over element VALUES (not bytes), so it is the same in both byte
  * orders: h = 2166136261; for each 32-bit header word from `version` on (skipping
  * `checksum` itself), then every vertex component, index, cell entry and ref in section
- * order: h = (h ^ value) * 16777619. Every single-element change alters it.
+ * order (tri bases after the indices): h = (h ^ value) * 16777619. Every single-element
+ * change alters it.
  */
 #ifndef COLL_MESH_FORMAT_H
 #define COLL_MESH_FORMAT_H
@@ -42,16 +49,23 @@
 #define COLL_MESH_MAGIC_BLOB   0x434D5348u /**< "CMSH": big-endian baked file, not yet loaded */
 #define COLL_MESH_MAGIC_NATIVE 0x434D534Eu /**< "CMSN": native byte order, ready to use */
 /** 2: hashed grid (COLL_MESHF_HASH, nbuckets). 3: the grid's registration margin is stored
- *  (grid_margin), so the queries use what the builder used; older blobs are refused
- *  (COLL_ERR_VERSION: bake them again). */
-#define COLL_MESH_VERSION      3u
+ *  (grid_margin), so the queries use what the builder used. 4: block-based 16-bit vertex
+ *  indices (COLL_MESHF_IDXBLK). Version 3 blobs (which never have that flag) still load;
+ *  older ones are refused (COLL_ERR_VERSION: bake them again). */
+#define COLL_MESH_VERSION      4u
+#define COLL_MESH_VERSION_MIN  3u
+/** Triangles per block of COLL_MESHF_IDXBLK (one uint32 base each). */
+#define COLL_MESH_TRI_BLOCK_SHIFT 6u
+#define COLL_MESH_TRI_BLOCK       (1u << COLL_MESH_TRI_BLOCK_SHIFT)
 
 enum {
     COLL_MESHF_QUANT = 1u << 0, /**< vertices are uint16 fixed point */
     COLL_MESHF_IDX16 = 1u << 1, /**< triangle vertex indices are uint16 (nverts <= 65535) */
     COLL_MESHF_REF16 = 1u << 2, /**< grid refs are uint16 (ntris <= 65535) */
     COLL_MESHF_HASH  = 1u << 3, /**< cells are nbuckets hash buckets, not the dense grid */
-    COLL_MESHF_ALL   = 15u,
+    COLL_MESHF_IDXBLK = 1u << 4, /**< uint16 vertex indices from a uint32 base per block of
+                                      COLL_MESH_TRI_BLOCK triangles (version 4; not with IDX16) */
+    COLL_MESHF_ALL   = 31u,
 };
 
 /** Header. All fields are 32-bit words (floats are IEEE-754 binary32). */
@@ -84,8 +98,15 @@ _Static_assert(sizeof(struct coll_mesh_s) == 136, "on-disk mesh header is 136 by
 
 /** Offsets of a layout, computed from the counts (64-bit so nothing overflows). */
 typedef struct {
-    uint64_t off_verts, off_tris, off_cells, off_refs, total;
+    uint64_t off_verts, off_tris, off_tbase, off_cells, off_refs, total;
+    uint64_t ntbase; /**< tri bases (COLL_MESHF_IDXBLK), else 0 (and off_tbase = off_cells) */
 } coll_mesh_layout_t;
+
+/** Tri-base blocks of ntris triangles. */
+static inline uint64_t coll_mesh_tri_blocks(uint64_t ntris)
+{
+    return (ntris + COLL_MESH_TRI_BLOCK - 1u) >> COLL_MESH_TRI_BLOCK_SHIFT;
+}
 
 /** Canonical layout for these counts and flags. */
 static inline coll_mesh_layout_t coll_mesh_layout_of(uint32_t flags, uint64_t nverts, uint64_t ntris,
@@ -95,7 +116,9 @@ static inline coll_mesh_layout_t coll_mesh_layout_of(uint32_t flags, uint64_t nv
 #define COLL_MESH_ALIGN8(x) (((x) + 7u) & ~(uint64_t)7u)
     l.off_verts = sizeof(struct coll_mesh_s);
     l.off_tris  = COLL_MESH_ALIGN8(l.off_verts + nverts * ((flags & COLL_MESHF_QUANT) ? 6u : 12u));
-    l.off_cells = COLL_MESH_ALIGN8(l.off_tris + ntris * ((flags & COLL_MESHF_IDX16) ? 6u : 12u));
+    l.off_tbase = COLL_MESH_ALIGN8(l.off_tris + ntris * ((flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 6u : 12u));
+    l.ntbase    = (flags & COLL_MESHF_IDXBLK) ? coll_mesh_tri_blocks(ntris) : 0u;
+    l.off_cells = COLL_MESH_ALIGN8(l.off_tbase + l.ntbase * 4u);
     l.off_refs  = COLL_MESH_ALIGN8(l.off_cells + (ncells + 1u) * 4u);
     l.total     = COLL_MESH_ALIGN8(l.off_refs + nrefs * ((flags & COLL_MESHF_REF16) ? 2u : 4u));
 #undef COLL_MESH_ALIGN8
@@ -172,6 +195,7 @@ void coll_mesh_tri_local(const coll_mesh_t *m, uint32_t i, fm_vec3_t out[3]);
 typedef struct {
     const uint8_t *verts, *tris, *refs;
     const uint32_t *cells;
+    const uint32_t *tbase; /* COLL_MESHF_IDXBLK: the blocks' base vertex indices */
     uint32_t flags;
     float qo[3], qs[3];
 } coll_mesh_view_t;
@@ -183,6 +207,9 @@ static inline void coll_mesh_view_init(coll_mesh_view_t *v, const coll_mesh_t *m
     v->tris = b + m->off_tris;
     v->refs = b + m->off_refs;
     v->cells = (const uint32_t *)(const void *)(b + m->off_cells);
+    /* the tri bases follow the indices (coll_mesh_layout_of) */
+    uint64_t tb = m->off_tris + (((uint64_t)m->ntris * 6u + 7u) & ~(uint64_t)7u);
+    v->tbase = (const uint32_t *)(const void *)(b + tb);
     v->flags = m->flags;
     for (int a = 0; a < 3; a++) { v->qo[a] = m->qorigin[a]; v->qs[a] = m->qscale[a]; }
 }
@@ -199,6 +226,10 @@ static inline void coll_mesh_view_tri(const coll_mesh_view_t *v, uint32_t i, fm_
     if (v->flags & COLL_MESHF_IDX16) {
         const uint16_t *t = (const uint16_t *)(const void *)v->tris + 3u * i;
         ix[0] = t[0]; ix[1] = t[1]; ix[2] = t[2];
+    } else if (v->flags & COLL_MESHF_IDXBLK) {
+        const uint16_t *t = (const uint16_t *)(const void *)v->tris + 3u * i;
+        uint32_t b = v->tbase[i >> COLL_MESH_TRI_BLOCK_SHIFT];
+        ix[0] = b + t[0]; ix[1] = b + t[1]; ix[2] = b + t[2];
     } else {
         const uint32_t *t = (const uint32_t *)(const void *)v->tris + 3u * i;
         ix[0] = t[0]; ix[1] = t[1]; ix[2] = t[2];

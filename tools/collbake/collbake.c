@@ -733,9 +733,11 @@ int main(int argc, char **argv)
            (unsigned long long)gs.nonempty);
     printf("  per cell   max %u triangles, mean %.2f over non-empty cells; %u refs (%.2f cells per triangle)\n",
            gs.max_per_cell, gs.mean_per_nonempty, m->nrefs, m->ntris ? (double)m->nrefs / m->ntris : 0.0);
-    printf("  size       %u bytes, %.1f bytes/triangle (header %u, vertices %llu, triangles %llu, cells %llu, refs %llu)\n",
+    printf("  size       %u bytes, %.1f bytes/triangle (header %u, vertices %llu, triangles %llu with %s indices, "
+           "cells %llu, refs %llu)\n",
            m->total_size, m->ntris ? (double)m->total_size / m->ntris : 0.0, (unsigned)l.off_verts,
            (unsigned long long)(l.off_tris - l.off_verts), (unsigned long long)(l.off_cells - l.off_tris),
+           (m->flags & COLL_MESHF_IDX16) ? "16-bit" : (m->flags & COLL_MESHF_IDXBLK) ? "16-bit block" : "32-bit",
            (unsigned long long)(l.off_refs - l.off_cells), (unsigned long long)(l.total - l.off_refs));
     if (o.quantize)
         printf("  quantized  %s: worst-case vertex error %.3g m (steps %.2g, %.2g, %.2g m)\n",
