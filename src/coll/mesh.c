@@ -442,7 +442,9 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
          * triangle, so the finer start costs no more memory than the old coarse default. */
         uint64_t refs_cap = max_refs;
         if (automatic) {
-            uint64_t budget = (uint64_t)m->ntris * ((m->flags & COLL_MESHF_QUANT) ? 9u : 19u) / 2u + 1024u;
+            /* (quantized: a small constant, so a small level also stays under 14 B a triangle) */
+            uint64_t budget = (m->flags & COLL_MESHF_QUANT) ? (uint64_t)m->ntris * 9u / 2u + 128u
+                                                            : (uint64_t)m->ntris * 19u / 2u + 1024u;
             unsigned rshift = (m->flags & COLL_MESHF_REF16) ? 1u : 2u; /* ref bytes 2 or 4 (no 64-bit divide) */
             uint64_t left = budget > 4u * (ncells + 1u) ? budget - 4u * (ncells + 1u) : 0u;
             if ((left >> rshift) < refs_cap) refs_cap = left >> rshift;
