@@ -237,7 +237,8 @@ static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
  * Snaps the body down by dist along -up, swept. Where the capsule's rounded bottom catches
  * on an edge on the way (the nosing of the stair behind, walking down short treads), it
  * slides down off it along the contact plane, as a resting ball would, instead of hanging
- * on it above the floor: the way it was going (b->velocity, this step's motion).
+ * on it above the floor: the way it was going (b->velocity, this step's motion), and never
+ * against the input across up.
  */
 static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
 {
@@ -270,6 +271,10 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         fm_vec3_t la = v3_reject(left, c->up), va = v3_reject(b->velocity, c->up);
         float lv = v3_len(la) * v3_len(va);
         if (lv > 0.0f ? !(v3_dot(la, va) > 0.5f * lv) : !(v3_dot(left, b->velocity) > 0.0f)) return;
+        /* nor against the input: the velocity may be the sub-millimetre residue of a slide
+         * stopped by a wall or a steep face, not a way the body goes (soak s2 l75: 49 mm
+         * back down a steep face it was pushed against) */
+        if (v3_dot(la, b->input_velocity) < 0.0f) return;
         if (!(v3_dot(left, c->up) < -c->tiny)) return;
     }
 }

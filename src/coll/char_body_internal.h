@@ -45,6 +45,10 @@ enum {
 /** Height tolerance of the stair step and the probe's lift, m: rises and treads compared
  *  within it, lifts shorter than it are not "no room". */
 #define CB_STEP_EPS 0.001f
+/** Walking, a slide that ends this far behind its start along the input went backwards
+ *  (skin corrections in a corner): it is redone without the backward part, m. Above float
+ *  noise at positions of a few hundred metres. */
+#define CB_BACK_TOL 1e-5f
 /** Motion shorter than this is none (a sweep is skipped, a direction not taken), m. */
 #define CB_TINY 1e-6f
 /** Most slide planes remembered in one step (max_slides is at most 8). */

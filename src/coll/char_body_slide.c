@@ -271,8 +271,35 @@ static void record_hit(const cb_ctx_t *c, fm_vec3_t motion, fm_vec3_t plane, fm_
     }
 }
 
+/**
+ * Walking, a slide never ends up against the input across up (Quake III's PM_SlideMove
+ * stops a move that turns against the primal velocity). Its clips cannot turn the motion
+ * back (each is a projection of the intended motion), but its position corrections can:
+ * the skin top-ups along a contact's real normal and the nudges off a plane met again
+ * add up in a corner or wedge, and under a tilted up a wall that leans over the body is
+ * slid along as a vertical one, so the motion climbing it moves away from it. Where that
+ * left the body behind its start along the input, it goes back to the start and makes only
+ * the rest of the slide's motion (swept, with nothing along the input): it stops rather
+ * than walks backwards. start: where the slide began; disp: its intended motion. True when
+ * the slide was redone.
+ */
+static bool no_backwards(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t disp)
+{
+    fm_vec3_t ih = v3_reject(disp, c->up);
+    float il = v3_len(ih);
+    if (!(il > c->tiny)) return false;
+    fm_vec3_t dir = v3_scale(ih, 1.0f / il), d = v3_sub(*pos, start);
+    float along = v3_dot(d, dir);
+    if (!(along < -cb_len_tol(c, CB_BACK_TOL))) return false;
+    *pos = start;
+    coll_cb_move_swept(c, pos, v3_madd(d, dir, -along));
+    return true;
+}
+
 void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
 {
+    const fm_vec3_t start = *pos;
+    bool touched = false; /* a sweep met something: only then can the slide have gone back */
     int step_ups = 0;
     const char_body_t *b = c->body;
     fm_vec3_t planes[CB_MAX_PLANES];
@@ -292,6 +319,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             break;
         }
         if (!v3_finite(hit.normal) || !isfinite(hit.t)) break;
+        touched = true;
         hit.normal = face_normal(&hit);
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
@@ -348,6 +376,9 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             if (vel) *vel = no_climb(c, vel0, *vel, planes, np);
         }
     }
+    const fm_vec3_t slid = *pos;
+    if (grounded && touched && no_backwards(c, pos, start, disp) && step_ups > 0 && c->ev)
+        c->ev->step += v3_dot(v3_sub(*pos, slid), c->up); /* a stair step redone: its height as done */
 }
 
 /** Contacts of the sweep capsule at pos (at most CB_MAX_CONTACTS). */
