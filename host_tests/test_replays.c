@@ -359,6 +359,19 @@ static void test_oracle_velocity(void)
     m.pos0 = o; m.pos1 = V(0.3f, 1, 0); m.vel1 = V(0, 0, 0); m.dt = 1.0f / 60; m.pen0 = true;
     osim.owner = m.pos1; osim.body.velocity = m.vel1;
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &m));
+    /* a start overlap under the checker's 1 mm (s1 l114: 0.82 mm) is still pushed out by
+     * the body's recover (depth + half a skin, 1.3 mm): a correction, not motion; allowed up
+     * to twice that, a move beyond it is still checked */
+    m.pen0 = false; m.pen_depth = 0.0008; m.pos1 = V(0.0013f, 1, 0);
+    osim.owner = m.pos1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &m));
+    m.pos1 = V(0.0045f, 1, 0);
+    osim.owner = m.pos1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_VELOCITY, soak_sim_check_motion(&osim, &m));
+    m.pen_depth = 0.00005; m.pos1 = V(0.0013f, 1, 0); /* under CB_MIN_DEPTH: not pushed out */
+    osim.owner = m.pos1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_VELOCITY, soak_sim_check_motion(&osim, &m));
+    m.pen_depth = 0;
     /* dt beyond the body's 0.1 s clamp: the displacement is over 0.1 s */
     m.pen0 = false; m.dt = 0.2f; m.vel1 = V(3, 0, 0); m.pos1 = V(0.3f, 1, 0);
     osim.owner = m.pos1; osim.body.velocity = m.vel1;

@@ -254,6 +254,8 @@ typedef struct {
     bool grounded0, steep0;       ///< floor state before the step
     bool excuse;                  ///< teleport, up change, mover near or carried this frame
     bool pen0;                    ///< started overlapping (penetrating or in an excused state)
+    double pen_depth;             ///< the checker's penetration at the start, m (under SOAK_PEN_TOL
+                                  ///< the body's recover still pushes it out: not motion)
     bool launched;                ///< the velocity along up before the step rose: a jump, not a walk
 } soak_motion_t;
 
