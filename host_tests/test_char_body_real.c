@@ -688,6 +688,63 @@ static void test_velocity_matches_motion_in_the_air(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
 }
 
+/* No motion across up is faster than the speed limit (200 m/s), so the velocity can say
+ * what the body moved with. Falling at 15 m/s onto the edge of a ledge just past it (the
+ * foot point 5 cm beyond, the lower floor 5 m down), the slide pushes the body off the edge
+ * sideways: 0.45 m in a 1 ms step was 451 m/s, reported as 200 (soak s2 l359: 0.83 m in
+ * 4 ms). Now the push goes at most as fast as the limit allows; the rest, next step. */
+static void test_velocity_slide_off_edge_within_speed_limit(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(-5.0f, -0.5f, 0.0f), cb_vec(5.0f, 0.5f, 5.0f), 0.0f); /* ledge, top y = 0, x <= 0 */
+    cb_geo_box(cb_vec(0.0f, -5.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f); /* floor y = -5 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* the sweep capsule's bottom ball (0.75 above the foot, r 0.5) 12 mm above the edge */
+    cb_body_init(&body, &pos, cb_vec(0.05f, -0.24f, 0.0f));
+    char_body_set_velocity(&body, cb_vec(0.0f, -15.0f, 0.0f));
+    const float dt = 0.001f;
+    fm_vec3_t before = pos;
+    CB_STEP(&body, dt);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    float dx = (pos.x - before.x) / dt, dz = (pos.z - before.z) / dt;
+    cb_report("slide off a ledge's edge in 1 ms: speed across up", sqrtf(dx * dx + dz * dz), "m/s");
+    TEST_ASSERT_TRUE(pos.x > before.x);                  /* it does slide off */
+    TEST_ASSERT_TRUE(sqrtf(dx * dx + dz * dz) <= 200.0f * 1.01f);
+    TEST_ASSERT_FLOAT_WITHIN(0.02f * 200.0f, dx, v.x);   /* the velocity is the motion */
+    for (int i = 0; i < 400 && pos.y > -4.9f; i++) CB_STEP(&body, dt);
+    TEST_ASSERT_TRUE(pos.x > 0.5f);                      /* off the edge, fallen past it */
+}
+
+/* A snap is a position correction along up; sliding off a nosing on the way down is motion
+ * across up, and no faster than the speed limit. Grounded on an upper floor with the foot
+ * just past its edge (1 cm), a floor 0.28 m lower in snap reach: a step of 1 ns snaps down,
+ * the capsule's bottom catches the edge and slid 0.6 mm off it in that nanosecond (6e5 m/s,
+ * reported as 200 m/s; soak s2 l301, l381, l408: up to 9 cm). Now it stays on the edge for
+ * that step, reporting the walking speed; the next ordinary step goes on down. */
+static void test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(-5.0f, -0.5f, 0.0f), cb_vec(5.0f, 0.5f, 5.0f), 0.0f);   /* upper, top y = 0 */
+    cb_geo_box(cb_vec(0.0f, -0.78f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f); /* lower, top y = -0.28 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    cb_body_init(&body, &pos, cb_vec(-0.3f, 0.0f, 0.0f));
+    for (int i = 0; i < 5; i++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    pos.x = 0.01f; /* the owner moved it: still grounded, the foot past the edge */
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    const float dt = 1e-9f;
+    fm_vec3_t before = pos;
+    CB_STEP(&body, dt);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    cb_report("1 ns step snapping past an edge: moved across up", fabsf(pos.x - before.x), "m");
+    TEST_ASSERT_TRUE(fabsf(pos.x - before.x) < 1e-6f);
+    TEST_ASSERT_TRUE(fabsf(pos.z - before.z) < 1e-6f);
+    TEST_ASSERT_TRUE(sqrtf(v.x * v.x + v.y * v.y + v.z * v.z) < 10.0f);
+    for (int i = 0; i < 30; i++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, -0.28f, pos.y);     /* went on down */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -710,5 +767,7 @@ int main(void)
     RUN_TEST(test_corner_push_never_backwards);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
+    RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
+    RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);
     return UNITY_END();
 }

@@ -354,6 +354,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.skin = 0.01f * s->radius < CB_SKIN * c.unit ? 0.01f * s->radius : CB_SKIN * c.unit;
     const float max_speed = CB_MAX_SPEED * c.unit;
     c.dt = dt;
+    c.max_speed = max_speed;
     c.ev = NULL;
     c.gather = NULL;
     body->events = (char_body_events_t){0};

@@ -74,6 +74,7 @@ typedef struct {
     float min_depth;     ///< CB_MIN_DEPTH in the body's unit
     float tiny;          ///< CB_TINY in the body's unit
     float dt;            ///< this step's (clamped) duration, s
+    float max_speed;     ///< CB_MAX_SPEED in the body's unit: no motion across up is faster
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
     const coll_gather_t *gather; ///< the step's candidate triangles, or NULL (scene queries)
 } cb_ctx_t;

@@ -126,9 +126,11 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
  * Airborne, the capsule's rounded bottom resting on an edge that the foot point is already
  * past: the foot is a point, so there is nothing to stand on. Push the capsule sideways off
  * the edge (a swept move) and report true; false when the ground under the foot point
- * supports the contact (a floor or slope).
+ * supports the contact (a floor or slope). The push is motion (the honest velocity shows
+ * it): at most *shove, what the speed limit leaves of the step beside its own motion (a
+ * 0.83 m push in a 4 ms step, soak s2 l359, went at 209 m/s); the rest is for the next step.
  */
-static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_hit_t *hit)
+static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_hit_t *hit, float *shove)
 {
     float nu = v3_dot(hit->normal, c->up);
     if (nu <= 0.05f) return false;
@@ -146,13 +148,19 @@ static bool slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_h
     if (v3_len(dir) < 0.5f) return false;
     float need = c->radius + c->skin - hl;
     if (need <= 0.0f) return false;
+    if (need > *shove) need = *shove;
+    if (!(need > c->tiny)) return false;
     fm_vec3_t d = v3_scale(dir, need);
     coll_sweep_hit_t h2;
     if (cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &h2)) {
         float travel = need * h2.t - c->skin;
-        if (travel > 0.0f) *pos = v3_madd(*pos, dir, travel);
+        if (travel > 0.0f) {
+            *pos = v3_madd(*pos, dir, travel);
+            *shove -= travel;
+        }
     } else {
         *pos = v3_add(*pos, d);
+        *shove -= need;
     }
     return true;
 }
@@ -310,6 +318,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
      * back out of a wide corner and ping-pong (Quake's primal_velocity check, made exact). */
     const fm_vec3_t vel0 = vel ? *vel : v3(0.0f, 0.0f, 0.0f);
     float time_left = 1.0f;
+    float shove = c->max_speed * c->dt - v3_len(disp); /* slide_off_edge's room under the speed limit */
     for (int it = 0; it < b->settings.max_slides; it++) {
         float len = v3_len(rem);
         if (!(len > c->tiny)) break;
@@ -347,7 +356,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
         fm_vec3_t left = v3_scale(rem, 1.0f - done);
         time_left *= 1.0f - done;
-        if (!grounded && v3_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit)) {
+        if (!grounded && v3_dot(left, c->up) < 0.0f && slide_off_edge(c, pos, &hit, &shove)) {
             rem = left;
             continue;
         }
