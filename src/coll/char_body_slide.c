@@ -319,7 +319,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     const fm_vec3_t vel0 = vel ? *vel : v3(0.0f, 0.0f, 0.0f);
     float time_left = 1.0f;
     float shove = c->max_speed * c->dt - v3_len(disp); /* slide_off_edge's room under the speed limit */
-    for (int it = 0; it < b->settings.max_slides; it++) {
+    int slides = b->settings.max_slides;
+    for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
         if (!(len > c->tiny)) break;
         coll_sweep_hit_t hit;
@@ -353,6 +354,11 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             float sep = back * -v3_dot(rem, hit.normal) / len;
             if (sep < c->skin) *pos = v3_madd(*pos, hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f));
         }
+        /* In the air, a first sweep that met at once what the body already rests against
+         * (it travelled no more than the skin) is not a slide: the clipped motion still gets its sweep.
+         * Else with max_slides 1 a body touching a wall, a steep face or an edge never
+         * moves again, not even to fall along it (soak: 10 bodies hung at rest). */
+        if (it == 0 && !grounded && len * t <= 2.0f * c->skin) slides++;
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
         fm_vec3_t left = v3_scale(rem, 1.0f - done);
         time_left *= 1.0f - done;
