@@ -688,6 +688,43 @@ static void test_velocity_matches_motion_in_the_air(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
 }
 
+/* The same with the rest farther below the foot than floor_snap_distance: a 50 degree
+ * walkable slope (limit 55), r 0.5, step and snap 0.05: the sweep capsule rests on it with
+ * the foot 0.228 m above it. The foot ray reached only the snap (0.05 m) below the foot:
+ * the body landed, was never grounded, and slid down the slope in the air (soak s1 l7,
+ * wedged under a ceiling there, hung at rest). The ray now reaches the deepest such rest. */
+static void test_landing_on_slope_rest_beyond_snap(void)
+{
+    const float deg = 50.0f, r = 0.5f, step = 0.05f;
+    const float t = tanf(deg * DEG);
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
+                cb_vec(10.0f, 10.0f * t, -10.0f)); /* rises along +x */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0.0f, 0.5f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = r;
+    s.height = 2.0f;
+    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
+    s.step_height = step;
+    s.floor_snap_distance = step;
+    s.floor_max_angle = 55.0f * DEG;
+    char_body_configure(&body, &s);
+    const float hover = r / cosf(deg * DEG) - r - step; /* 0.228 m */
+    int landed = -1;
+    for (int f = 0; f < 60; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (landed < 0 && char_body_is_on_floor(&body)) landed = f;
+    }
+    cb_report("slope rest 0.228 m below the foot, snap 0.05: frames to land from 0.5 m", landed, "");
+    TEST_ASSERT_TRUE(landed >= 0 && landed < 30);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.003f, hover, pos.y - pos.x * t);
+    TEST_ASSERT_TRUE(pos.x > -0.5f); /* did not slide down the slope */
+}
+
 /* max_slides 1: a body in the air pushing into a wall (its input into it) still falls
  * along it. Its one sweep met the wall at once every step (the body rests against it, a
  * skin away), travelled nothing, and the clipped motion down the wall was never swept: it
@@ -796,6 +833,7 @@ int main(void)
     RUN_TEST(test_corner_push_never_backwards);
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
+    RUN_TEST(test_landing_on_slope_rest_beyond_snap);
     RUN_TEST(test_one_slide_body_falls_along_wall_it_pushes);
     RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);

@@ -293,11 +293,12 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
 }
 
 /** True when the sweep capsule at pos touches a plane of normal n right below it (within
- * the contact tolerance): what holds it up is that plane. */
+ * the contact tolerance): what holds it up is that plane. Looked for along -n, not -up: a
+ * wall the capsule touches beside it (wedged) is then not met first (soak s2 l336). */
 static bool resting_on(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t n)
 {
     coll_sweep_hit_t h;
-    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) &&
+    return cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(n, -c->contact_eps), &h) &&
            isfinite(h.t) && v3_finite(h.normal) && v3_dot(h.normal, n) > 0.999f;
 }
 
@@ -313,7 +314,13 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     if (!jumping) {
         fm_vec3_t origin = v3_madd(cb_foot(c, *pos), up, above);
         coll_ray_hit_t hit;
-        bool found = cb_ray(c, origin, v3_scale(up, -1.0f), above + c->snap, &hit) &&
+        /* The ray reaches floor_snap_distance below the foot, and where the settings let the
+         * sweep capsule rest on a walkable slope farther below the foot than that (r / cos of
+         * the steepest walkable angle - (r + step) > snap, below), that far: else a body
+         * resting on such a slope never sees it (soak s1 l7: 0.37 m, snap 0.29). */
+        float depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
+        if (!(depth > c->snap)) depth = c->snap;
+        bool found = cb_ray(c, origin, v3_scale(up, -1.0f), above + depth, &hit) &&
                      v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
             float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
@@ -349,9 +356,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             } else if (nu > 0.0f) {
                 /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
                  * which puts the plane r / cos - (r + step) below the foot along up. Only
-                 * that close (plus CB_MARGIN, 1 cm) is standing on it; higher up the body is falling. */
+                 * that close (plus CB_MARGIN, 1 cm) is standing on it; higher up the body is falling.
+                 * Within the snap distance only (the ray's longer reach is for walkable slopes). */
                 float rest = c->radius / nu - (c->radius + c->step);
-                if (gap <= (rest > 0.0f ? rest : 0.0f) + cb_len_tol(c, CB_MARGIN))
+                if (gap <= (rest > 0.0f ? rest : 0.0f) + cb_len_tol(c, CB_MARGIN) && gap <= c->snap)
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
             }
         }
