@@ -725,6 +725,38 @@ static void test_landing_on_slope_rest_beyond_snap(void)
     TEST_ASSERT_TRUE(pos.x > -0.5f); /* did not slide down the slope */
 }
 
+/* Landing with the capsule's rounded bottom on the edge of a kerb taller than the step
+ * (3 cm, step 1 cm, snap 2 cm), the foot 1 cm past it over the floor, pushing into the kerb
+ * under a ceiling that leaves no room to climb it: the slide does not push the body off the
+ * edge (the floor under the foot supports it), and the probe, reaching only 2 mm when
+ * landing, did not see that floor 14 mm below the foot: the body hung at rest in the air
+ * for ever (soak s1 l217). It stands there now (grounded, foot above the floor). */
+static void test_resting_on_kerb_edge_over_floor_is_grounded(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);   /* floor y = 0 */
+    cb_geo_box(cb_vec(-5.0f, 0.015f, 0.0f), cb_vec(5.0f, 0.015f, 5.0f), 0.0f); /* kerb x <= 0, top 0.03 */
+    cb_geo_box(cb_vec(0.0f, 2.515f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);  /* ceiling y = 2.015 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0.1f, 0.012f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = 0.5f;
+    s.height = 2.0f;
+    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
+    s.step_height = 0.01f;
+    s.floor_snap_distance = 0.02f;
+    s.floor_max_angle = 60.0f * DEG;
+    char_body_configure(&body, &s);
+    body.input_velocity = cb_vec(-1.0f, 0.0f, 0.0f);
+    for (int f = 0; f < 60; f++) CB_STEP(&body, 1.0f / 60.0f);
+    cb_report("resting on a kerb's edge, foot over the floor: foot height", pos.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y > -0.001f && pos.y < 0.02f);
+    fm_vec3_t v = char_body_get_velocity(&body);
+    TEST_ASSERT_TRUE(fabsf(v.x) + fabsf(v.y) + fabsf(v.z) < 0.01f);
+}
+
 /* max_slides 1: a body in the air pushing into a wall (its input into it) still falls
  * along it. Its one sweep met the wall at once every step (the body rests against it, a
  * skin away), travelled nothing, and the clipped motion down the wall was never swept: it
@@ -834,6 +866,7 @@ int main(void)
     RUN_TEST(test_velocity_at_rest_over_slot);
     RUN_TEST(test_velocity_matches_motion_in_the_air);
     RUN_TEST(test_landing_on_slope_rest_beyond_snap);
+    RUN_TEST(test_resting_on_kerb_edge_over_floor_is_grounded);
     RUN_TEST(test_one_slide_body_falls_along_wall_it_pushes);
     RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);

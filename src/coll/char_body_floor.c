@@ -302,6 +302,28 @@ static bool resting_on(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t n)
            isfinite(h.t) && v3_finite(h.normal) && v3_dot(h.normal, n) > 0.999f;
 }
 
+/**
+ * Landing, the foot point over a walkable floor gap below it (out of the contact reach),
+ * while the sweep capsule's rounded bottom rests on an upward-facing edge beside it (a
+ * kerb taller than the step): the slide does not push the body off that edge, because the
+ * floor under the foot supports it (slide_off_edge: within r / cos of the contact + 2 cm
+ * of the bottom ball's centre), so it is standing, not falling. Without this the body hung
+ * there at rest in the air, its foot 3 mm over the floor (soak s1 l217). Never true where
+ * r / cos(floor_max_angle) + 2 cm <= r + step (the defaults): no query then.
+ */
+static bool resting_beside(const cb_ctx_t *c, fm_vec3_t pos, float gap)
+{
+    const char_body_t *b = c->body;
+    const float margin = 2.0f * cb_len_tol(c, CB_MARGIN), lift = c->radius + c->step;
+    if (!(gap <= c->radius / b->cos_floor_max_angle + margin - lift)) return false;
+    coll_sweep_hit_t h;
+    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) ||
+        !isfinite(h.t) || !v3_finite(h.normal))
+        return false;
+    float nu = v3_dot(h.normal, c->up);
+    return nu >= b->cos_floor_max_angle && gap <= c->radius / nu + margin - lift;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -336,6 +358,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 float rest = c->radius / nu - (c->radius + c->step);
                 if (gap > reach && rest > reach && gap <= rest + contact_eps && !one_way_deep &&
                     resting_on(c, *pos, hit.normal))
+                    reach = gap;
+                else if (gap > reach && !one_way_deep && resting_beside(c, *pos, gap))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
