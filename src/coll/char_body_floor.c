@@ -246,9 +246,10 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
 {
     const char_body_t *b = c->body;
     fm_vec3_t left = v3_scale(c->up, -dist);
-    float budget = (c->max_speed - v3_len(b->velocity)) * c->dt; /* across up, for sliding off */
+    float budget = -1.0f; /* across up, for sliding off: computed at the first slide off */
     for (int it = 0; it < 3; it++) {
         if (it > 0) {
+            if (budget < 0.0f) budget = f_max(0.0f, (c->max_speed - v3_len(b->velocity)) * c->dt);
             float across = v3_len(v3_reject(left, c->up));
             if (across > budget) {
                 if (!(budget > c->tiny)) return;
@@ -271,7 +272,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         }
         if (travel > 0.0f) {
             *pos = v3_madd(*pos, left, travel / len);
-            budget -= v3_len(v3_reject(left, c->up)) * travel / len;
+            if (it > 0) budget -= v3_len(v3_reject(left, c->up)) * travel / len;
         }
         left = v3_scale(left, 1.0f - (travel > 0.0f ? travel / len : 0.0f));
         /* Only an edge under the capsule is slid off, and only onwards (the way the body
@@ -340,8 +341,9 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
          * sweep capsule rest on a walkable slope farther below the foot than that (r / cos of
          * the steepest walkable angle - (r + step) > snap, below), that far: else a body
          * resting on such a slope never sees it (soak s1 l7: 0.37 m, snap 0.29). */
-        float depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
-        if (!(depth > c->snap)) depth = c->snap;
+        float depth = c->snap;
+        if (c->radius > (c->radius + c->step + c->snap - contact_eps) * b->cos_floor_max_angle)
+            depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
         bool found = cb_ray(c, origin, v3_scale(up, -1.0f), above + depth, &hit) &&
                      v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
