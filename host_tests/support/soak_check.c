@@ -362,10 +362,12 @@ static double pt_tri_dist(const double p[3], const soak_wtri_t *w)
 }
 
 int32_t soak_footing_tri = -1; /* the triangle of the last soak_check_footing result (diagnosis) */
+int32_t soak_footing_tri2 = -1; /* the other triangle of its crack pair, or -1: under the foot */
+double soak_footing_pair_cos = 1; /* cosine of the angle across up between the pair's contacts */
 
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
 {
-    soak_footing_tri = -1;
+    soak_footing_tri = soak_footing_tri2 = -1;
     double up[3], f[3], r;
     foot_point(s, owner, up, f, &r);
     const double step = s->step_height, below = (double)s->floor_snap_distance + 2 * r;
@@ -436,7 +438,12 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         for (int j = i + 1; j < nc; j++) {
             if (dot3(cu[i], cu[j]) > -0.5) continue;
             double ex = cex[i] < cex[j] ? cex[i] : cex[j];
-            if (ex > worst) { worst = ex; soak_footing_tri = ctri[cex[i] < cex[j] ? i : j]; }
+            if (ex > worst) {
+                worst = ex;
+                soak_footing_tri = ctri[cex[i] < cex[j] ? i : j];
+                soak_footing_tri2 = ctri[cex[i] < cex[j] ? j : i];
+                soak_footing_pair_cos = dot3(cu[i], cu[j]);
+            }
         }
     return worst;
 }

@@ -295,6 +295,8 @@ int  soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m);
  *  tolerated sag (0 when not below); the oracle fails above SOAK_FOOT_TOL. */
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
 extern int32_t soak_footing_tri; ///< triangle (lvl->wtris index) behind the last footing result, -1: none
+extern int32_t soak_footing_tri2; ///< the other triangle of its crack pair (case 2), -1: the surface under the foot
+extern double soak_footing_pair_cos; ///< cosine of the angle across up between that pair's contacts
 /** Progress: whether the checker verifies free, flat, walkable space for the capsule from
  *  owner along disp (across up). */
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp);
