@@ -285,6 +285,69 @@ static void test_groove_between_low_blocks(void)
     }
 }
 
+/* Blocks 8 mm apart in height (tops 0.230 and 0.222 m) with a 9 cm gap, a wall 0.9 m past
+ * the gap (soak seed 1 level 49: r 0.71, step 0.69). With the foot a few millimetres past
+ * the higher edge, that edge is almost under the ball, whose tangent barely descends:
+ * rolled along it by a diameter the ball passed over the lower block and met the wall,
+ * which is no far side of a gap, so the body stepped down to the floor 22 cm below both
+ * blocks. It must stand at the blocks' level, at every such offset, and walk on. */
+static void build_gap_with_wall(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(-2.0f, 0.115f, 0.0f), cb_vec(2.0f, 0.115f, 4.0f), 0.0f); /* x in [-4, 0], top 0.230 */
+    cb_geo_box(cb_vec(2.09f, 0.111f, 0.0f), cb_vec(2.0f, 0.111f, 4.0f), 0.0f); /* x in [0.09, 4.09], top 0.222 */
+    cb_geo_box(cb_vec(1.25f, 1.0f, 0.0f), cb_vec(0.25f, 1.0f, 4.0f), 0.0f);    /* wall x in [1.0, 1.5], 2 m */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_gap_between_blocks_with_a_wall_beyond(void)
+{
+    const float r = 0.7f, lowest_ok = 0.222f - crack_sag(r, 0.09f) - 0.001f;
+    static const float offsets[6] = {0.001f, 0.003f, 0.005f, 0.01f, 0.02f, 0.04f};
+    char_body_settings_t s;
+    for (int i = 0; i < 6; i++) {
+        cb_world_reset();
+        build_gap_with_wall();
+        body_with_radius(cb_vec(-0.3f, 0.23f, 0.0f), r, 3.4f);
+        s = body.settings;
+        s.step_height = 0.69f;
+        s.floor_snap_distance = 0.94f;
+        char_body_configure(&body, &s);
+        for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        pos.x = offsets[i]; /* the foot just past the higher edge, over the gap */
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (pos.y < lowest_ok)
+            printf("gap with a wall beyond: foot %.3f m past the edge stands at %.4f\n", (double)offsets[i], (double)pos.y);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(pos.y >= lowest_ok);
+    }
+    /* and walks across to the wall at the blocks' level */
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        build_gap_with_wall();
+        body_with_radius(cb_vec(-1.5f, 0.23f, 0.0f), r, 3.4f);
+        s = body.settings;
+        s.step_height = 0.69f;
+        s.floor_snap_distance = 0.94f;
+        char_body_configure(&body, &s);
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest = 1.0f;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > -0.01f && pos.x < 0.1f && pos.y < lowest) lowest = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "gap with a wall beyond at %.0f Hz: lowest foot over it (>= 0.2195)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_FLOAT_WITHIN(0.02f, 1.0f - r, pos.x); /* at the wall */
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.222f, pos.y);
+    }
+}
+
 /* A real ledge is still a ledge: past the edge with nothing beyond, the body falls. */
 static void test_ledge_beside_wide_gap_falls(void)
 {
@@ -635,6 +698,7 @@ int main(void)
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
     RUN_TEST(test_groove_between_low_blocks);
+    RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);

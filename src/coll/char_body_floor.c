@@ -129,16 +129,26 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
-        bool met = cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, 2.0f * r), &h2);
-        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -v3_dot(downhill, up) : 0.0f;
         fm_vec3_t across = v3_norm(v3_reject(downhill, up));
-        if (!met && n1u > 0.995f && v3_len(across) > 0.5f) {
-            /* Resting on an edge almost under its centre the tangent barely descends: the
-             * ball would roll off it and drop. Move it off across up by a radius, then down
-             * by half a radius: the far side of a gap a few millimetres lower than this edge
-             * (a tile beside a tile) is met on the way. */
+        /* Resting on an edge almost under its centre the tangent barely descends: rolled
+         * along it by a diameter the ball would pass over the far side of a gap a few
+         * millimetres lower than this edge (a tile beside a tile, a block beside a block)
+         * and meet whatever stands beyond (a ramp a metre away). */
+        const bool flat = n1u > 0.995f && v3_len(across) > 0.5f;
+        bool met = !flat && cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, 2.0f * r), &h2);
+        float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * 2.0f * r * -v3_dot(downhill, up) : 0.0f;
+        if (flat) {
+            /* The ball would roll off it and drop: move it off across up by a radius, then
+             * down by half a radius; the far side of such a gap is met on the way. What
+             * the move across meets above this edge's level (a wall, a taller block
+             * beyond the gap) is not that far side: the ball drops from where it stopped. */
             fm_vec3_t off = v3_scale(across, r);
             met = cb_sweep(c, b1, r, 0.0f, off, &h2);
+            if (met && isfinite(h2.t) && v3_dot(v3_sub(h2.point, foot), up) > c1 + 0.1f * r) {
+                float t = h2.t * r - c->skin;
+                off = v3_scale(across, t > 0.0f ? t : 0.0f);
+                met = false;
+            }
             if (!met && cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &h2)) {
                 met = true;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
