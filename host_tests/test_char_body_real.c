@@ -285,6 +285,67 @@ static void test_groove_between_low_blocks(void)
     }
 }
 
+/* A groove 10 cm wide between blocks of different heights (tops 0.20 and 0.12 m) on a
+ * floor within snap reach (soak seed 1 levels 12, 17, 35: tiles and slabs that do not
+ * meet at one level). A capsule crossing or walking along it rests on the edges (sunk at
+ * most the sag over the gap below the lower one); before, the crack rule held only edges
+ * within a tenth of a radius of one level, and the body stood on the floor at the
+ * groove's bottom with its foot 12-20 cm inside both blocks. */
+static void build_uneven_groove(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(-2.0f, 0.10f, 0.0f), cb_vec(2.0f, 0.10f, 4.0f), 0.0f); /* x in [-4, 0], top 0.20 */
+    cb_geo_box(cb_vec(2.1f, 0.06f, 0.0f), cb_vec(2.0f, 0.06f, 4.0f), 0.0f);  /* x in [0.1, 4.1], top 0.12 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_groove_between_blocks_of_different_heights(void)
+{
+    const float lowest_ok = 0.12f - crack_sag(0.5f, 0.10f) - 0.001f;
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        /* across: from the higher block over the groove onto the lower one */
+        cb_world_reset();
+        build_uneven_groove();
+        cb_body_init(&body, &pos, cb_vec(-1.5f, 0.20f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest = 1.0f;
+        int air = 0;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > -0.01f && pos.x < 0.11f && pos.y < lowest) lowest = pos.y;
+            if (!char_body_is_on_floor(&body)) air++;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "uneven groove across at %.0f Hz: lowest foot over it (>= 0.1165)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_TRUE(pos.x > 1.0f); /* went where asked */
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.12f, pos.y); /* stands on the lower block */
+        TEST_ASSERT_TRUE(air <= 1);
+        /* along: landing over the groove, then walking along it */
+        cb_world_reset();
+        build_uneven_groove();
+        cb_body_init(&body, &pos, cb_vec(0.05f, 0.3f, -3.0f));
+        for (int f = 0; f < 30; f++) CB_STEP(&body, 1.0f / 60.0f);
+        body.input_velocity = cb_vec(0.0f, 0.0f, 3.0f);
+        lowest = 1.0f;
+        air = 0;
+        float z0 = pos.z;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.y < lowest) lowest = pos.y;
+            if (!char_body_is_on_floor(&body)) air++;
+        }
+        snprintf(name, sizeof name, "uneven groove along at %.0f Hz: lowest foot (>= 0.1165)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_TRUE(pos.z - z0 > 0.95f * 3.0f);
+        TEST_ASSERT_EQUAL_INT(0, air);
+    }
+}
+
 /* Blocks 8 mm apart in height (tops 0.230 and 0.222 m) with a 9 cm gap, a wall 0.9 m past
  * the gap (soak seed 1 level 49: r 0.71, step 0.69). With the foot a few millimetres past
  * the higher edge, that edge is almost under the ball, whose tangent barely descends:
@@ -698,6 +759,7 @@ int main(void)
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
     RUN_TEST(test_groove_between_low_blocks);
+    RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
