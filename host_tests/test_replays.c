@@ -276,6 +276,50 @@ static void two_floors(double a, double b, int both)
     lvl.npieces = 0;
 }
 
+/* A V valley: two 35 degree slopes (z from -5 to 5) whose bottom edges at y = 0 leave a
+ * slot between x = -h and x = h, and a floor at y = -0.2 under the slot. */
+static void valley_floors(double h)
+{
+    const double t = tan(35.0 * 3.14159265358979323846 / 180.0), top = (3 - h) * t;
+    const double q[3][4][3] = {{{-3, top, -5}, {-h, 0, -5}, {-h, 0, 5}, {-3, top, 5}},
+                               {{h, 0, -5}, {3, top, -5}, {3, top, 5}, {h, 0, 5}},
+                               {{-1, -0.2, -5}, {1, -0.2, -5}, {1, -0.2, 5}, {-1, -0.2, 5}}};
+    for (int k = 0; k < 6; k++) {
+        soak_wtri_t *w = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
+        memcpy(w->v[0], c[0], sizeof w->v[0]); memcpy(w->v[1], c[i1], sizeof w->v[0]); memcpy(w->v[2], c[i2], sizeof w->v[0]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = 6;
+    lvl.npieces = 0;
+}
+
+/* The foot point on one slope of a V valley, 5 mm past the slot's edge: the foot stands on
+ * the surface under it. The ball (r 0.5) overlaps its own slope by the seed's slope rule
+ * and the other slope by 33 mm along up; the oracle paired the two as a crack and failed
+ * the body (soak seed 1 levels 8, 22, 26). The plane the foot stands on is no side of a
+ * gap under it. Below that slope, or in the slot on the floor under it, still fails. */
+static void test_oracle_footing_on_a_valley_slope(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25 */
+    fm_vec3_t z = V(0, 0, 0);
+    valley_floors(0.05);
+    const double t = tan(35.0 * 3.14159265358979323846 / 180.0);
+    float y = (float)(0.005 * t);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(-0.055f, y, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(-0.055f, y, 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(-0.3f, (float)(0.25 * t), 0), z, z, true, false, false));
+    /* 3 mm below that slope: fails (the surface under the foot) */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(-0.055f, y - 0.003f, 0), z, z, true, false, false));
+    /* in the slot, on the floor under it: below both slopes' edges, fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.2f, 0), z, z, true, false, false));
+    /* hanging in the slot 5 cm below its edges: fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.05f, 0), z, z, true, false, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -542,6 +586,7 @@ int main(void)
     RUN_TEST(test_oracle_direction);
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_footing);
+    RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);

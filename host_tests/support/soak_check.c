@@ -376,6 +376,11 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    (higher than the step zone it would be inside the sweep capsule: penetration) */
     bool found = false;
     double z1 = -1e300, ex1 = 0;
+    /* planes of the walkable triangles the foot stands on (crossed by that line within
+     * SOAK_FOOT_TOL of the foot): case 2 below does not take them for a side of a gap */
+    enum { MAXON = 8 };
+    double onn[MAXON][3], ond[MAXON];
+    int non = 0;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
         const soak_wtri_t *w = &lvl->wtris[i];
         if (!tri_seen(w->mask, s)) continue;
@@ -389,6 +394,10 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
         if (pt_tri_dist(x, w) > 1e-9) continue;
         if (!found || t > z1) z1 = t;
+        if (fabs(t) <= SOAK_FOOT_TOL && non < MAXON) {
+            for (int k = 0; k < 3; k++) onn[non][k] = n[k];
+            ond[non++] = dot3(n, w->v[0]);
+        }
         if (!found || t - allow > ex1) { ex1 = t - allow; if (ex1 > 0) soak_footing_tri = (int32_t)i; }
         found = true;
     }
@@ -399,7 +408,12 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    more: for each such triangle the excess is how far the ball must be raised along
      *    up to clear it (the sag is thereby allowed exactly); a pair fails by the smaller
      *    of its two excesses. One-sided overlaps (a ledge or tread edge in the step zone
-     *    beside the foot) are legitimate and not counted. */
+     *    beside the foot) are legitimate and not counted. Nor is the plane the foot stands
+     *    on (case 1 found it at the foot): the foot is on it, not over a gap beside it.
+     *    On one slope of a V valley, its foot point just past the slot's edge, the ball
+     *    overlaps that slope by the seed's slope rule (r / cos - r along up: the foot, not
+     *    the ball, stands on it) and the other slope by less; paired, the two failed a
+     *    body standing on the surface under its foot (seed 1 levels 8, 22, 26). */
     double bc[3] = {f[0] + up[0] * r, f[1] + up[1] * r, f[2] + up[2] * r};
     enum { MAXC = 64 };
     double cu[MAXC][3], cex[MAXC];
@@ -411,6 +425,10 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (dist3(bc, w->c) > w->rad + r) continue;
         double n[3], allow;
         if (!tri_walkable(w, s, up, n, &allow)) continue;
+        bool stood_on = false;
+        for (int k = 0; k < non && !stood_on; k++)
+            stood_on = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;
+        if (stood_on) continue;
         double c[3], d[3];
         closest_pt_tri(c, bc, w->v[0], w->v[1], w->v[2]);
         if (dist3(c, bc) >= r) continue;
