@@ -320,6 +320,69 @@ static void test_oracle_footing_on_a_valley_slope(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.05f, 0), z, z, true, false, false));
 }
 
+/* Walkable triangles: the floor y = 0 around the origin, then box tops (x0..x1, z0..z1 at y). */
+static void tops_begin(void)
+{
+    lvl.nwtris = 0;
+    lvl.npieces = 0;
+}
+static void top_quad(double x0, double x1, double z0, double z1, double y)
+{
+    const double c[4][3] = {{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
+    for (int k = 0; k < 2; k++) {
+        soak_wtri_t *w = &lvl.wtris[lvl.nwtris++];
+        memcpy(w->v[0], c[0], sizeof w->v[0]);
+        memcpy(w->v[1], c[k ? 2 : 1], sizeof w->v[0]);
+        memcpy(w->v[2], c[k ? 3 : 2], sizeof w->v[0]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+}
+
+/* Crack, slot or hole: the overlapped edges must surround the foot across up. Two block
+ * corners 122 degrees apart beside open floor (soak seed 1 levels 5, 47, 49, 66, 69) do
+ * not hold the ball, which rolls off between them onto the floor: the body standing on
+ * that floor was failed by the old pair rule (any two contacts more than 120 degrees
+ * apart). Nor do two tiles of one kerb line 20 cm apart with the foot 2 cm past it. Three
+ * corners at 120 degrees around the foot (a hole) do hold it, and fail a foot on the floor
+ * in it, as opposite edges (a groove) always did. */
+static void test_oracle_footing_contacts_must_surround_the_foot(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25 */
+    fm_vec3_t z = V(0, 0, 0);
+    /* two corners behind the foot at (-0.15, +-0.27), 122 degrees apart, 15 cm high */
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(-2, -0.15, -2, -0.27, 0.15);
+    top_quad(-2, -0.15, 0.27, 2, 0.15);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    /* two tiles of a kerb line at x = -0.02, 20 cm apart (157 degrees) */
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(-2, -0.02, -2, -0.1, 0.15);
+    top_quad(-2, -0.02, 0.1, 2, 0.15);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    /* three corners around the foot at 0, 120 and 240 degrees, 0.3 m away: a hole. The
+     * ball rests on them with its bottom 0.5 - sqrt(0.25 - 0.09) = 0.1 m below their top */
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(0.3, 2, -2, 2, 0.15);
+    top_quad(-2, -0.15, 0.3 * sin(2.0943951023931953), 2, 0.15);
+    top_quad(-2, -0.15, -2, -0.3 * sin(2.0943951023931953), 0.15);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.05, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(0, 0.05f, 0), z, z, true, false, false)); /* resting on them */
+    /* a groove between two blocks (opposite edges, 0.3 m apart): fails, as before */
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(-2, 2, -2, -0.15, 0.15);
+    top_quad(-2, 2, 0.15, 2, 0.15);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -587,6 +650,7 @@ int main(void)
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
+    RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);
