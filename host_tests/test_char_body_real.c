@@ -510,6 +510,59 @@ static void test_overhang_wedge(void)
     }
 }
 
+/* A steep slab rising from the floor (soak seed 1 levels 18, 81, seed 2 levels 3, 14, 62,
+ * 73): its low edge `lip` above the floor, 8 cm thick, `deg` from the horizontal (steeper
+ * than floor_max_angle). Walking into it, or pushed along it, the body rested on
+ * the steep face, which the foot ray finds first, and the shortened capsule let its foot
+ * sink up to 6 cm into the floor under the face's low edge, grounded (steep). The foot must
+ * stay on the floor. */
+static void steep_slab_push(float deg, float lip, float hz, fm_vec3_t input)
+{
+    const float dt = 1.0f / hz, t = tanf(deg * DEG), len = 3.0f, th = 0.08f / cosf(deg * DEG);
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    /* top face, underside (th lower along up), and the low end */
+    cb_geo_quad(cb_vec(0.0f, lip + th, -5.0f), cb_vec(0.0f, lip + th, 5.0f), cb_vec(len, lip + th + len * t, 5.0f),
+                cb_vec(len, lip + th + len * t, -5.0f));
+    cb_geo_quad(cb_vec(0.0f, lip, -5.0f), cb_vec(len, lip + len * t, -5.0f), cb_vec(len, lip + len * t, 5.0f),
+                cb_vec(0.0f, lip, 5.0f));
+    cb_geo_quad(cb_vec(0.0f, lip, -5.0f), cb_vec(0.0f, lip, 5.0f), cb_vec(0.0f, lip + th, 5.0f), cb_vec(0.0f, lip + th, -5.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* a thin body with a tall step zone (soak seed 1 level 81: r 0.18, step 0.28, 23 degrees) */
+    body_with_radius(cb_vec(-1.5f, 0.0f, 0.0f), 0.18f, 1.9f);
+    char_body_settings_t st = body.settings;
+    st.step_height = 0.28f;
+    st.floor_snap_distance = 0.36f;
+    st.floor_max_angle = 23.4f * DEG;
+    char_body_configure(&body, &st);
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    char name[112];
+    snprintf(name, sizeof name, "steep slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
+             (double)lip, (double)hz);
+    cb_report(name, lowest, "m");
+    TEST_ASSERT_TRUE(lowest > -0.001f);
+    TEST_ASSERT_TRUE(pos.y > -0.001f);
+}
+
+static void test_steep_slab_low_edge(void)
+{
+    static const float degs[3] = {35.0f, 47.0f, 60.0f};
+    static const float lips[3] = {0.0f, 0.02f, 0.05f};
+    for (int d = 0; d < 3; d++)
+        for (int l = 0; l < 3; l++) {
+            steep_slab_push(degs[d], lips[l], 30.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_slab_push(degs[d], lips[l], 120.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_slab_push(degs[d], lips[l], 60.0f, cb_vec(3.0f, 0.0f, 2.0f));
+        }
+}
+
 /* ---- 5. a low ledge: where the full capsule does not fit standing, the body does not go ---- */
 
 static void test_low_ledge_blocks(void)
@@ -764,6 +817,7 @@ int main(void)
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
+    RUN_TEST(test_steep_slab_low_edge);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);

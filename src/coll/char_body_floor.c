@@ -349,6 +349,25 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 float rest = c->radius / nu - (c->radius + c->step);
                 if (gap <= (rest > 0.0f ? rest : 0.0f) + cb_len_tol(c, CB_MARGIN))
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
+                /* The steep face's low edge over a walkable floor (the wedge under a ramp or
+                 * overhang): the face is found above the foot, and the floor, found by the
+                 * same ray continued past it, is above the foot too. The body stands on that
+                 * floor (lifted onto it; no room for the lift reverts the step), not on the
+                 * face with its foot sunk into the floor. */
+                coll_ray_hit_t under;
+                float past = hit.distance + c->skin;
+                for (int k = 0; k < 3 && s.found && s.steep && gap < -step_eps && past < above - step_eps; k++) {
+                    if (!cb_ray(c, v3_madd(origin, up, -past), v3_scale(up, -1.0f), above - past, &under) ||
+                        !v3_finite(under.normal) || !v3_finite(under.point) || !isfinite(under.distance))
+                        break;
+                    float g2 = under.distance + past - above;
+                    if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
+                        if (g2 < -step_eps)
+                            s = (support_t){true, false, g2, under.normal, under.point, under.id, under.instance};
+                        break;
+                    }
+                    past += under.distance + c->skin; /* another steep face (a slab's underside) */
+                }
             }
         }
         if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, &s);
