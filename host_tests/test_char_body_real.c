@@ -563,6 +563,41 @@ static void test_steep_slab_low_edge(void)
         }
 }
 
+/* The game teleports a body under an overhang lower than it (soak seed 1 levels 53, 68,
+ * 255, 283, 293, 411, 453 at 1M frames; seed 2 level 67): the head is in the slab. The
+ * recovery pushed the capsule down out of the slab, which the shortened sweep capsule
+ * allows down to step_height below the floor, and the probe, with no room to lift it back,
+ * left the body standing with its foot in the floor. A push may not sink the foot into the
+ * floor: the body is moved out from under the overhang instead, and stands on the floor. */
+static void test_teleport_under_low_overhang(void)
+{
+    static const float heads[3] = {0.05f, 0.15f, 0.24f}; /* head this far into the slab */
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(1.0f, 2.0f - heads[i] + 0.2f, 0.0f), cb_vec(2.0f, 0.2f, 3.0f), 0.0f); /* underside 2 - head */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+        CB_STEP(&body, 1.0f / 60.0f);
+        char_body_teleport(&body, cb_vec(0.0f, 0.0f, 0.0f), true);
+        float lowest = 1.0f;
+        for (int f = 0; f < 30; f++) {
+            CB_STEP(&body, 1.0f / 60.0f);
+            TEST_ASSERT_TRUE(cb_body_finite(&body));
+            if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "teleported %.2f m into a low overhang: lowest grounded foot", (double)heads[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(lowest > -0.002f);
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.0f, pos.y);
+        /* moved out from under the slab (x in [-1, 3]) to where its rounded top clears the
+         * slab's edge: the verified free space the unstick search found */
+        TEST_ASSERT_TRUE(pos.x < -1.0f);
+    }
+}
+
 /* ---- 5. a low ledge: where the full capsule does not fit standing, the body does not go ---- */
 
 static void test_low_ledge_blocks(void)
@@ -818,6 +853,7 @@ int main(void)
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
+    RUN_TEST(test_teleport_under_low_overhang);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
