@@ -469,6 +469,25 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
 }
 
 /**
+ * True when moving the body from `from` to `to` pushes it down along up (by more than the
+ * contact tolerance) so that its foot ends below a walkable floor right under it, by more
+ * than that tolerance: the sweep capsule, short by step_height, clears that floor, the full
+ * capsule stands inside it. A push out of an overhang lower than the body (a teleport under
+ * it) did so, and the floor probe, with no room to lift the body back, left it standing
+ * with its foot up to step_height inside the floor.
+ */
+static bool sinks_foot(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to)
+{
+    if (!(v3_dot(v3_sub(from, to), c->up) > c->contact_eps)) return false;
+    const float above = c->step + c->radius;
+    coll_ray_hit_t h;
+    if (!cb_ray(c, v3_madd(cb_foot(c, to), c->up, above), v3_scale(c->up, -1.0f), above, &h) ||
+        !isfinite(h.distance) || !v3_finite(h.normal))
+        return false;
+    return v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle && above - h.distance > c->contact_eps;
+}
+
+/**
  * Last resort for a body the verified recovery could not free (the game teleported it deep
  * into geometry, an up change swung it into a wall, a platform pressed it into one): move it
  * to free space -- verified free, so never into something else. Candidates, shortest first
@@ -507,7 +526,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
                 if (want > 0.0f) delta = v3_madd(delta, ct[i].normal, want);
             }
         fm_vec3_t p = v3_add(*pos, delta);
-        if (v3_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep)) {
+        if (v3_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep) && !sinks_foot(c, *pos, p)) {
             *pos = p;
             if (vel) *vel = v3(0.0f, 0.0f, 0.0f);
             return;
@@ -583,7 +602,8 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * a body wedged between a slab's faces that the game never put there, and pushing
          * through ended 126 mm inside the other face (soak seed 12 level 382). A body the
          * game put deep into geometry may therefore stay there until it moves out. */
-        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
+        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius)) &&
+            !sinks_foot(c, *pos, p)) {
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);
