@@ -100,6 +100,13 @@ static inline fm_vec3_t ball_drop_start(const cb_ctx_t *c, fm_vec3_t pos)
     return v3_madd(cb_foot(c, pos), c->up, c->radius + c->step);
 }
 
+/** The contact is on the face of a triangle too steep to stand on (a wall). */
+static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
+{
+    fm_vec3_t fn;
+    return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) < c->body->cos_floor_max_angle;
+}
+
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
                       const coll_sweep_hit_t *first, float first_len, support_t *out)
 {
@@ -189,7 +196,11 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * on opposite sides (blocks of different heights, a valley's slopes) or a groove
          * the ball rolls across onto a floor beyond (a lower block): the foot would
          * otherwise stand at its bottom, inside both sides. */
-        const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r;
+        /* (a wall, a face too steep to stand on, is never a side of such a gap: a body
+         * pushed into the corner of a floor and a wall that leans over it under a tilted up
+         * stands on the floor, it is not lifted into the corner) */
+        const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r &&
+                            !steep_face(c, &h1) && !steep_face(c, &h2);
         if (over_floor && ((!narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) ||
                            -contact > floor_gap - c->contact_eps))
             return false;

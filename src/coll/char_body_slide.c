@@ -234,29 +234,32 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
 }
 
 /**
- * A contact normal within ~2.5 degrees of its triangle's face normal becomes the face
- * normal. Grazing a flat wall or floor tessellated into many triangles, the sweep can meet
- * a seam's edge or vertex a hair before the face and report a normal tilted by a few
- * thousandths; sliding along that tilt walks the capsule into the wall and costs speed.
+ * A contact normal within ~2.5 degrees of its triangle's face normal is on that face:
+ * *face is the face normal (turned to the contact's side). Grazing a flat wall or floor
+ * tessellated into many triangles, the sweep can meet a seam's edge or vertex a hair before
+ * the face and report a normal tilted by a few thousandths; sliding along that tilt walks
+ * the capsule into the wall and costs speed, so the slide takes the face normal.
  */
-static fm_vec3_t face_normal(const coll_sweep_hit_t *hit)
+bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face)
 {
     fm_vec3_t n = hit->normal;
     const coll_mesh_instance_t *in = hit->instance;
-    if (!in || !in->mesh || hit->triangle < 0) return n;
+    if (!in || !in->mesh || hit->triangle < 0) return false;
     fm_vec3_t v[3];
     coll_mesh_triangle(in->mesh, (uint32_t)hit->triangle, v);
     /* world-space face normal: local normal through the inverse scale, then the rotation */
     fm_vec3_t ln = v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0]));
     const fm_vec3_t *sc = &in->xf.scale;
-    if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return n;
+    if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return false;
     ln = v3(ln.x / sc->x, ln.y / sc->y, ln.z / sc->z);
     fm_vec3_t wn;
     fm_quat_rotate_vec3(&wn, &in->xf.rot, &ln);
     wn = v3_norm(wn);
     float d = v3_dot(wn, n);
     if (d < 0.0f) { wn = v3_scale(wn, -1.0f); d = -d; }
-    return d > 0.999f ? wn : n;
+    if (!(d > 0.999f)) return false;
+    *face = wn;
+    return true;
 }
 
 /** Step events of a slide hit: a ceiling met moving up, a wall (the plane slid along). */
@@ -320,7 +323,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         }
         if (!v3_finite(hit.normal) || !isfinite(hit.t)) break;
         touched = true;
-        hit.normal = face_normal(&hit);
+        fm_vec3_t fn;
+        if (coll_cb_face_normal(&hit, &fn)) hit.normal = fn;
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
         if (t <= 0.0f && hit.depth > 0.0f) {
