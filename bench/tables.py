@@ -176,6 +176,21 @@ if real and w:
       f"{verdict(float(worst_r['host_instr_per_step']), 2 * base)} |")
 else:
     P("| real maps <= 2x the sample level's walking cost | not measured (OpenArena's maps missing: make deps) | - |")
+sc_rows = {r["ntris"]: r for r in rows("scaling.csv")} if os.path.exists(os.path.join(d, "scaling.csv")) else {}
+sc_auto = [r for r in rows("scaling.csv") if float(r["cell"]) == 0] if sc_rows else []
+if len(sc_auto) >= 2:
+    by_n = sorted(sc_auto, key=lambda r: int(r["ntris"]))
+    small = min(by_n, key=lambda r: abs(int(r["ntris"]) - 10000))
+    big = by_n[-1]
+    a_, b_ = int(small["instr_per_move"]), int(big["instr_per_move"])
+    P(f"| level size: a {int(big['ntris']) / 1e6:.1f}M-triangle level <= 1.2x a {int(small['ntris']) / 1e3:.0f}k one per step | "
+      f"{b_:,} vs {a_:,} x86 per move_and_slide ({b_ / a_:.2f}x; same local geometry, automatic cells) | "
+      f"{verdict(b_ / a_, 1.2)} |")
+    wf = max(float(r["bytes_per_tri_float"]) for r in by_n); wq = max(float(r["bytes_per_tri_quant"]) for r in by_n)
+    sizes = ", ".join(f"{int(r['ntris']):,}: {float(r['bytes_per_tri_float']):.1f} / {float(r['bytes_per_tri_quant']):.1f}"
+                      for r in by_n)
+    P(f"| memory: <= 24 B/triangle baked as float and <= 14 quantized at every size measured | float / quantized B per "
+      f"triangle, {sizes} | {'met' if wf <= 24 and wq <= 14 else '**not met**'} |")
 P("")
 P("Worst single step per scripted course (console, MIPS instructions under qemu; limit 40k):\n")
 P("| course | grid cell | mean | worst step | steps | over 40k |")

@@ -285,6 +285,130 @@ static void test_groove_between_low_blocks(void)
     }
 }
 
+/* A groove 10 cm wide between blocks of different heights (tops 0.20 and 0.12 m) on a
+ * floor within snap reach (soak seed 1 levels 12, 17, 35: tiles and slabs that do not
+ * meet at one level). A capsule crossing or walking along it rests on the edges (sunk at
+ * most the sag over the gap below the lower one); before, the crack rule held only edges
+ * within a tenth of a radius of one level, and the body stood on the floor at the
+ * groove's bottom with its foot 12-20 cm inside both blocks. */
+static void build_uneven_groove(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(-2.0f, 0.10f, 0.0f), cb_vec(2.0f, 0.10f, 4.0f), 0.0f); /* x in [-4, 0], top 0.20 */
+    cb_geo_box(cb_vec(2.1f, 0.06f, 0.0f), cb_vec(2.0f, 0.06f, 4.0f), 0.0f);  /* x in [0.1, 4.1], top 0.12 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_groove_between_blocks_of_different_heights(void)
+{
+    const float lowest_ok = 0.12f - crack_sag(0.5f, 0.10f) - 0.001f;
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        /* across: from the higher block over the groove onto the lower one */
+        cb_world_reset();
+        build_uneven_groove();
+        cb_body_init(&body, &pos, cb_vec(-1.5f, 0.20f, 0.0f));
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest = 1.0f;
+        int air = 0;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > -0.01f && pos.x < 0.11f && pos.y < lowest) lowest = pos.y;
+            if (!char_body_is_on_floor(&body)) air++;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "uneven groove across at %.0f Hz: lowest foot over it (>= 0.1165)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_TRUE(pos.x > 1.0f); /* went where asked */
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.12f, pos.y); /* stands on the lower block */
+        TEST_ASSERT_TRUE(air <= 1);
+        /* along: landing over the groove, then walking along it */
+        cb_world_reset();
+        build_uneven_groove();
+        cb_body_init(&body, &pos, cb_vec(0.05f, 0.3f, -3.0f));
+        for (int f = 0; f < 30; f++) CB_STEP(&body, 1.0f / 60.0f);
+        body.input_velocity = cb_vec(0.0f, 0.0f, 3.0f);
+        lowest = 1.0f;
+        air = 0;
+        float z0 = pos.z;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.y < lowest) lowest = pos.y;
+            if (!char_body_is_on_floor(&body)) air++;
+        }
+        snprintf(name, sizeof name, "uneven groove along at %.0f Hz: lowest foot (>= 0.1165)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_TRUE(pos.z - z0 > 0.95f * 3.0f);
+        TEST_ASSERT_EQUAL_INT(0, air);
+    }
+}
+
+/* Blocks 8 mm apart in height (tops 0.230 and 0.222 m) with a 9 cm gap, a wall 0.9 m past
+ * the gap (soak seed 1 level 49: r 0.71, step 0.69). With the foot a few millimetres past
+ * the higher edge, that edge is almost under the ball, whose tangent barely descends:
+ * rolled along it by a diameter the ball passed over the lower block and met the wall,
+ * which is no far side of a gap, so the body stepped down to the floor 22 cm below both
+ * blocks. It must stand at the blocks' level, at every such offset, and walk on. */
+static void build_gap_with_wall(void)
+{
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    cb_geo_box(cb_vec(-2.0f, 0.115f, 0.0f), cb_vec(2.0f, 0.115f, 4.0f), 0.0f); /* x in [-4, 0], top 0.230 */
+    cb_geo_box(cb_vec(2.09f, 0.111f, 0.0f), cb_vec(2.0f, 0.111f, 4.0f), 0.0f); /* x in [0.09, 4.09], top 0.222 */
+    cb_geo_box(cb_vec(1.25f, 1.0f, 0.0f), cb_vec(0.25f, 1.0f, 4.0f), 0.0f);    /* wall x in [1.0, 1.5], 2 m */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+}
+
+static void test_gap_between_blocks_with_a_wall_beyond(void)
+{
+    const float r = 0.7f, lowest_ok = 0.222f - crack_sag(r, 0.09f) - 0.001f;
+    static const float offsets[6] = {0.001f, 0.003f, 0.005f, 0.01f, 0.02f, 0.04f};
+    char_body_settings_t s;
+    for (int i = 0; i < 6; i++) {
+        cb_world_reset();
+        build_gap_with_wall();
+        body_with_radius(cb_vec(-0.3f, 0.23f, 0.0f), r, 3.4f);
+        s = body.settings;
+        s.step_height = 0.69f;
+        s.floor_snap_distance = 0.94f;
+        char_body_configure(&body, &s);
+        for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        pos.x = offsets[i]; /* the foot just past the higher edge, over the gap */
+        CB_STEP(&body, 1.0f / 60.0f);
+        if (pos.y < lowest_ok)
+            printf("gap with a wall beyond: foot %.3f m past the edge stands at %.4f\n", (double)offsets[i], (double)pos.y);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(pos.y >= lowest_ok);
+    }
+    /* and walks across to the wall at the blocks' level */
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        build_gap_with_wall();
+        body_with_radius(cb_vec(-1.5f, 0.23f, 0.0f), r, 3.4f);
+        s = body.settings;
+        s.step_height = 0.69f;
+        s.floor_snap_distance = 0.94f;
+        char_body_configure(&body, &s);
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        float lowest = 1.0f;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            if (pos.x > -0.01f && pos.x < 0.1f && pos.y < lowest) lowest = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "gap with a wall beyond at %.0f Hz: lowest foot over it (>= 0.2195)", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest >= lowest_ok);
+        TEST_ASSERT_FLOAT_WITHIN(0.02f, 1.0f - r, pos.x); /* at the wall */
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.222f, pos.y);
+    }
+}
+
 /* A real ledge is still a ledge: past the edge with nothing beyond, the body falls. */
 static void test_ledge_beside_wide_gap_falls(void)
 {
@@ -383,6 +507,94 @@ static void test_overhang_wedge(void)
     for (int i = 0; i < 4; i++) {
         overhang_push(lows[i], 30.0f);
         overhang_push(lows[i], 120.0f);
+    }
+}
+
+/* A steep slab rising from the floor (soak seed 1 levels 18, 81, seed 2 levels 3, 14, 62,
+ * 73): its low edge `lip` above the floor, 8 cm thick, `deg` from the horizontal (steeper
+ * than floor_max_angle). Walking into it, or pushed along it, the body rested on
+ * the steep face, which the foot ray finds first, and the shortened capsule let its foot
+ * sink up to 6 cm into the floor under the face's low edge, grounded (steep). The foot must
+ * stay on the floor. */
+static void steep_slab_push(float deg, float lip, float hz, fm_vec3_t input)
+{
+    const float dt = 1.0f / hz, t = tanf(deg * DEG), len = 3.0f, th = 0.08f / cosf(deg * DEG);
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    /* top face, underside (th lower along up), and the low end */
+    cb_geo_quad(cb_vec(0.0f, lip + th, -5.0f), cb_vec(0.0f, lip + th, 5.0f), cb_vec(len, lip + th + len * t, 5.0f),
+                cb_vec(len, lip + th + len * t, -5.0f));
+    cb_geo_quad(cb_vec(0.0f, lip, -5.0f), cb_vec(len, lip + len * t, -5.0f), cb_vec(len, lip + len * t, 5.0f),
+                cb_vec(0.0f, lip, 5.0f));
+    cb_geo_quad(cb_vec(0.0f, lip, -5.0f), cb_vec(0.0f, lip, 5.0f), cb_vec(0.0f, lip + th, 5.0f), cb_vec(0.0f, lip + th, -5.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* a thin body with a tall step zone (soak seed 1 level 81: r 0.18, step 0.28, 23 degrees) */
+    body_with_radius(cb_vec(-1.5f, 0.0f, 0.0f), 0.18f, 1.9f);
+    char_body_settings_t st = body.settings;
+    st.step_height = 0.28f;
+    st.floor_snap_distance = 0.36f;
+    st.floor_max_angle = 23.4f * DEG;
+    char_body_configure(&body, &st);
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    char name[112];
+    snprintf(name, sizeof name, "steep slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
+             (double)lip, (double)hz);
+    cb_report(name, lowest, "m");
+    TEST_ASSERT_TRUE(lowest > -0.001f);
+    TEST_ASSERT_TRUE(pos.y > -0.001f);
+}
+
+static void test_steep_slab_low_edge(void)
+{
+    static const float degs[3] = {35.0f, 47.0f, 60.0f};
+    static const float lips[3] = {0.0f, 0.02f, 0.05f};
+    for (int d = 0; d < 3; d++)
+        for (int l = 0; l < 3; l++) {
+            steep_slab_push(degs[d], lips[l], 30.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_slab_push(degs[d], lips[l], 120.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_slab_push(degs[d], lips[l], 60.0f, cb_vec(3.0f, 0.0f, 2.0f));
+        }
+}
+
+/* The game teleports a body under an overhang lower than it (soak seed 1 levels 53, 68,
+ * 255, 283, 293, 411, 453 at 1M frames; seed 2 level 67): the head is in the slab. The
+ * recovery pushed the capsule down out of the slab, which the shortened sweep capsule
+ * allows down to step_height below the floor, and the probe, with no room to lift it back,
+ * left the body standing with its foot in the floor. A push may not sink the foot into the
+ * floor: the body is moved out from under the overhang instead, and stands on the floor. */
+static void test_teleport_under_low_overhang(void)
+{
+    static const float heads[3] = {0.05f, 0.15f, 0.24f}; /* head this far into the slab */
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(1.0f, 2.0f - heads[i] + 0.2f, 0.0f), cb_vec(2.0f, 0.2f, 3.0f), 0.0f); /* underside 2 - head */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-3.0f, 0.0f, 0.0f));
+        CB_STEP(&body, 1.0f / 60.0f);
+        char_body_teleport(&body, cb_vec(0.0f, 0.0f, 0.0f), true);
+        float lowest = 1.0f;
+        for (int f = 0; f < 30; f++) {
+            CB_STEP(&body, 1.0f / 60.0f);
+            TEST_ASSERT_TRUE(cb_body_finite(&body));
+            if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "teleported %.2f m into a low overhang: lowest grounded foot", (double)heads[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(lowest > -0.002f);
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.0f, pos.y);
+        /* moved out from under the slab (x in [-1, 3]) to where its rounded top clears the
+         * slab's edge: the verified free space the unstick search found */
+        TEST_ASSERT_TRUE(pos.x < -1.0f);
     }
 }
 
@@ -854,9 +1066,13 @@ int main(void)
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
     RUN_TEST(test_groove_between_low_blocks);
+    RUN_TEST(test_groove_between_blocks_of_different_heights);
+    RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
     RUN_TEST(test_ledge_beside_wide_gap_falls);
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
+    RUN_TEST(test_steep_slab_low_edge);
+    RUN_TEST(test_teleport_under_low_overhang);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);

@@ -55,6 +55,19 @@ BENCH_ASSETS := $(filter $(ASSET_DIR)/test_course.coll $(ASSET_DIR)/test_course.
 
 .PHONY: bench bench-bin
 bench-bin: $(BENCH_HOST) $(BENCH_MIPS) $(BENCH_COUNT)
+
+# Where one scenario's console instructions go (bench/mips_profile.py): per function, or
+# per source line of FN. A -g copy of the VR4300 bench in $(BUILD)/benchprof (same code).
+#   make bench-mips-profile SCN=walk [FN=coll_gather_begin]
+BENCH_PROF := $(BUILD)/benchprof
+.PHONY: bench-mips-profile
+bench-mips-profile: $(BENCH_ASSETS)
+	@mkdir -p $(BENCH_PROF) && rm -rf $(BENCH_PROF)/deps && cp -a $(BUILD)/deps $(BENCH_PROF)/deps
+	$(MAKE) --no-print-directory BUILD=$(BENCH_PROF) $(BENCH_PROF)/bench/bin/bench_run_mips \
+	    BENCH_VR_CFLAGS="$(BENCH_VR_CFLAGS) -g"
+	$(qemu_RUN) -singlestep -d nochain,exec -D $(BENCH_PROF)/trace.txt $(BENCH_PROF)/bench/bin/bench_run_mips \
+	    cost exact $(or $(SCN),walk) $(ASSET_DIR) > /dev/null
+	python3 bench/mips_profile.py $(BENCH_PROF)/bench/bin/bench_run_mips $(BENCH_PROF)/trace.txt $(FN)
 # The real maps' cost (issue 14) needs OpenArena's maps (make deps); mk/real.mk adds them
 # (BENCH_REAL) to bench's prerequisites. Without them the row says so.
 bench: bench-bin $(BENCH_ASSETS) $(COLLBAKE) $(BUILD)/host/soak/soak

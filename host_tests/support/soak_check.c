@@ -362,10 +362,14 @@ static double pt_tri_dist(const double p[3], const soak_wtri_t *w)
 }
 
 int32_t soak_footing_tri = -1; /* the triangle of the last soak_check_footing result (diagnosis) */
+int32_t soak_footing_tri2 = -1; /* the other triangle of its crack pair, or -1: under the foot */
+int soak_footing_ncontacts = 0; /* contacts around the foot of the crack case, 0: under the foot */
+double soak_footing_widest = 0; /* their widest angular gap across up, rad */
 
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
 {
-    soak_footing_tri = -1;
+    soak_footing_tri = soak_footing_tri2 = -1;
+    soak_footing_ncontacts = 0;
     double up[3], f[3], r;
     foot_point(s, owner, up, f, &r);
     const double step = s->step_height, below = (double)s->floor_snap_distance + 2 * r;
@@ -374,6 +378,11 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    (higher than the step zone it would be inside the sweep capsule: penetration) */
     bool found = false;
     double z1 = -1e300, ex1 = 0;
+    /* planes of the walkable triangles the foot stands on (crossed by that line within
+     * SOAK_FOOT_TOL of the foot): case 2 below does not take them for a side of a gap */
+    enum { MAXON = 8 };
+    double onn[MAXON][3], ond[MAXON];
+    int non = 0;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
         const soak_wtri_t *w = &lvl->wtris[i];
         if (!tri_seen(w->mask, s)) continue;
@@ -387,17 +396,26 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
         if (pt_tri_dist(x, w) > 1e-9) continue;
         if (!found || t > z1) z1 = t;
+        if (fabs(t) <= SOAK_FOOT_TOL && non < MAXON) {
+            for (int k = 0; k < 3; k++) onn[non][k] = n[k];
+            ond[non++] = dot3(n, w->v[0]);
+        }
         if (!found || t - allow > ex1) { ex1 = t - allow; if (ex1 > 0) soak_footing_tri = (int32_t)i; }
         found = true;
     }
-    /* 2. a crack or slot narrower than the capsule: walkable triangles on opposite sides
-     *    of the foot (their closest points to the bottom ball centre point in directions
-     *    across up more than 120 degrees apart) that the bottom ball overlaps. Resting on
-     *    both edges the foot sags r - sqrt(r^2 - (g/2)^2) below them over a gap g, and no
-     *    more: for each such triangle the excess is how far the ball must be raised along
-     *    up to clear it (the sag is thereby allowed exactly); a pair fails by the smaller
-     *    of its two excesses. One-sided overlaps (a ledge or tread edge in the step zone
-     *    beside the foot) are legitimate and not counted. */
+    /* 2. a crack, slot or hole narrower than the capsule: walkable triangles around the
+     *    foot (their closest points to the bottom ball centre, in directions across up,
+     *    surround it: see below) that the bottom ball overlaps. Resting on both edges the
+     *    foot sags r - sqrt(r^2 - (g/2)^2) below them over a gap g, and no more: for each
+     *    such triangle the excess is how far the ball must be raised along up to clear it
+     *    (the sag is thereby allowed exactly); a pair fails by the smaller of its two
+     *    excesses. One-sided overlaps (a ledge or tread edge in the step zone
+     *    beside the foot) are legitimate and not counted. Nor is the plane the foot stands
+     *    on (case 1 found it at the foot): the foot is on it, not over a gap beside it.
+     *    On one slope of a V valley, its foot point just past the slot's edge, the ball
+     *    overlaps that slope by the seed's slope rule (r / cos - r along up: the foot, not
+     *    the ball, stands on it) and the other slope by less; paired, the two failed a
+     *    body standing on the surface under its foot (seed 1 levels 8, 22, 26). */
     double bc[3] = {f[0] + up[0] * r, f[1] + up[1] * r, f[2] + up[2] * r};
     enum { MAXC = 64 };
     double cu[MAXC][3], cex[MAXC];
@@ -409,6 +427,10 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (dist3(bc, w->c) > w->rad + r) continue;
         double n[3], allow;
         if (!tri_walkable(w, s, up, n, &allow)) continue;
+        bool stood_on = false;
+        for (int k = 0; k < non && !stood_on; k++)
+            stood_on = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;
+        if (stood_on) continue;
         double c[3], d[3];
         closest_pt_tri(c, bc, w->v[0], w->v[1], w->v[2]);
         if (dist3(c, bc) >= r) continue;
@@ -432,12 +454,52 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         nc++;
     }
     double worst = ex1 > 0 ? ex1 : 0;
-    for (int i = 0; i < nc; i++)
-        for (int j = i + 1; j < nc; j++) {
-            if (dot3(cu[i], cu[j]) > -0.5) continue;
-            double ex = cex[i] < cex[j] ? cex[i] : cex[j];
-            if (ex > worst) { worst = ex; soak_footing_tri = ctri[cex[i] < cex[j] ? i : j]; }
+    /* The contacts hold the ball (a crack, a slot, a hole) only where they surround the
+     * foot across up: no half-plane of directions is free of them (no angular gap between
+     * them wider than 180 degrees, SOAK_CRACK_OPEN of rounding allowed), so the ball
+     * raised onto them cannot roll off sideways. Two contacts do so when opposite (the
+     * parallel edges of a groove, a crack, a slot), three or more around it (a hole
+     * between tiles). Two contacts 120-130 degrees apart (block or tile corners beside an
+     * open floor) do not: the ball rolls off between them onto the floor, as the body's
+     * roll test finds, and standing on that floor with the step zone overlapping both is
+     * the seed's ledge rule (seed 1 levels 5, 21, 47, 49, 66, 69: the oracle counted every
+     * pair more than 120 degrees apart); nor do several tiles along one kerb line beside
+     * the foot (their directions span less than 180 degrees). The excess is that of the
+     * contacts still surrounding the foot when the ball is raised: taken in order of
+     * excess, the excess of the one that completes the surround. */
+    int ord[MAXC];
+    for (int i = 0; i < nc; i++) {
+        int k = i;
+        while (k > 0 && cex[ord[k - 1]] < cex[i]) { ord[k] = ord[k - 1]; k--; }
+        ord[k] = i;
+    }
+    double e1[3] = {1, 0, 0}, e2[3];
+    if (fabs(up[0]) > 0.9) { e1[0] = 0; e1[1] = 1; }
+    double eu = dot3(e1, up);
+    for (int k = 0; k < 3; k++) e1[k] -= up[k] * eu;
+    double el = sqrt(dot3(e1, e1));
+    for (int k = 0; k < 3; k++) e1[k] /= el;
+    cross3(e2, up, e1);
+    double ang[MAXC];
+    for (int k = 0; k < nc; k++) {
+        double a = atan2(dot3(cu[ord[k]], e2), dot3(cu[ord[k]], e1));
+        int j = k; /* insertion into the sorted angles of the first k contacts */
+        while (j > 0 && ang[j - 1] > a) { ang[j] = ang[j - 1]; j--; }
+        ang[j] = a;
+        if (k == 0) continue;
+        double widest = ang[0] + 2 * M_PI - ang[k];
+        for (int i = 1; i <= k; i++)
+            if (ang[i] - ang[i - 1] > widest) widest = ang[i] - ang[i - 1];
+        if (widest > M_PI + SOAK_CRACK_OPEN) continue;
+        if (cex[ord[k]] > worst) {
+            worst = cex[ord[k]];
+            soak_footing_tri = ctri[ord[k]];
+            soak_footing_tri2 = ctri[ord[0]];
+            soak_footing_ncontacts = k + 1;
+            soak_footing_widest = widest;
         }
+        break;
+    }
     return worst;
 }
 

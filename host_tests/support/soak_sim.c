@@ -774,6 +774,12 @@ void soak_sim_explain(const soak_sim_t *sim, FILE *out)
                     w->v[0][0], w->v[0][1], w->v[0][2], w->v[1][0], w->v[1][1], w->v[1][2], w->v[2][0], w->v[2][1],
                     w->v[2][2]);
         }
+        if (soak_footing_tri2 >= 0) {
+            const soak_wtri_t *w = &sim->lvl->wtris[soak_footing_tri2];
+            fprintf(out, " [crack: %d contacts around the foot, widest gap %.0f deg, deepest triangle %d: (%.4f %.4f %.4f) (%.4f %.4f %.4f) (%.4f %.4f %.4f)]",
+                    soak_footing_ncontacts, soak_footing_widest * 57.29577951308232, (int)soak_footing_tri2, w->v[0][0], w->v[0][1], w->v[0][2], w->v[1][0], w->v[1][1], w->v[1][2],
+                    w->v[2][0], w->v[2][1], w->v[2][2]);
+        }
         fprintf(out, "; at rest %u frames, touches walkable geometry %d\n", (unsigned)sim->rest_frames,
                 soak_check_touches_walkable(sim->lvl, s, sim->owner));
     }

@@ -224,6 +224,7 @@ const char *soak_fail_name(int kind);
 #define SOAK_DIR_TOL      1e-3  ///< direction: largest displacement against the input, m
 #define SOAK_PROGRESS_MIN 0.90  ///< progress: share of the input distance covered on free flat floor
 #define SOAK_FOOT_TOL     1e-3  ///< footing: foot below the surface under it, m
+#define SOAK_CRACK_OPEN   (0.5 * M_PI / 180.0) ///< footing: contacts around the foot leaving no gap wider than 180 degrees + this hold the ball (parallel edges, not a kerb beside the foot)
 #define SOAK_REST_FRAMES  30    ///< support: frames at rest before the body must be grounded
 #define SOAK_REST_MOVE    1e-4  ///< support: "at rest" = at most this displacement per frame, m
 #define SOAK_VEL_TOL_POS  1e-3  ///< velocity: tolerance, as a displacement over dt (m)
@@ -297,6 +298,9 @@ int  soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m);
  *  tolerated sag (0 when not below); the oracle fails above SOAK_FOOT_TOL. */
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
 extern int32_t soak_footing_tri; ///< triangle (lvl->wtris index) behind the last footing result, -1: none
+extern int32_t soak_footing_tri2; ///< the other triangle of its crack pair (case 2), -1: the surface under the foot
+extern int soak_footing_ncontacts; ///< contacts around the foot of that crack, 0: the surface under the foot
+extern double soak_footing_widest; ///< their widest angular gap across up, rad
 /** Progress: whether the checker verifies free, flat, walkable space for the capsule from
  *  owner along disp (across up). */
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp);

@@ -18,7 +18,10 @@
  *   other side of a gap (a wedge) or a walkable floor within half a radius of descent, the
  *   body is supported and stands at the height of the lower contact -- a crack (a gap
  *   narrower than about 1.7 radii between floor pieces, a slot at the bottom of a valley or
- *   between a ledge and a wall). Otherwise it is a ledge and the body falls.
+ *   between a ledge and a wall). Otherwise it is a ledge and the body falls. Over a floor
+ *   within reach the same ball holds the body above it where the gap is between surfaces
+ *   at one level, or between surfaces on opposite sides of the foot at any levels (blocks
+ *   of different heights): never on a stair's nosings, whose roll ends on the tread below.
  * - Room to stand: a step that would leave the full capsule standing on a floor it has no
  *   room above (under a low ledge or an overhang) is not taken.
  * - char_body_get_velocity() is the velocity the body moved with (a stop by a wall, wedge

@@ -89,13 +89,22 @@ typedef struct {
  * both edges, r - sqrt(r^2 - (gap/2)^2)). Only its height changes: it is not pulled
  * sideways into the crack. A roll onto a floor counts within a tenth of a radius of descent
  * (across a crack too narrow for the ball to dip into; not down a ledge onto a lower floor). At a ledge the roll meets nothing, or
- * nothing it can stand on, and the foot-as-a-point rule stands: the body falls.
+ * nothing it can stand on, and the foot-as-a-point rule stands: the body falls. Over a floor
+ * the foot ray found (floor_gap), the ball holds only above it: contacts at one level, or
+ * on opposite sides (a narrow wedge, or a roll across the foot point onto a floor).
  */
 /* Where the crack rule drops the full capsule's bottom ball from: the sweep capsule's
  * bottom ball centre (free space: the sweep capsule was just swept there). */
 static inline fm_vec3_t ball_drop_start(const cb_ctx_t *c, fm_vec3_t pos)
 {
     return v3_madd(cb_foot(c, pos), c->up, c->radius + c->step);
+}
+
+/** The contact is on the face of a triangle too steep to stand on (a wall). */
+static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
+{
+    fm_vec3_t fn;
+    return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) < c->body->cos_floor_max_angle;
 }
 
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
@@ -135,23 +144,33 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         coll_sweep_hit_t h2;
+        fm_vec3_t across = v3_norm(v3_reject(downhill, up));
+        /* Resting on an edge almost under its centre the tangent barely descends: rolled
+         * along it by a diameter the ball would pass over the far side of a gap a few
+         * millimetres lower than this edge (a tile beside a tile, a block beside a block)
+         * and meet whatever stands beyond (a ramp a metre away). */
+        const bool flat = n1u > 0.995f && v3_len(across) > 0.5f;
         /* The roll counts only within half a radius of descent (below), so on a tilted
          * contact it ends there: a shorter sweep meets fewer triangles and stays inside the
-         * step's gathered box more often. (Tilts under 0.25 keep the whole diameter: the
-         * edge-under-the-centre case below depends on whether the roll met anything.) */
+         * step's gathered box more often (tilts under 0.25, flat ones among them, keep the
+         * whole diameter). */
         float sink = -v3_dot(downhill, up);
         float roll = 2.0f * r;
         if (sink > 0.25f) roll = f_min(roll, 0.5f * r * 1.01f / sink + c->skin);
-        bool met = cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, roll), &h2);
+        bool met = !flat && cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, roll), &h2);
         float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
-        fm_vec3_t across = v3_norm(v3_reject(downhill, up));
-        if (!met && n1u > 0.995f && v3_len(across) > 0.5f) {
-            /* Resting on an edge almost under its centre the tangent barely descends: the
-             * ball would roll off it and drop. Move it off across up by a radius, then down
-             * by half a radius: the far side of a gap a few millimetres lower than this edge
-             * (a tile beside a tile) is met on the way. */
+        if (flat) {
+            /* The ball would roll off it and drop: move it off across up by a radius, then
+             * down by half a radius; the far side of such a gap is met on the way. What
+             * the move across meets above this edge's level (a wall, a taller block
+             * beyond the gap) is not that far side: the ball drops from where it stopped. */
             fm_vec3_t off = v3_scale(across, r);
             met = cb_sweep(c, b1, r, 0.0f, off, &h2);
+            if (met && isfinite(h2.t) && v3_dot(v3_sub(h2.point, foot), up) > c1 + 0.1f * r) {
+                float t = h2.t * r - c->skin;
+                off = v3_scale(across, t > 0.0f ? t : 0.0f);
+                met = false;
+            }
             if (!met && cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &h2)) {
                 met = true;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
@@ -163,14 +182,32 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
         fm_vec3_t side1 = v3_norm(v3_reject(h1.normal, up)), side2 = v3_norm(v3_reject(h2.normal, up));
-        /* Over a floor the foot could step down to, only a gap between surfaces at one
-         * level holds the ball (tiles, a slab beside a slab), not a stair's nosings. */
-        if (over_floor && (fabsf(c1 - c2) > 0.1f * r || -contact > floor_gap - c->contact_eps))
+        const bool wedge = v3_dot(side1, side2) < -0.05f;
+        const bool onto_floor = !wedge && v3_dot(h2.normal, up) >= b->cos_floor_max_angle;
+        /* the roll went from one side of the foot point to the other: across the groove it
+         * is over (from a stair's nosing it ends on the edge of the tread just left, on the
+         * same side: the foot steps down off it) */
+        const bool across_foot =
+            v3_dot(v3_reject(v3_sub(h1.point, foot), up), v3_reject(v3_sub(h2.point, foot), up)) < 0.0f;
+        /* Over a floor the foot could step down to, the ball is held only above it (not on
+         * a stair's nosings: the roll from one ends on the tread the foot is over or one
+         * below it). A gap between surfaces at one level holds it (tiles, a slab beside a
+         * slab); so does, at any levels, a gap narrower than the capsule between surfaces
+         * on opposite sides (blocks of different heights, a valley's slopes) or a groove
+         * the ball rolls across onto a floor beyond (a lower block): the foot would
+         * otherwise stand at its bottom, inside both sides. */
+        /* (a wall, a face too steep to stand on, is never a side of such a gap: a body
+         * pushed into the corner of a floor and a wall that leans over it under a tilted up
+         * stands on the floor, it is not lifted into the corner) */
+        const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r &&
+                            !steep_face(c, &h1) && !steep_face(c, &h2);
+        if (over_floor && ((!narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) ||
+                           -contact > floor_gap - c->contact_eps))
             return false;
-        if (v3_dot(side1, side2) < -0.05f) {
+        if (wedge) {
             normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
             if (v3_dot(normal, up) < b->cos_floor_max_angle) normal = up;
-        } else if (v3_dot(h2.normal, up) >= b->cos_floor_max_angle && descent <= 0.1f * r) {
+        } else if (onto_floor && (descent <= 0.1f * r || (over_floor && across_foot))) {
             normal = h2.normal; /* rolled across a narrow crack onto the floor beyond it */
         } else {
             return false;
@@ -217,9 +254,10 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
 /**
  * For a body standing on the floor the foot ray found (not stepping down onto it): can the
  * edge the ball met be one side of a groove? Only if, a radius away on the other side, a
- * surface lies at that edge's level (within the tenth of a radius ball_held allows): the
- * groove's far block. A stair's nosing ahead has the lower tread behind; a bump of uneven
- * ground has ground at another height. One ray instead of the full rule's sweeps.
+ * surface lies at that edge's level (within the tenth of a radius ball_held allows), or
+ * both lie above the foot: the groove's far block. A stair's nosing ahead has the lower
+ * tread behind; a bump of uneven ground has ground at another height. One ray instead of
+ * the full rule's sweeps.
  */
 static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge)
 {
@@ -230,7 +268,10 @@ static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
     fm_vec3_t o = v3_madd(v3_madd(foot, side, c->radius), up, top);
     coll_ray_hit_t h;
     if (!cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) || !isfinite(h.distance)) return false;
-    return fabsf((top - h.distance) - c1) <= 0.1f * c->radius;
+    /* or both above the foot: it stands at the bottom of a groove between blocks of
+     * different heights, inside both (a stair's tread behind is at or below the foot) */
+    const float beyond = top - h.distance;
+    return fabsf(beyond - c1) <= 0.1f * c->radius || (beyond > c->contact_eps && c1 > c->contact_eps);
 }
 
 /**
@@ -387,6 +428,25 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 float rest = c->radius / nu - (c->radius + c->step);
                 if (gap <= (rest > 0.0f ? rest : 0.0f) + cb_len_tol(c, CB_MARGIN) && gap <= c->snap)
                     s = (support_t){true, true, gap, hit.normal, hit.point, hit.id, hit.instance};
+                /* The steep face's low edge over a walkable floor (the wedge under a ramp or
+                 * overhang): the face is found above the foot, and the floor, found by the
+                 * same ray continued past it, is above the foot too. The body stands on that
+                 * floor (lifted onto it; no room for the lift reverts the step), not on the
+                 * face with its foot sunk into the floor. */
+                coll_ray_hit_t under;
+                float past = hit.distance + c->skin;
+                for (int k = 0; k < 3 && s.found && s.steep && gap < -step_eps && past < above - step_eps; k++) {
+                    if (!cb_ray(c, v3_madd(origin, up, -past), v3_scale(up, -1.0f), above - past, &under) ||
+                        !v3_finite(under.normal) || !v3_finite(under.point) || !isfinite(under.distance))
+                        break;
+                    float g2 = under.distance + past - above;
+                    if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
+                        if (g2 < -step_eps)
+                            s = (support_t){true, false, g2, under.normal, under.point, under.id, under.instance};
+                        break;
+                    }
+                    past += under.distance + c->skin; /* another steep face (a slab's underside) */
+                }
             }
         }
         if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s);

@@ -132,6 +132,9 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
 /** Unswept push by delta, kept only when the sweep capsule then overlaps nothing new or
  *  deeper than before (coll_capsule_overlaps before and after); false: not moved. */
 bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
+/** True when the contact is on its triangle's face (within ~2.5 degrees): *face is the face
+ *  normal on the contact's side. */
+bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face);
 /** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts),
  *  keeping the result only when it overlaps nothing new or deeper than the start did. */
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);

@@ -239,29 +239,32 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
 }
 
 /**
- * A contact normal within ~2.5 degrees of its triangle's face normal becomes the face
- * normal. Grazing a flat wall or floor tessellated into many triangles, the sweep can meet
- * a seam's edge or vertex a hair before the face and report a normal tilted by a few
- * thousandths; sliding along that tilt walks the capsule into the wall and costs speed.
+ * A contact normal within ~2.5 degrees of its triangle's face normal is on that face:
+ * *face is the face normal (turned to the contact's side). Grazing a flat wall or floor
+ * tessellated into many triangles, the sweep can meet a seam's edge or vertex a hair before
+ * the face and report a normal tilted by a few thousandths; sliding along that tilt walks
+ * the capsule into the wall and costs speed, so the slide takes the face normal.
  */
-static fm_vec3_t face_normal(const coll_sweep_hit_t *hit)
+bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face)
 {
     fm_vec3_t n = hit->normal;
     const coll_mesh_instance_t *in = hit->instance;
-    if (!in || !in->mesh || hit->triangle < 0) return n;
+    if (!in || !in->mesh || hit->triangle < 0) return false;
     fm_vec3_t v[3];
     coll_mesh_triangle(in->mesh, (uint32_t)hit->triangle, v);
     /* world-space face normal: local normal through the inverse scale, then the rotation */
     fm_vec3_t ln = v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0]));
     const fm_vec3_t *sc = &in->xf.scale;
-    if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return n;
+    if (sc->x == 0.0f || sc->y == 0.0f || sc->z == 0.0f) return false;
     ln = v3(ln.x / sc->x, ln.y / sc->y, ln.z / sc->z);
     fm_vec3_t wn;
     fm_quat_rotate_vec3(&wn, &in->xf.rot, &ln);
     wn = v3_norm(wn);
     float d = v3_dot(wn, n);
     if (d < 0.0f) { wn = v3_scale(wn, -1.0f); d = -d; }
-    return d > 0.999f ? wn : n;
+    if (!(d > 0.999f)) return false;
+    *face = wn;
+    return true;
 }
 
 /** Step events of a slide hit: a ceiling met moving up, a wall (the plane slid along). */
@@ -327,7 +330,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         }
         if (!v3_finite(hit.normal) || !isfinite(hit.t)) break;
         touched = true;
-        hit.normal = face_normal(&hit);
+        fm_vec3_t fn;
+        if (coll_cb_face_normal(&hit, &fn)) hit.normal = fn;
         float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
         float done = 0.0f; /* fraction of rem actually travelled */
         if (t <= 0.0f && hit.depth > 0.0f) {
@@ -485,6 +489,25 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
 }
 
 /**
+ * True when moving the body from `from` to `to` pushes it down along up (by more than the
+ * contact tolerance) so that its foot ends below a walkable floor right under it, by more
+ * than that tolerance: the sweep capsule, short by step_height, clears that floor, the full
+ * capsule stands inside it. A push out of an overhang lower than the body (a teleport under
+ * it) did so, and the floor probe, with no room to lift the body back, left it standing
+ * with its foot up to step_height inside the floor.
+ */
+static bool sinks_foot(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to)
+{
+    if (!(v3_dot(v3_sub(from, to), c->up) > c->contact_eps)) return false;
+    const float above = c->step + c->radius;
+    coll_ray_hit_t h;
+    if (!cb_ray(c, v3_madd(cb_foot(c, to), c->up, above), v3_scale(c->up, -1.0f), above, &h) ||
+        !isfinite(h.distance) || !v3_finite(h.normal))
+        return false;
+    return v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle && above - h.distance > c->contact_eps;
+}
+
+/**
  * Last resort for a body the verified recovery could not free (the game teleported it deep
  * into geometry, an up change swung it into a wall, a platform pressed it into one): move it
  * to free space -- verified free, so never into something else. Candidates, shortest first
@@ -523,7 +546,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
                 if (want > 0.0f) delta = v3_madd(delta, ct[i].normal, want);
             }
         fm_vec3_t p = v3_add(*pos, delta);
-        if (v3_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep)) {
+        if (v3_finite(p) && free_at(c, p) && reachable(c, *pos, p, deep) && !sinks_foot(c, *pos, p)) {
             *pos = p;
             if (vel) *vel = v3(0.0f, 0.0f, 0.0f);
             return;
@@ -599,7 +622,8 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * a body wedged between a slab's faces that the game never put there, and pushing
          * through ended 126 mm inside the other face (soak seed 12 level 382). A body the
          * game put deep into geometry may therefore stay there until it moves out. */
-        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius))) {
+        if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius)) &&
+            !sinks_foot(c, *pos, p)) {
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);

@@ -8,8 +8,18 @@
 #include <math.h>
 #include "coll/common.h"
 
+/* No rotation and unit scale: a level placed where it was baked (most instances). The
+ * general formulas give bit-identical results there; these skip the quaternion work
+ * (the probe anchors every grounded step to its floor's instance). */
+static inline bool is_translation(const coll_transform_t *xf)
+{
+    return xf->rot.x == 0.0f && xf->rot.y == 0.0f && xf->rot.z == 0.0f && xf->rot.w == 1.0f &&
+           xf->scale.x == 1.0f && xf->scale.y == 1.0f && xf->scale.z == 1.0f;
+}
+
 fm_vec3_t coll_transform_point(const coll_transform_t *xf, fm_vec3_t local)
 {
+    if (is_translation(xf)) return (fm_vec3_t){{local.x + xf->pos.x, local.y + xf->pos.y, local.z + xf->pos.z}};
     fm_vec3_t s = {{local.x * xf->scale.x, local.y * xf->scale.y, local.z * xf->scale.z}};
     fm_vec3_t r;
     fm_quat_rotate_vec3(&r, &xf->rot, &s);
@@ -18,6 +28,12 @@ fm_vec3_t coll_transform_point(const coll_transform_t *xf, fm_vec3_t local)
 
 bool coll_transform_point_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local)
 {
+    if (is_translation(xf)) {
+        fm_vec3_t l = {{world.x - xf->pos.x, world.y - xf->pos.y, world.z - xf->pos.z}};
+        if (!isfinite(l.x) || !isfinite(l.y) || !isfinite(l.z)) return false;
+        *local = l;
+        return true;
+    }
     const fm_vec3_t *sc = &xf->scale;
     if (!(fabsf(sc->x) > 1e-12f) || !(fabsf(sc->y) > 1e-12f) || !(fabsf(sc->z) > 1e-12f)) return false;
     fm_quat_t inv;
