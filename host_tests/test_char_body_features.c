@@ -186,6 +186,23 @@ static float pair_overlap(int i, int j)
     return a->radius + b->radius - d;
 }
 
+/* Overlap of body i's sweep capsule (the one that collides: the full capsule shortened from
+ * the bottom by step_height) with body j's collider (its full capsule), m. The step zone
+ * under a body is not collided by design (the seed's shortened capsule: the probe steps
+ * onto what is there), so a body jumping past another's head may reach over it with its
+ * step zone (13.9 mm in this test); the smaller of the two orders is the overlap neither
+ * step zone explains. */
+static float pair_sweep_overlap(int i, int j)
+{
+    const char_body_settings_t *a = char_body_get_settings(&bodies[i]), *b = char_body_get_settings(&bodies[j]);
+    float dx = bpos[i].x - bpos[j].x, dz = bpos[i].z - bpos[j].z;
+    float ilo = bpos[i].y + a->step_height + a->radius, ihi = bpos[i].y + 1.8f - a->radius;
+    if (ilo > ihi) ilo = ihi;
+    float jlo = bpos[j].y + b->radius, jhi = bpos[j].y + 1.8f - b->radius;
+    float gy = ilo > jhi ? ilo - jhi : (jlo > ihi ? jlo - ihi : 0.0f);
+    return a->radius + b->radius - sqrtf(dx * dx + dz * dz + gy * gy);
+}
+
 static void head_on(float speed, float hz, float offset_z, float *worst, float *passed_x)
 {
     cb_world_reset();
@@ -252,7 +269,7 @@ static void test_32_bodies_milling(void)
         add_body(i, cb_vec(-6.0f + 1.6f * (float)(i % 8), 0.0f, -6.0f + 1.6f * (float)(i / 8) + (i / 8 >= 2 ? 4.0f : 0.0f)),
                  0.3f + 0.05f * (float)(i % 3));
     const float dt = 1.0f / 60.0f;
-    float worst = 0.0f;
+    float worst = 0.0f, worst_full = 0.0f;
     for (int f = 0; f < 10000; f++) {
         for (int i = 0; i < NB; i++) {
             if (f % 40 == i % 40) {
@@ -269,12 +286,16 @@ static void test_32_bodies_milling(void)
                        (double)bpos[i].z);
             TEST_ASSERT_TRUE(fabsf(bpos[i].x) < 8.0f && fabsf(bpos[i].z) < 8.0f && bpos[i].y > -0.01f);
             for (int j = i + 1; j < NB; j++) {
-                float o = pair_overlap(i, j);
+                /* beyond either body's step zone: both sweep capsules' overlaps with the other */
+                float oi = pair_sweep_overlap(i, j), oj = pair_sweep_overlap(j, i);
+                float o = oi < oj ? oi : oj;
                 if (o > worst) worst = o;
+                if (pair_overlap(i, j) > worst_full) worst_full = pair_overlap(i, j);
             }
         }
     }
-    cb_report("32 bodies milling 10000 frames: deepest overlap between bodies", worst, "m");
+    cb_report("32 bodies milling 10000 frames: deepest overlap outside the step zones", worst, "m");
+    cb_report("32 bodies milling 10000 frames: deepest full capsules overlap (step zone in the air)", worst_full, "m");
     TEST_ASSERT_TRUE(worst <= 0.001f);
 }
 
