@@ -441,11 +441,11 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
         /* Automatic: the grid (cell array + refs) also stays within a byte budget per
          * triangle, so the finer start costs no more memory than the old coarse default. */
         uint64_t refs_cap = max_refs;
+        /* (quantized: a small constant, so a small level also stays under 14 B a triangle) */
+        const uint64_t budget = (m->flags & COLL_MESHF_QUANT) ? (uint64_t)m->ntris * 9u / 2u + 128u
+                                                              : (uint64_t)m->ntris * 19u / 2u + 1024u;
+        const unsigned rshift = (m->flags & COLL_MESHF_REF16) ? 1u : 2u; /* ref bytes 2 or 4 (no 64-bit divide) */
         if (automatic) {
-            /* (quantized: a small constant, so a small level also stays under 14 B a triangle) */
-            uint64_t budget = (m->flags & COLL_MESHF_QUANT) ? (uint64_t)m->ntris * 9u / 2u + 128u
-                                                            : (uint64_t)m->ntris * 19u / 2u + 1024u;
-            unsigned rshift = (m->flags & COLL_MESHF_REF16) ? 1u : 2u; /* ref bytes 2 or 4 (no 64-bit divide) */
             uint64_t left = budget > 4u * (ncells + 1u) ? budget - 4u * (ncells + 1u) : 0u;
             if ((left >> rshift) < refs_cap) refs_cap = left >> rshift;
             if (refs_cap < m->ntris && !single) fits = false;
@@ -477,7 +477,16 @@ static void choose_grid(const coll_mesh_t *m, float want_cell, float mean_extent
                 coll_mesh_tri_local(m, t, tri);
                 ok = for_each_cell_of_tri(g, tri, count_visit, &cc);
             }
-            if (ok) return;
+            if (ok) {
+                /* Hashed and automatic: as many buckets as the byte budget has room for
+                 * beside the refs (up to one a ref): fewer cells share a bucket's list, so a
+                 * query meets fewer triangles of other cells (real maps: -12 % per step). */
+                uint64_t refs_bytes = cc.count << rshift, cap = GRID_MAX_CELLS(m->ntris);
+                while (automatic && g->nbuckets && (uint64_t)g->nbuckets * 2u <= cc.count &&
+                       (uint64_t)g->nbuckets * 2u <= cap && 4u * ((uint64_t)g->nbuckets * 2u + 1u) + refs_bytes <= budget)
+                    g->nbuckets *= 2u;
+                return;
+            }
         }
         if (single) return; /* cannot happen: one cell holds ntris <= max_refs refs */
         cell *= automatic ? 1.25f : 1.5f; /* automatic: finer steps land nearer the budget */
