@@ -159,7 +159,7 @@ done
 # Real maps (issue 14: each <= 2x the sample level's walking cost per step): the soak's
 # real-level mode, 8 bodies walking and jumping at random (soak settings), 1500 steps,
 # seed 1, under callgrind counting char_body_move_and_slide_in only.
-echo "map,steps,host_instr_per_step" > "$out/realmaps.csv"
+echo "map,steps,host_instr_per_step,gather_overflows_per_1000" > "$out/realmaps.csv"
 for f in ${BENCH_REAL:-}; do
     m=$(basename "$f" .coll)
     (cd "$out/cg" && valgrind --tool=callgrind --toggle-collect=char_body_move_and_slide_in \
@@ -167,7 +167,8 @@ for f in ${BENCH_REAL:-}; do
         --seed 1 --out "$out/real_soak" > "$out/logs/real_$m.txt" 2> "$out/logs/real_$m.err") ||
         true # the soak's own verdict (its open oracle kinds) is not this measurement's
     ir=$(callgrind_annotate "$out/cg/real_$m.out" 2>/dev/null | awk '/PROGRAM TOTALS/ && !done { gsub(",", "", $1); print $1; done = 1 }')
-    [ -n "$ir" ] && echo "$m,1500,$((ir / 1500))" >> "$out/realmaps.csv"
+    ov=$(sed -n 's/.*queries: .* gather overflows (\([0-9.]*\) per 1000 steps).*/\1/p' "$out/logs/real_$m.txt" | head -n 1)
+    [ -n "$ir" ] && echo "$m,1500,$((ir / 1500)),${ov:-}" >> "$out/realmaps.csv"
 done
 "$bin/bench_run" sizes > "$out/sizes.csv"
 $qemu "$bin/bench_run_mips" sizes > "$out/sizes_mips.csv"

@@ -217,6 +217,11 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
     printf("\n");
     printf("%s: reported only: frames with the sweep capsule > 1 cm inside a static collider body: %llu (max %.1f mm)\n",
            what, (unsigned long long)st->body_pen_frames, st->max_body_pen * 1000.0);
+    const coll_query_stats_t *q = &soak_query_stats;
+    printf("%s: queries: %lu steps gathered, %lu gather overflows (%.2f per 1000 steps), %lu dedup overflows, "
+           "%lu queries outside the gathered box (run on the scene)\n", what, (unsigned long)q->gathers,
+           (unsigned long)q->gather_overflows, q->gathers ? 1000.0 * (double)q->gather_overflows / (double)q->gathers : 0.0,
+           (unsigned long)q->dedup_overflows, (unsigned long)q->gather_misses);
 }
 
 static int replay_one(const char *path, bool bless, bool verbose)

@@ -3,6 +3,8 @@
  * Generation is done in double with +-*÷ and sqrt only (no libm trig), so a seed gives
  * bit-identical levels on every IEEE platform (x86-64, big-endian MIPS under qemu). */
 #include "soak_sim.h"
+
+coll_query_stats_t soak_query_stats;
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -454,6 +456,7 @@ int soak_level_generate_v(soak_level_t *l, uint64_t seed, int gen)
     l->npieces = l->nbodies = l->nverts = l->ntris = l->nwtris = 0;
     l->pool_used = 0;
     coll_scene_init(&l->scene);
+    coll_scene_set_stats(&l->scene, &soak_query_stats);
     bld_t b = {l, NULL, 0, 0.5, 0.25, 45.0};
     if (gen >= 2) {
         soak_rng_t sr;
@@ -778,6 +781,7 @@ int soak_level_load(soak_level_t *l, const char *blob_path, const char *raw_path
     l->pool_used = 0;
     l->gen = 0;
     coll_scene_init(&l->scene);
+    coll_scene_set_stats(&l->scene, &soak_query_stats);
     soak_piece_t *p = new_piece(l, K_ROOM);
     p->inst.mesh = m;
     p->bound_radius = 0;

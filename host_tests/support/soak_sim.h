@@ -122,6 +122,10 @@ int  soak_level_generate_v(soak_level_t *lvl, uint64_t seed, int gen);
  *  the checker's independent copy of the same triangles). The blob and the raw triangles
  *  are malloc'd (host tool only). 0 on success, else a negative code with a message. */
 int  soak_level_load(soak_level_t *lvl, const char *blob_path, const char *raw_path, char *err, size_t errlen);
+/** What the queries of every soak scene did (coll_scene_set_stats): character steps that
+ *  gathered, their overflows and the queries that ran on the scene instead (issue 14's
+ *  "overflow fallbacks rare enough to be noise" on real levels). */
+extern coll_query_stats_t soak_query_stats;
 /** Sets the transforms of moving pieces and bodies for time t (seconds). */
 void soak_level_animate(soak_level_t *lvl, double t);
 /** FNV-1a hash of the generated geometry, transforms and body data (cross-platform). */
