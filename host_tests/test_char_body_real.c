@@ -866,6 +866,59 @@ static void test_jump_turned_down_by_sloped_ceiling(void)
     }
 }
 
+/* ---- 5e. a jump whose input across a tilted up points into the floor ---- */
+
+/* soak s1 l302: up (-0.405 0.914 0.013), the floor y = 0 walkable for it (24 degrees), r
+ * 0.196, step 0.886, a room wall x = -24 leaning over the body in its frame. Jumping at
+ * 5.9 m/s along up while walking towards -x at 16 m/s, the input across up points 6 m/s
+ * into the floor, more than the rise lifts off it: the rise skipped the floor probe and
+ * the step zone, unswept, took the foot 0.7 m into the floor; at the top, against the
+ * wall, the lift out of it had no room, so the body stood there. The foot guard's ray now
+ * reports the floor the foot went into, and the probe lands the body on it. */
+static void test_jump_into_floor_under_tilted_up_lands(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    for (int i = 0; i < 2; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_quad(cb_vec(-3.5f, 0.0f, -10.0f), cb_vec(-3.5f, 0.0f, 10.0f), cb_vec(-3.5f, 6.0f, 10.0f),
+                    cb_vec(-3.5f, 6.0f, -10.0f));
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        float ul = sqrtf(0.405f * 0.405f + 0.914f * 0.914f + 0.013f * 0.013f);
+        fm_vec3_t up = cb_vec(-0.405f / ul, 0.914f / ul, 0.013f / ul);
+        const float h = 3.0679f;
+        pos = cb_vec(0.0f, 0.0f, 0.0f);
+        char_body_init(&body, &pos);
+        char_body_settings_t s = cb_foot_settings();
+        s.up = up;
+        s.radius = 0.1964f;
+        s.height = h;
+        s.center_offset = cb_vec(0.0f, 0.5f * h, 0.0f);
+        s.step_height = 0.8859f;
+        s.floor_snap_distance = 1.2828f;
+        s.floor_max_angle = 68.5f * DEG;
+        s.max_slides = 6;
+        char_body_configure(&body, &s);
+        for (int f = 0; f < 10; f++) CB_STEP(&body, 1.0f / rates[i]);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        body.input_velocity = cb_vec(-16.33f, 0.0f, 7.26f);
+        float lowest = 0.0f;
+        for (int jump = 0; jump < 4; jump++) {
+            char_body_set_velocity(&body, cb_vec(5.87f * up.x, 5.87f * up.y, 5.87f * up.z));
+            for (int f = 0; f < (int)(0.3f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                float y = char_body_foot_pos(&body).y;
+                if (y < lowest) lowest = y;
+            }
+        }
+        char name[96];
+        snprintf(name, sizeof name, "jump into the floor under a tilted up at %.0f Hz: lowest foot", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -1077,6 +1130,7 @@ int main(void)
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
     RUN_TEST(test_jump_turned_down_by_sloped_ceiling);
+    RUN_TEST(test_jump_into_floor_under_tilted_up_lands);
     RUN_TEST(test_wall_as_floor_tilted_up_walks_forward);
     RUN_TEST(test_corner_push_never_backwards);
     RUN_TEST(test_velocity_at_rest_over_slot);

@@ -632,19 +632,20 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     if (stuck) unstick(c, pos, vel);
 }
 
-void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
+bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
     fm_vec3_t o = v3_madd(old_foot, c->up, c->contact_eps);
     fm_vec3_t d = v3_sub(foot, o);
     float len = v3_len(d);
-    if (!(len > cb_len_tol(c, 1e-5f))) return;
+    if (!(len > cb_len_tol(c, 1e-5f))) return false;
     fm_vec3_t dir = v3_scale(d, 1.0f / len);
     coll_ray_hit_t hit;
-    if (!cb_ray(c, o, dir, len, &hit)) return;
+    if (!cb_ray(c, o, dir, len, &hit)) return false;
     fm_vec3_t n = hit.normal;
-    if (!v3_finite(n) || v3_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
+    if (!v3_finite(n)) return false;
+    if (v3_dot(n, c->up) >= b->cos_floor_max_angle) return true; /* landing: the probe's job */
     /* Slide the foot along the wall it would have entered. */
     fm_vec3_t after = v3_sub(foot, hit.point);
     fm_vec3_t target = v3_add(v3_madd(hit.point, n, c->skin), clip_plane(after, n));
@@ -652,4 +653,5 @@ void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
      * something else (a slope or wall on the other side). */
     coll_cb_move_swept(c, pos, v3_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
+    return false;
 }
