@@ -236,6 +236,55 @@ static void test_crack_walk_across(void)
         }
 }
 
+/* ---- 2a'. a crack beside a wall ---- */
+
+/* Two slabs 24 cm high with a 20 cm crack between them, a wall across the crack's end
+ * (soak s2 l333: r 0.335, a room wall; s3 l3, l172 alike). Walking across the crack
+ * while pushing into the wall, the crack rule's ball, resting on the first slab's edge,
+ * rolled towards the far edge and met the wall it touches first: held by nothing, the
+ * foot dropped through the crack onto the floor, 0.21-0.24 m inside both slabs. The ball
+ * now rolls on along the wall to the far edge: the body crosses on the edges. */
+static void test_crack_beside_wall(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    static const float yaws[4] = {-30.0f, -16.0f, 16.0f, 30.0f}; /* the crack meets the wall at 60-74 degrees */
+    const float r = 0.3353f, top = 0.24f, g = 0.2f;
+    float worst = top;
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 4; k++) {
+            const float a = yaws[k] * DEG, zx = sinf(a), zz = cosf(a), d = 2.0f + 0.5f * g;
+            cb_world_reset();
+            cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+            cb_geo_box(cb_vec(-1.0f - d * zx, 0.5f * top, -d * zz), cb_vec(4.0f, 0.5f * top, 2.0f), a);
+            cb_geo_box(cb_vec(-1.0f + d * zx, 0.5f * top, d * zz), cb_vec(4.0f, 0.5f * top, 2.0f), a);
+            cb_geo_box(cb_vec(2.25f, 1.5f, 0.0f), cb_vec(0.25f, 1.5f, 6.0f), 0.0f); /* wall x >= 2 */
+            TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+            pos = cb_vec(2.0f - r - 0.01f, top, -2.2f);
+            char_body_init(&body, &pos);
+            char_body_settings_t s = cb_foot_settings();
+            s.radius = r;
+            s.height = 3.0499f;
+            s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+            s.step_height = 0.5698f;
+            s.floor_snap_distance = 0.5698f;
+            s.floor_max_angle = 20.6f * DEG;
+            s.max_slides = 5;
+            char_body_configure(&body, &s);
+            for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / rates[i]);
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            body.input_velocity = cb_vec(1.0f, 0.0f, 3.0f);
+            float lowest = top;
+            for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            if (lowest < worst) worst = lowest;
+            TEST_ASSERT_TRUE(pos.z > 1.0f);
+        }
+    cb_report("crack beside a wall: lowest grounded foot (slab tops 0.24)", worst, "m");
+    TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -1118,6 +1167,7 @@ int main(void)
     RUN_TEST(test_crack_spawn_over);
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
+    RUN_TEST(test_crack_beside_wall);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
