@@ -647,6 +647,36 @@ static void test_teleport_under_low_overhang(void)
     }
 }
 
+/* The game teleports a body with its foot 15 cm inside a raised block (top 0.2) under an
+ * overhang (underside 2.1, ending at x = 0.3) that leaves no room to lift it onto the block
+ * (soak 1M s1 l207, l276, s2 l229, s3 l138, l323, l374, l380). The sweep capsule is free, so
+ * no recovery runs; every step's lift had no room, so the body went back to where it was
+ * and stood there, its foot in the block. It now moves to the nearest place where it
+ * stands (swept, never against the input): out from under the overhang, on the block. */
+static void test_teleport_into_raised_floor_under_overhang(void)
+{
+    static const float inputs[2][3] = {{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.5f}};
+    for (int i = 0; i < 2; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(0.0f, 0.1f, 0.0f), cb_vec(3.0f, 0.1f, 3.0f), 0.0f);    /* block top 0.2, |x|, |z| <= 3 */
+        cb_geo_box(cb_vec(-2.7f, 2.3f, 0.0f), cb_vec(3.0f, 0.2f, 5.0f), 0.0f);   /* underside 2.1, x <= 0.3 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-5.0f, 0.0f, 0.0f));
+        CB_STEP(&body, 1.0f / 60.0f);
+        char_body_teleport(&body, cb_vec(0.0f, 0.05f, 0.0f), true);
+        body.input_velocity = cb_vec(inputs[i][0], inputs[i][1], inputs[i][2]);
+        for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / 60.0f);
+        char name[96];
+        snprintf(name, sizeof name, "teleported into a raised floor under an overhang (input %d): foot", i);
+        cb_report(name, pos.y, "m");
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.2f, pos.y);
+        TEST_ASSERT_TRUE(pos.x > 0.3f);
+    }
+}
+
 /* ---- 5. a low ledge: where the full capsule does not fit standing, the body does not go ---- */
 
 static void test_low_ledge_blocks(void)
@@ -1176,6 +1206,7 @@ int main(void)
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
     RUN_TEST(test_teleport_under_low_overhang);
+    RUN_TEST(test_teleport_into_raised_floor_under_overhang);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
