@@ -140,8 +140,9 @@ bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face);
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** For a body whose full capsule has no room to stand where it is (its foot in a floor
  *  under an overhang, where the game teleported it): the nearest place across up, swept
- *  to, never against the input, where it stands (4 distances, r/2 to 4r, x 8 directions;
- *  only on that rare step). Moves *pos there and returns true, or false. */
+ *  to, never against the input, where it stands (4 distances, r/2 to 4r, none beyond the
+ *  speed limit's step, x 8 directions; only on that rare step). Moves *pos there and
+ *  returns true, or false. */
 bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot.
  *  True when its way entered a walkable floor (from above): a landing, the probe's job. */

@@ -609,6 +609,7 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input)
             float a = (float)dir * (0.25f * FM_PI);
             fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
+            if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
             fm_vec3_t p = *pos;
             if (coll_cb_move_swept(c, &p, v3_scale(d, dists[k])) < 1.0f) continue;
             if (v3_finite(p) && stands_at(c, &p)) {
