@@ -236,6 +236,55 @@ static void test_crack_walk_across(void)
         }
 }
 
+/* ---- 2a'. a crack beside a wall ---- */
+
+/* Two slabs 24 cm high with a 20 cm crack between them, a wall across the crack's end
+ * (soak s2 l333: r 0.335, a room wall; s3 l3, l172 alike). Walking across the crack
+ * while pushing into the wall, the crack rule's ball, resting on the first slab's edge,
+ * rolled towards the far edge and met the wall it touches first: held by nothing, the
+ * foot dropped through the crack onto the floor, 0.21-0.24 m inside both slabs. The ball
+ * now rolls on along the wall to the far edge: the body crosses on the edges. */
+static void test_crack_beside_wall(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    static const float yaws[4] = {-30.0f, -16.0f, 16.0f, 30.0f}; /* the crack meets the wall at 60-74 degrees */
+    const float r = 0.3353f, top = 0.24f, g = 0.2f;
+    float worst = top;
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 4; k++) {
+            const float a = yaws[k] * DEG, zx = sinf(a), zz = cosf(a), d = 2.0f + 0.5f * g;
+            cb_world_reset();
+            cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+            cb_geo_box(cb_vec(-1.0f - d * zx, 0.5f * top, -d * zz), cb_vec(4.0f, 0.5f * top, 2.0f), a);
+            cb_geo_box(cb_vec(-1.0f + d * zx, 0.5f * top, d * zz), cb_vec(4.0f, 0.5f * top, 2.0f), a);
+            cb_geo_box(cb_vec(2.25f, 1.5f, 0.0f), cb_vec(0.25f, 1.5f, 6.0f), 0.0f); /* wall x >= 2 */
+            TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+            pos = cb_vec(2.0f - r - 0.01f, top, -2.2f);
+            char_body_init(&body, &pos);
+            char_body_settings_t s = cb_foot_settings();
+            s.radius = r;
+            s.height = 3.0499f;
+            s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+            s.step_height = 0.5698f;
+            s.floor_snap_distance = 0.5698f;
+            s.floor_max_angle = 20.6f * DEG;
+            s.max_slides = 5;
+            char_body_configure(&body, &s);
+            for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / rates[i]);
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            body.input_velocity = cb_vec(1.0f, 0.0f, 3.0f);
+            float lowest = top;
+            for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            if (lowest < worst) worst = lowest;
+            TEST_ASSERT_TRUE(pos.z > 1.0f);
+        }
+    cb_report("crack beside a wall: lowest grounded foot (slab tops 0.24)", worst, "m");
+    TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -598,6 +647,36 @@ static void test_teleport_under_low_overhang(void)
     }
 }
 
+/* The game teleports a body with its foot 15 cm inside a raised block (top 0.2) under an
+ * overhang (underside 2.1, ending at x = 0.3) that leaves no room to lift it onto the block
+ * (soak 1M s1 l207, l276, s2 l229, s3 l138, l323, l374, l380). The sweep capsule is free, so
+ * no recovery runs; every step's lift had no room, so the body went back to where it was
+ * and stood there, its foot in the block. It now moves to the nearest place where it
+ * stands (swept, never against the input): out from under the overhang, on the block. */
+static void test_teleport_into_raised_floor_under_overhang(void)
+{
+    static const float inputs[2][3] = {{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.5f}};
+    for (int i = 0; i < 2; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_box(cb_vec(0.0f, 0.1f, 0.0f), cb_vec(3.0f, 0.1f, 3.0f), 0.0f);    /* block top 0.2, |x|, |z| <= 3 */
+        cb_geo_box(cb_vec(-2.7f, 2.3f, 0.0f), cb_vec(3.0f, 0.2f, 5.0f), 0.0f);   /* underside 2.1, x <= 0.3 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(-5.0f, 0.0f, 0.0f));
+        CB_STEP(&body, 1.0f / 60.0f);
+        char_body_teleport(&body, cb_vec(0.0f, 0.05f, 0.0f), true);
+        body.input_velocity = cb_vec(inputs[i][0], inputs[i][1], inputs[i][2]);
+        for (int f = 0; f < 5; f++) CB_STEP(&body, 1.0f / 60.0f);
+        char name[96];
+        snprintf(name, sizeof name, "teleported into a raised floor under an overhang (input %d): foot", i);
+        cb_report(name, pos.y, "m");
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.2f, pos.y);
+        TEST_ASSERT_TRUE(pos.x > 0.3f);
+    }
+}
+
 /* ---- 5. a low ledge: where the full capsule does not fit standing, the body does not go ---- */
 
 static void test_low_ledge_blocks(void)
@@ -866,6 +945,59 @@ static void test_jump_turned_down_by_sloped_ceiling(void)
     }
 }
 
+/* ---- 5e. a jump whose input across a tilted up points into the floor ---- */
+
+/* soak s1 l302: up (-0.405 0.914 0.013), the floor y = 0 walkable for it (24 degrees), r
+ * 0.196, step 0.886, a room wall x = -24 leaning over the body in its frame. Jumping at
+ * 5.9 m/s along up while walking towards -x at 16 m/s, the input across up points 6 m/s
+ * into the floor, more than the rise lifts off it: the rise skipped the floor probe and
+ * the step zone, unswept, took the foot 0.7 m into the floor; at the top, against the
+ * wall, the lift out of it had no room, so the body stood there. The foot guard's ray now
+ * reports the floor the foot went into, and the probe lands the body on it. */
+static void test_jump_into_floor_under_tilted_up_lands(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    for (int i = 0; i < 2; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+        cb_geo_quad(cb_vec(-3.5f, 0.0f, -10.0f), cb_vec(-3.5f, 0.0f, 10.0f), cb_vec(-3.5f, 6.0f, 10.0f),
+                    cb_vec(-3.5f, 6.0f, -10.0f));
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        float ul = sqrtf(0.405f * 0.405f + 0.914f * 0.914f + 0.013f * 0.013f);
+        fm_vec3_t up = cb_vec(-0.405f / ul, 0.914f / ul, 0.013f / ul);
+        const float h = 3.0679f;
+        pos = cb_vec(0.0f, 0.0f, 0.0f);
+        char_body_init(&body, &pos);
+        char_body_settings_t s = cb_foot_settings();
+        s.up = up;
+        s.radius = 0.1964f;
+        s.height = h;
+        s.center_offset = cb_vec(0.0f, 0.5f * h, 0.0f);
+        s.step_height = 0.8859f;
+        s.floor_snap_distance = 1.2828f;
+        s.floor_max_angle = 68.5f * DEG;
+        s.max_slides = 6;
+        char_body_configure(&body, &s);
+        for (int f = 0; f < 10; f++) CB_STEP(&body, 1.0f / rates[i]);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        body.input_velocity = cb_vec(-16.33f, 0.0f, 7.26f);
+        float lowest = 0.0f;
+        for (int jump = 0; jump < 4; jump++) {
+            char_body_set_velocity(&body, cb_vec(5.87f * up.x, 5.87f * up.y, 5.87f * up.z));
+            for (int f = 0; f < (int)(0.3f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                float y = char_body_foot_pos(&body).y;
+                if (y < lowest) lowest = y;
+            }
+        }
+        char name[96];
+        snprintf(name, sizeof name, "jump into the floor under a tilted up at %.0f Hz: lowest foot", (double)rates[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+}
+
 /* ---- 6. honest velocity ---- */
 
 /* Resting wedged over a gap the body does not fall: no fall speed accumulates. */
@@ -1065,6 +1197,7 @@ int main(void)
     RUN_TEST(test_crack_spawn_over);
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
+    RUN_TEST(test_crack_beside_wall);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
@@ -1073,10 +1206,12 @@ int main(void)
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
     RUN_TEST(test_teleport_under_low_overhang);
+    RUN_TEST(test_teleport_into_raised_floor_under_overhang);
     RUN_TEST(test_low_ledge_blocks);
     RUN_TEST(test_landing_before_kerb_under_overhang);
     RUN_TEST(test_landing_on_slope_too_steep_for_the_capsule);
     RUN_TEST(test_jump_turned_down_by_sloped_ceiling);
+    RUN_TEST(test_jump_into_floor_under_tilted_up_lands);
     RUN_TEST(test_wall_as_floor_tilted_up_walks_forward);
     RUN_TEST(test_corner_push_never_backwards);
     RUN_TEST(test_velocity_at_rest_over_slot);

@@ -451,7 +451,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     }
 
     /* 5. foot guard */
-    if (!walking) coll_cb_foot_guard(&c, &pos, old_foot, &body->velocity);
+    const bool foot_landed = !walking && coll_cb_foot_guard(&c, &pos, old_foot, &body->velocity);
 
     /* Honest velocity: where the step's motion fell short of the velocity (a wall, a
      * ceiling, a wedge, a crack's edges stopped it) the velocity is the one the body moved
@@ -467,8 +467,11 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     /* A jump skips the probe (it is not snapped back to the floor it leaves), but only
      * while it rises: a rise that an overhang's slope turned downwards this step is not
      * leaving anything, and without the probe it ended with the foot inside the floor it
-     * started from (the step zone hides a floor from the sweep). */
-    const bool rising = jumping && v3_dot(v3_sub(slid, start), up) > 0.0f;
+     * started from (the step zone hides a floor from the sweep). Nor is a rise whose foot
+     * went into a walkable floor: under a tilted up the input across up can point into the
+     * floor more than the jump lifts off it, and the step zone, unswept, sank up to 0.7 m
+     * into the floor over the rise, too deep to lift out of at its top (soak s1 l302). */
+    const bool rising = jumping && !foot_landed && v3_dot(v3_sub(slid, start), up) > 0.0f;
     if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
         /* Falling, only the move across up is undone: the body still falls straight down
          * from where it was (landing in front of a kerb it has no room to climb, under an
@@ -484,7 +487,20 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         if (!kept) {
             pos = start;
             body->velocity = v3(0.0f, 0.0f, 0.0f);
-            coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+            /* No room to stand at the start either (the game teleported the body with its
+             * foot in a raised floor under an overhang: the sweep capsule is free, so no
+             * recovery ran): the nearest place where it stands, moved to as motion. */
+            fm_vec3_t p = start;
+            if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising) && coll_cb_stand_search(&c, &p, in_h)) {
+                fm_vec3_t held = pos;
+                pos = p;
+                if (coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
+                    body->velocity = v3_scale(v3_reject(v3_sub(pos, start), up), 1.0f / dt);
+                } else {
+                    pos = held;
+                    coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+                }
+            }
         }
     }
 

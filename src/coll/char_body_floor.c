@@ -159,6 +159,25 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         if (sink > 0.25f) roll = f_min(roll, 0.5f * r * 1.01f / sink + c->skin);
         bool met = !flat && cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, roll), &h2);
         float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
+        if (over_floor && met && isfinite(h2.t) && v3_finite(h2.normal) && v3_dot(h2.normal, up) > -0.1f &&
+            steep_face(c, &h2)) {
+            /* Over a floor, a wall the ball touches beside it (a body against a room wall or
+             * a block's side over a crack) stops the roll before the gap's far side: the ball
+             * rolls on along the wall (soak s2 l333, s3 l3, l172: held by nothing, the foot
+             * stood on the floor under the crack, 0.1-0.2 m inside both sides). With no
+             * floor under the foot, the wall holds the ball with the edge (the slot between
+             * a ledge and a wall), as before. */
+            float t = h2.t > 0.0f ? h2.t : 0.0f;
+            fm_vec3_t rest = v3_scale(downhill, roll * (1.0f - t));
+            rest = v3_madd(rest, h2.normal, -v3_dot(rest, h2.normal));
+            fm_vec3_t bw = v3_madd(v3_madd(b1, downhill, roll * t), h2.normal, 0.2f * c->skin);
+            coll_sweep_hit_t h3;
+            if (v3_len(rest) > c->tiny && cb_sweep(c, bw, r, 0.0f, rest, &h3) && isfinite(h3.t) &&
+                v3_finite(h3.normal) && !steep_face(c, &h3)) {
+                descent += (h3.t > 0.0f ? h3.t : 0.0f) * -v3_dot(rest, up);
+                h2 = h3;
+            }
+        }
         if (flat) {
             /* The ball would roll off it and drop: move it off across up by a radius, then
              * down by half a radius; the far side of such a gap is met on the way. What

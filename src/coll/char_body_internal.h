@@ -138,8 +138,15 @@ bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face);
 /** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts),
  *  keeping the result only when it overlaps nothing new or deeper than the start did. */
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
-/** Airborne only: the foot point may not pass through walls on its way from old_foot. */
-void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
+/** For a body whose full capsule has no room to stand where it is (its foot in a floor
+ *  under an overhang, where the game teleported it): the nearest place across up, swept
+ *  to, never against the input, where it stands (4 distances, r/2 to 4r, none beyond the
+ *  speed limit's step, x 8 directions; only on that rare step). Moves *pos there and
+ *  returns true, or false. */
+bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input);
+/** Airborne only: the foot point may not pass through walls on its way from old_foot.
+ *  True when its way entered a walkable floor (from above): a landing, the probe's job. */
+bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
 /** How far the mesh instance stood on last step moved the floor point: false when there is
  *  nothing to carry (not on an instance, or it left the scene). */
 bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta);

@@ -577,6 +577,49 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     }
 }
 
+/* The full capsule stands at *p: a walkable floor under the foot within the snap
+ * distance below or the step height above it, and room to lift the body onto a floor
+ * above the foot (swept). *p is moved onto that floor. */
+static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
+{
+    const float above = c->radius + c->step, step_eps = cb_len_tol(c, CB_STEP_EPS);
+    coll_ray_hit_t h;
+    if (!cb_ray(c, v3_madd(cb_foot(c, *p), c->up, above), v3_scale(c->up, -1.0f), above + c->snap, &h) ||
+        !isfinite(h.distance) || !v3_finite(h.normal) || v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle)
+        return false;
+    float gap = h.distance - above;
+    if (gap < -step_eps) {
+        fm_vec3_t q = *p;
+        if (coll_cb_move_swept(c, &q, v3_scale(c->up, -gap)) * -gap < -gap - step_eps) return false;
+        *p = q;
+    }
+    return true;
+}
+
+bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input)
+{
+    fm_vec3_t side = v3_norm(v3_reject(v3(1.0f, 0.0f, 0.0f), c->up));
+    if (v3_len(side) < 0.5f) side = v3_norm(v3_reject(v3(0.0f, 0.0f, 1.0f), c->up));
+    fm_vec3_t side2 = v3_cross(c->up, side);
+    const float r = c->radius;
+    const float dists[4] = {0.5f * r, r, 2.0f * r, 4.0f * r};
+    fm_vec3_t in = v3_reject(input, c->up);
+    for (int k = 0; k < 4; k++)
+        for (int dir = 0; dir < 8; dir++) {
+            float a = (float)dir * (0.25f * FM_PI);
+            fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
+            if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
+            if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
+            fm_vec3_t p = *pos;
+            if (coll_cb_move_swept(c, &p, v3_scale(d, dists[k])) < 1.0f) continue;
+            if (v3_finite(p) && stands_at(c, &p)) {
+                *pos = p;
+                return true;
+            }
+        }
+    return false;
+}
+
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
@@ -632,19 +675,20 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     if (stuck) unstick(c, pos, vel);
 }
 
-void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
+bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
 {
     const char_body_t *b = c->body;
     fm_vec3_t foot = cb_foot(c, *pos);
     fm_vec3_t o = v3_madd(old_foot, c->up, c->contact_eps);
     fm_vec3_t d = v3_sub(foot, o);
     float len = v3_len(d);
-    if (!(len > cb_len_tol(c, 1e-5f))) return;
+    if (!(len > cb_len_tol(c, 1e-5f))) return false;
     fm_vec3_t dir = v3_scale(d, 1.0f / len);
     coll_ray_hit_t hit;
-    if (!cb_ray(c, o, dir, len, &hit)) return;
+    if (!cb_ray(c, o, dir, len, &hit)) return false;
     fm_vec3_t n = hit.normal;
-    if (!v3_finite(n) || v3_dot(n, c->up) >= b->cos_floor_max_angle) return; /* landing: the probe's job */
+    if (!v3_finite(n)) return false;
+    if (v3_dot(n, c->up) >= b->cos_floor_max_angle) return true; /* landing: the probe's job */
     /* Slide the foot along the wall it would have entered. */
     fm_vec3_t after = v3_sub(foot, hit.point);
     fm_vec3_t target = v3_add(v3_madd(hit.point, n, c->skin), clip_plane(after, n));
@@ -652,4 +696,5 @@ void coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
      * something else (a slope or wall on the other side). */
     coll_cb_move_swept(c, pos, v3_sub(target, foot));
     if (vel) *vel = clip_plane(*vel, n);
+    return false;
 }
