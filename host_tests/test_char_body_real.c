@@ -738,6 +738,28 @@ static void test_landing_before_kerb_under_overhang(void)
     }
 }
 
+/* A slope of `deg` degrees rising along +x through the origin (20 m square), and a body of
+ * radius r, height 2, the given step and snap and walkable limit (degrees) 0.5 m over its
+ * middle. */
+static void body_over_slope(float deg, float r, float step, float snap, float max_deg)
+{
+    const float t = tanf(deg * DEG);
+    cb_world_reset();
+    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
+                cb_vec(10.0f, 10.0f * t, -10.0f));
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0.0f, 0.5f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = r;
+    s.height = 2.0f;
+    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
+    s.step_height = step;
+    s.floor_snap_distance = snap;
+    s.floor_max_angle = max_deg * DEG;
+    char_body_configure(&body, &s);
+}
+
 /* ---- 5c. a walkable slope the capsule's bottom cannot reach with its foot (soak s2 l55) ---- */
 
 /* A 28 degree slope, walkable (33 degrees allowed), under a wide capsule with a low step
@@ -749,22 +771,8 @@ static void test_landing_before_kerb_under_overhang(void)
  * on it: it lands, stays at rest, and walks up and down the slope on the floor. */
 static void test_landing_on_slope_too_steep_for_the_capsule(void)
 {
-    const float deg = 28.0f, r = 0.95f, step = 0.05f;
-    const float t = tanf(deg * DEG);
-    cb_world_reset();
-    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
-                cb_vec(10.0f, 10.0f * t, -10.0f)); /* rises along +x */
-    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
-    pos = cb_vec(0.0f, 0.5f, 0.0f);
-    char_body_init(&body, &pos);
-    char_body_settings_t s = cb_foot_settings();
-    s.radius = r;
-    s.height = 2.0f;
-    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
-    s.step_height = step;
-    s.floor_snap_distance = 0.33f;
-    s.floor_max_angle = 33.4f * DEG;
-    char_body_configure(&body, &s);
+    const float deg = 28.0f, r = 0.95f, step = 0.05f, t = tanf(deg * DEG);
+    body_over_slope(deg, r, step, 0.33f, 33.4f);
     const float hover = r / cosf(deg * DEG) - r - step; /* foot above the slope at rest */
     int landed = -1;
     for (int f = 0; f < 60; f++) {
@@ -1039,22 +1047,8 @@ static void test_velocity_matches_motion_in_the_air(void)
  * wedged under a ceiling there, hung at rest). The ray now reaches the deepest such rest. */
 static void test_landing_on_slope_rest_beyond_snap(void)
 {
-    const float deg = 50.0f, r = 0.5f, step = 0.05f;
-    const float t = tanf(deg * DEG);
-    cb_world_reset();
-    cb_geo_quad(cb_vec(-10.0f, -10.0f * t, -10.0f), cb_vec(-10.0f, -10.0f * t, 10.0f), cb_vec(10.0f, 10.0f * t, 10.0f),
-                cb_vec(10.0f, 10.0f * t, -10.0f)); /* rises along +x */
-    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
-    pos = cb_vec(0.0f, 0.5f, 0.0f);
-    char_body_init(&body, &pos);
-    char_body_settings_t s = cb_foot_settings();
-    s.radius = r;
-    s.height = 2.0f;
-    s.center_offset = cb_vec(0.0f, 1.0f, 0.0f);
-    s.step_height = step;
-    s.floor_snap_distance = step;
-    s.floor_max_angle = 55.0f * DEG;
-    char_body_configure(&body, &s);
+    const float deg = 50.0f, r = 0.5f, step = 0.05f, t = tanf(deg * DEG);
+    body_over_slope(deg, r, step, step, 55.0f);
     const float hover = r / cosf(deg * DEG) - r - step; /* 0.228 m */
     int landed = -1;
     for (int f = 0; f < 60; f++) {
