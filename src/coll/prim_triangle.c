@@ -551,14 +551,18 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     /* Cull on the closest pair's direction at the start: the swept capsule stays clear of
      * the triangle along it (most candidates near stairs and corners that the plane cull
      * keeps: the capsule beside a riser or a tread's edge). With confirm, a contact that
-     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices. */
+     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices, and
+     * the allowance is the confirm test's own (1e-6, the question it answers after the
+     * features: does the motion get within rin?): a capsule resting against or sliding
+     * along a wall then stops here instead of after the feature sweep and the refinement. */
     c.mag = 0.0f;
     {
         const fm_vec3_t *m3[6] = { &c.a, &c.b, &c.d, &c.tri.v[0], &c.tri.v[1], &c.tri.v[2] };
         for (int i = 0; i < 6; i++)
             c.mag += (fabsf(m3[i]->x) + fabsf(m3[i]->y) + fabsf(m3[i]->z)) * (i == 2 ? t_max : 1.0f);
     }
-    if (sweep_separated(&c, v3_sub(ps, pt), confirm ? rin : r, t_max)) return false;
+    if (confirm ? sweep_separated_k(&c, v3_sub(ps, pt), rin, t_max, 1e-6f) : sweep_separated(&c, v3_sub(ps, pt), r, t_max))
+        return false;
 
     feat_hit_t best;
     if (d2 <= r * r) {
