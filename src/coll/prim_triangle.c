@@ -510,8 +510,11 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                       float t_max, bool confirm, coll_prim_hit_t *hit)
+/* confirm: count a contact only when the motion goes deeper than the touch tolerance;
+ * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
+ * one at t_max already; its refinement and confirmation would be wasted). */
+static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                      float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
@@ -573,6 +576,7 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     } else if (!sweep_features(&c, r, t_max, false, &best)) {
         return false;
     }
+    if (before && best.t > 0.0f && !(best.t < t_max)) return false;
 
     hit->t = best.t;
     hit->depth = 0.0f;
@@ -623,10 +627,22 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     return true;
 }
 
+bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                            float t_max, bool confirm, coll_prim_hit_t *hit)
+{
+    return tri_sweep(seg, r, disp, tri, t_max, confirm, false, hit);
+}
+
+bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                                float t_max, coll_prim_hit_t *hit)
+{
+    return tri_sweep(seg, r, disp, tri, t_max, true, true, hit);
+}
+
 bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return coll_prim_tri_sweep_ex(seg, r, disp, tri, t_max, true, hit);
+    return tri_sweep(seg, r, disp, tri, t_max, true, false, hit);
 }
 
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],

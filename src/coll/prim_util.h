@@ -70,4 +70,12 @@ float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b
 bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                        float t_max, bool confirm, coll_prim_hit_t *hit);
 
+/**
+ * coll_capsule_triangle_sweep for a caller that already holds a contact at t_max (a
+ * candidate among several): a contact after t = 0 no sooner than t_max is no hit (it
+ * could not be better). Contacts at t = 0 (overlaps, touches) are reported as before.
+ */
+bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                                float t_max, coll_prim_hit_t *hit);
+
 #endif

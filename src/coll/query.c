@@ -359,7 +359,10 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
-    if (!coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph) || !sweep_better(&ph, sb)) return false;
+    /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
+    bool got = sb->have ? coll_tri_sweep_before(seg, q->r, &q->disp, shape, sb->best, &ph)
+                        : coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph);
+    if (!got || !sweep_better(&ph, sb)) return false;
     fm_vec3_add(&ph.point, &ph.point, w0);
     best_take(sb, &ph, inst, NULL, t);
     return true;
