@@ -256,9 +256,18 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
             if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
         }
         fm_vec3_t q = v3_madd(a, t->n, -ha);
-        if (tri_contains(t, q)) { best = ha * ha; *ps = a; *pt = q; }
-        q = v3_madd(b, t->n, -hb);
-        if (hb * hb < best && tri_contains(t, q)) { best = hb * hb; *ps = b; *pt = q; }
+        bool ina = tri_contains(t, q);
+        if (ina) { best = ha * ha; *ps = a; *pt = q; }
+        if (a.x == b.x && a.y == b.y && a.z == b.z) {
+            if (ina) return best; /* a point over the face: nothing is closer */
+        } else {
+            q = v3_madd(b, t->n, -hb);
+            bool inb = tri_contains(t, q);
+            if (inb && hb * hb < best) { best = hb * hb; *ps = b; *pt = q; }
+            /* Both ends over the face (and on one side of it): so is the whole segment, and
+             * its distance, the height, is least at an end; no edge is closer. */
+            if (ina && inb) return best;
+        }
     }
     if (a.x == b.x && a.y == b.y && a.z == b.z) {
         /* A point (a sphere's centre): the closest point of each edge by projection, far
