@@ -519,6 +519,8 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
+static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
+
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
@@ -567,12 +569,13 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
      * the allowance is the confirm test's own (1e-6, the question it answers after the
      * features: does the motion get within rin?): a capsule resting against or sliding
      * along a wall then stops here instead of after the feature sweep and the refinement. */
-    c.mag = 0.0f;
-    {
-        const fm_vec3_t *m3[6] = { &c.a, &c.b, &c.d, &c.tri.v[0], &c.tri.v[1], &c.tri.v[2] };
-        for (int i = 0; i < 6; i++)
-            c.mag += (fabsf(m3[i]->x) + fabsf(m3[i]->y) + fabsf(m3[i]->z)) * (i == 2 ? t_max : 1.0f);
-    }
+    /* (summed in this order: the culls' allowances, hence the results, depend on its rounding) */
+    c.mag = v3_abs_sum(c.a);
+    c.mag += v3_abs_sum(c.b);
+    c.mag += v3_abs_sum(c.d) * t_max;
+    c.mag += v3_abs_sum(c.tri.v[0]);
+    c.mag += v3_abs_sum(c.tri.v[1]);
+    c.mag += v3_abs_sum(c.tri.v[2]);
     if (confirm ? sweep_separated_k(&c, v3_sub(ps, pt), rin, t_max, 1e-6f) : sweep_separated(&c, v3_sub(ps, pt), r, t_max))
         return false;
 

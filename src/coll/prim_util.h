@@ -8,6 +8,8 @@
 #define COLL_PRIM_UTIL_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "prim.h"
 #include "vec3.h"
 
@@ -16,7 +18,18 @@
 #define PRIM_MAX_COORD 1.0e7f
 /** Finite, and every component within +-PRIM_MAX_COORD (false for NaN too). */
 static inline bool prim_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM_MAX_COORD; }
-static inline bool prim_sane3(fm_vec3_t v) { return prim_sane(v.x) && prim_sane(v.y) && prim_sane(v.z); }
+/* The same test on the bit patterns, without a branch per compare: |x| <= PRIM_MAX_COORD
+ * exactly when the magnitude bits are at most its bits (NaNs and infinities are above). */
+static inline uint32_t prim_over_bits(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return (uint32_t)((u & 0x7fffffffu) > 0x4b189680u); /* 0x4b189680u: 1.0e7f */
+}
+static inline bool prim_sane3(fm_vec3_t v)
+{
+    return (prim_over_bits(v.x) | prim_over_bits(v.y) | prim_over_bits(v.z)) == 0u;
+}
 
 /**
  * Sufficient (cheap) test that a contact goes deeper than the tolerance: the query's
