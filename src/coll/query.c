@@ -620,8 +620,10 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
                             const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
     const coll_gather_tri_t *gt = &g->tris[k];
-    if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
-        gt->lo.y > ghi->y)
+    /* height first: the slide's shortened capsule floats over the floor triangles gathered
+     * for the probe, and a box beside them in height rejects them in one compare */
+    if (gt->hi.y < glo->y || gt->lo.y > ghi->y || gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z ||
+        gt->lo.z > ghi->z)
         return false;
     fm_vec3_sub(w0, &gt->w0, rel);
     shape[0].x = shape[0].y = shape[0].z = 0.0f;
