@@ -320,6 +320,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     float time_left = 1.0f;
     float pushed = 0.0f; /* by slide_off_edge, within the speed limit */
     fm_vec3_t topup = v3(0.0f, 0.0f, 0.0f); /* the last sweep's skin top-up, if nothing moved since */
+    fm_vec3_t untopped = *pos;                /* where that top-up started */
     int slides = b->settings.max_slides;
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
@@ -344,7 +345,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                  * the sweep that led there met nothing sooner): take the top-up back and
                  * slide along this plane too. In a crease the top-up off one wall goes
                  * into the other; pushing out of that one goes into the first again. */
-                *pos = v3_sub(*pos, topup);
+                *pos = untopped;
             } else {
                 float d = hit.depth < c->radius ? hit.depth : c->radius;
                 if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
@@ -364,6 +365,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             }
             float sep = back * -v3_dot(rem, hit.normal) / len;
             topup = sep < c->skin ? v3_scale(hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f)) : v3(0.0f, 0.0f, 0.0f);
+            untopped = *pos;
             *pos = v3_add(*pos, topup);
         }
         /* In the air, a first sweep that met at once what the body already rests against
