@@ -319,6 +319,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     const fm_vec3_t vel0 = vel ? *vel : v3(0.0f, 0.0f, 0.0f);
     float time_left = 1.0f;
     float pushed = 0.0f; /* by slide_off_edge, within the speed limit */
+    fm_vec3_t topup = v3(0.0f, 0.0f, 0.0f); /* the last sweep's skin top-up, if nothing moved since */
+    fm_vec3_t untopped = *pos;                /* where that top-up started */
     int slides = b->settings.max_slides;
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
@@ -338,8 +340,17 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             /* Started inside: step out along the push-out direction first, verified
              * (not swept: a sweep from inside stops at once); a push that would end
              * inside something else ends the slide here instead. */
-            float d = hit.depth < c->radius ? hit.depth : c->radius;
-            if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
+            if (v3_dot(topup, topup) > 0.0f && hit.depth * hit.depth <= v3_dot(topup, topup)) {
+                /* Only the last skin top-up put it there (the place before it was clear:
+                 * the sweep that led there met nothing sooner): take the top-up back and
+                 * slide along this plane too. In a crease the top-up off one wall goes
+                 * into the other; pushing out of that one goes into the first again. */
+                *pos = untopped;
+            } else {
+                float d = hit.depth < c->radius ? hit.depth : c->radius;
+                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
+            }
+            topup = v3(0.0f, 0.0f, 0.0f);
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -353,7 +364,9 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                 back = len * t;
             }
             float sep = back * -v3_dot(rem, hit.normal) / len;
-            if (sep < c->skin) *pos = v3_madd(*pos, hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f));
+            topup = sep < c->skin ? v3_scale(hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f)) : v3(0.0f, 0.0f, 0.0f);
+            untopped = *pos;
+            *pos = v3_add(*pos, topup);
         }
         /* In the air, a first sweep that met at once what the body already rests against
          * (it travelled no more than the skin) is not a slide: the clipped motion still gets its sweep.
@@ -367,6 +380,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             float off = slide_off_edge(c, pos, &hit, c->max_speed * c->dt - v3_len(disp) - pushed);
             if (off >= 0.0f) {
                 pushed += off;
+                topup = v3(0.0f, 0.0f, 0.0f);
                 rem = left;
                 continue;
             }
@@ -376,6 +390,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
+            topup = v3(0.0f, 0.0f, 0.0f);
             rem = v3_scale(v3_reject(left, c->up), 1.0f - stepped);
             time_left *= 1.0f - stepped;
             continue;
@@ -387,6 +402,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         if (known) {
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
             *pos = v3_madd(*pos, n, c->skin * 0.1f);
+            topup = v3(0.0f, 0.0f, 0.0f);
         }
         fm_vec3_t want = v3_scale(disp, time_left);
         rem = clip_planes(want, planes, np);

@@ -80,6 +80,13 @@ bool coll_capsule_body_overlap(const fm_vec3_t seg[2], float r, const coll_body_
 bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                     const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
 
+/**
+ * coll_tri_sweep for a caller that already holds a contact at t_max: a contact after
+ * t = 0 no sooner than t_max may be left unreported (it could not be better).
+ */
+bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                           const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
+
 #ifdef COLL_METHOD_HOOKS
 /*
  * Method hooks, for benchmarks and tests only. The library proper has no runtime switch

@@ -6,6 +6,7 @@
  *        discrete sub-steps); NULL restores the exact analytic sweep.
  */
 #include "prim.h"
+#include "prim_util.h"
 
 #ifdef COLL_METHOD_HOOKS
 static coll_tri_sweep_fn g_sweep_fn;
@@ -25,4 +26,13 @@ bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
     if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
 #endif
     return coll_capsule_triangle_sweep(seg, r, disp, tri, t_max, hit);
+}
+
+bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                           const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+#ifdef COLL_METHOD_HOOKS
+    if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
+#endif
+    return coll_prim_tri_sweep_before(seg, r, disp, tri, t_max, hit);
 }

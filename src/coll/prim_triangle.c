@@ -256,9 +256,18 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
             if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
         }
         fm_vec3_t q = v3_madd(a, t->n, -ha);
-        if (tri_contains(t, q)) { best = ha * ha; *ps = a; *pt = q; }
-        q = v3_madd(b, t->n, -hb);
-        if (hb * hb < best && tri_contains(t, q)) { best = hb * hb; *ps = b; *pt = q; }
+        bool ina = tri_contains(t, q);
+        if (ina) { best = ha * ha; *ps = a; *pt = q; }
+        if (a.x == b.x && a.y == b.y && a.z == b.z) {
+            if (ina) return best; /* a point over the face: nothing is closer */
+        } else {
+            q = v3_madd(b, t->n, -hb);
+            bool inb = tri_contains(t, q);
+            if (inb && hb * hb < best) { best = hb * hb; *ps = b; *pt = q; }
+            /* Both ends over the face (and on one side of it): so is the whole segment, and
+             * its distance, the height, is least at an end; no edge is closer. */
+            if (ina && inb) return best;
+        }
     }
     if (a.x == b.x && a.y == b.y && a.z == b.z) {
         /* A point (a sphere's centre): the closest point of each edge by projection, far
@@ -510,8 +519,13 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                       float t_max, bool confirm, coll_prim_hit_t *hit)
+static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
+
+/* confirm: count a contact only when the motion goes deeper than the touch tolerance;
+ * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
+ * one at t_max already; its refinement and confirmation would be wasted). */
+static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                      float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
@@ -551,14 +565,19 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     /* Cull on the closest pair's direction at the start: the swept capsule stays clear of
      * the triangle along it (most candidates near stairs and corners that the plane cull
      * keeps: the capsule beside a riser or a tread's edge). With confirm, a contact that
-     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices. */
-    c.mag = 0.0f;
-    {
-        const fm_vec3_t *m3[6] = { &c.a, &c.b, &c.d, &c.tri.v[0], &c.tri.v[1], &c.tri.v[2] };
-        for (int i = 0; i < 6; i++)
-            c.mag += (fabsf(m3[i]->x) + fabsf(m3[i]->y) + fabsf(m3[i]->z)) * (i == 2 ? t_max : 1.0f);
-    }
-    if (sweep_separated(&c, v3_sub(ps, pt), confirm ? rin : r, t_max)) return false;
+     * never goes deeper than the touch tolerance is no hit, so clearing rin suffices, and
+     * the allowance is the confirm test's own (1e-6, the question it answers after the
+     * features: does the motion get within rin?): a capsule resting against or sliding
+     * along a wall then stops here instead of after the feature sweep and the refinement. */
+    /* (summed in this order: the culls' allowances, hence the results, depend on its rounding) */
+    c.mag = v3_abs_sum(c.a);
+    c.mag += v3_abs_sum(c.b);
+    c.mag += v3_abs_sum(c.d) * t_max;
+    c.mag += v3_abs_sum(c.tri.v[0]);
+    c.mag += v3_abs_sum(c.tri.v[1]);
+    c.mag += v3_abs_sum(c.tri.v[2]);
+    if (confirm ? sweep_separated_k(&c, v3_sub(ps, pt), rin, t_max, 1e-6f) : sweep_separated(&c, v3_sub(ps, pt), r, t_max))
+        return false;
 
     feat_hit_t best;
     if (d2 <= r * r) {
@@ -569,6 +588,7 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     } else if (!sweep_features(&c, r, t_max, false, &best)) {
         return false;
     }
+    if (before && best.t > 0.0f && !(best.t < t_max)) return false;
 
     hit->t = best.t;
     hit->depth = 0.0f;
@@ -619,10 +639,22 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     return true;
 }
 
+bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                            float t_max, bool confirm, coll_prim_hit_t *hit)
+{
+    return tri_sweep(seg, r, disp, tri, t_max, confirm, false, hit);
+}
+
+bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                                float t_max, coll_prim_hit_t *hit)
+{
+    return tri_sweep(seg, r, disp, tri, t_max, true, true, hit);
+}
+
 bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return coll_prim_tri_sweep_ex(seg, r, disp, tri, t_max, true, hit);
+    return tri_sweep(seg, r, disp, tri, t_max, true, false, hit);
 }
 
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],

@@ -8,6 +8,8 @@
 #define COLL_PRIM_UTIL_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "prim.h"
 #include "vec3.h"
 
@@ -16,7 +18,18 @@
 #define PRIM_MAX_COORD 1.0e7f
 /** Finite, and every component within +-PRIM_MAX_COORD (false for NaN too). */
 static inline bool prim_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM_MAX_COORD; }
-static inline bool prim_sane3(fm_vec3_t v) { return prim_sane(v.x) && prim_sane(v.y) && prim_sane(v.z); }
+/* The same test on the bit patterns, without a branch per compare: |x| <= PRIM_MAX_COORD
+ * exactly when the magnitude bits are at most its bits (NaNs and infinities are above). */
+static inline uint32_t prim_over_bits(float x)
+{
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    return (uint32_t)((u & 0x7fffffffu) > 0x4b189680u); /* 0x4b189680u: 1.0e7f */
+}
+static inline bool prim_sane3(fm_vec3_t v)
+{
+    return (prim_over_bits(v.x) | prim_over_bits(v.y) | prim_over_bits(v.z)) == 0u;
+}
 
 /**
  * Sufficient (cheap) test that a contact goes deeper than the tolerance: the query's
@@ -69,5 +82,13 @@ float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b
  */
 bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                        float t_max, bool confirm, coll_prim_hit_t *hit);
+
+/**
+ * coll_capsule_triangle_sweep for a caller that already holds a contact at t_max (a
+ * candidate among several): a contact after t = 0 no sooner than t_max is no hit (it
+ * could not be better). Contacts at t = 0 (overlaps, touches) are reported as before.
+ */
+bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                                float t_max, coll_prim_hit_t *hit);
 
 #endif

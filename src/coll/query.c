@@ -359,7 +359,10 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
-    if (!coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph) || !sweep_better(&ph, sb)) return false;
+    /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
+    bool got = sb->have ? coll_tri_sweep_before(seg, q->r, &q->disp, shape, sb->best, &ph)
+                        : coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph);
+    if (!got || !sweep_better(&ph, sb)) return false;
     fm_vec3_add(&ph.point, &ph.point, w0);
     best_take(sb, &ph, inst, NULL, t);
     return true;
@@ -617,8 +620,10 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
                             const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
     const coll_gather_tri_t *gt = &g->tris[k];
-    if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
-        gt->lo.y > ghi->y)
+    /* height first: the slide's shortened capsule floats over the floor triangles gathered
+     * for the probe, and a box beside them in height rejects them in one compare */
+    if (gt->hi.y < glo->y || gt->lo.y > ghi->y || gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z ||
+        gt->lo.z > ghi->z)
         return false;
     fm_vec3_sub(w0, &gt->w0, rel);
     shape[0].x = shape[0].y = shape[0].z = 0.0f;
