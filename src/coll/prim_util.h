@@ -9,7 +9,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <string.h>
 #include "prim.h"
 #include "vec3.h"
 
@@ -22,9 +21,9 @@ static inline bool prim_sane(float x) { return x >= -PRIM_MAX_COORD && x <= PRIM
  * exactly when the magnitude bits are at most its bits (NaNs and infinities are above). */
 static inline uint32_t prim_over_bits(float x)
 {
-    uint32_t u;
-    memcpy(&u, &x, sizeof u);
-    return (uint32_t)((u & 0x7fffffffu) > 0x4b189680u); /* 0x4b189680u: 1.0e7f */
+    /* a union, not memcpy: the console build is freestanding, where memcpy is a call */
+    union { float f; uint32_t u; } b = { x };
+    return (uint32_t)((b.u & 0x7fffffffu) > 0x4b189680u); /* 0x4b189680u: 1.0e7f */
 }
 static inline bool prim_sane3(fm_vec3_t v)
 {
