@@ -386,6 +386,11 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             }
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        /* Walking, a first sweep that met a walkable floor in the step zone (the foot of a
+         * ramp) is the body following the floor, not a slide off an obstacle: the motion
+         * along that floor still gets its sweep. Else with max_slides 1 a body stops at the
+         * foot of every ramp, step after step (soak s3 l438: a 5 degree ramp). */
+        if (it == 0 && grounded && v3_dot(n, c->up) >= b->cos_floor_max_angle) slides++;
         if (c->ev) record_hit(c, rem, n, hit.normal);
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
