@@ -1124,6 +1124,86 @@ static void test_one_slide_body_falls_along_wall_it_pushes(void)
     }
 }
 
+/* max_slides 1 walking onto a gentle ramp: a flat floor, then a 5 degree ramp rising along
+ * +x from x = 1, step_height 0 (the sweep capsule's bottom at the foot). The one sweep met
+ * the ramp's foot at once every step (the capsule's bottom ball touches it ahead of the foot
+ * point) and the motion along the ramp was never swept: the body stood at the crease
+ * walking for ever (soak s3 l438). A first sweep that meets a walkable floor in the step
+ * zone is not counted as a slide. At 30, 60 and 120 Hz. */
+static void test_one_slide_body_walks_up_gentle_ramp(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    const float t = tanf(5.0f * DEG);
+    const float xs[3] = {-10.0f, 1.0f, 10.0f}, ys[3] = {0.0f, 0.0f, 9.0f * t};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_profile(xs, ys, 3, -5.0f, 5.0f);
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        cb_body_init(&body, &pos, cb_vec(0.0f, 0.0f, 0.0f));
+        char_body_settings_t s = *char_body_get_settings(&body);
+        s.max_slides = 1;
+        s.step_height = 0.0f;
+        char_body_configure(&body, &s);
+        for (int f = 0; f < 3; f++) CB_STEP(&body, 1.0f / rates[i]);
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        for (int f = 0; f < (int)(1.0f * rates[i]); f++) CB_STEP(&body, 1.0f / rates[i]);
+        char name[96];
+        snprintf(name, sizeof name, "max_slides 1 walking onto a 5 degree ramp at %.0f Hz: x after 1 s at 3 m/s", (double)rates[i]);
+        cb_report(name, pos.x, "m");
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(pos.x > 2.5f); /* 3 m of walk, along a 5 degree ramp for most of it */
+        /* with no step the capsule's bottom ball rests on the ramp: the foot r (1 / cos - 1) above it */
+        float lift = s.radius * (1.0f / cosf(5.0f * DEG) - 1.0f);
+        TEST_ASSERT_FLOAT_WITHIN(0.001f, (pos.x - 1.0f) * t + lift, pos.y);
+    }
+}
+
+/* A tilted up (0.223 0.951 0.216) in a room corner: up leans into the wall at x = 1 and away
+ * from the wall at z = -1, the floor walkable for it (18 degrees off). The body at rest in
+ * the corner with its foot 2.6 mm over the floor, out of the landing's 2 mm contact reach:
+ * the fall along up went into the z wall and the lift back along up into the x wall, so it
+ * hung there in the air at rest for ever (soak s3 l110, the state taken from there). A
+ * landing body whose way down to a floor within twice the contact reach a wall or a steep
+ * face stops is held there, standing. At 30, 60 and 120 Hz. */
+static void test_tilted_up_in_room_corner_stands(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f); /* floor y = 0 */
+        cb_geo_box(cb_vec(1.5f, 3.0f, 0.0f), cb_vec(0.5f, 3.0f, 5.0f), 0.0f);   /* wall face x = 1 */
+        cb_geo_box(cb_vec(0.0f, 3.0f, -1.5f), cb_vec(5.0f, 3.0f, 0.5f), 0.0f);  /* wall face z = -1 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        pos = cb_vec(0.28300f, 1.22475f, -0.40973f); /* the capsule's centre (offset 0) */
+        char_body_init(&body, &pos);
+        char_body_settings_t s = cb_foot_settings();
+        s.radius = 0.5515f;
+        s.height = 2.5716f;
+        s.step_height = 0.5562f;
+        s.floor_snap_distance = 0.5562f;
+        s.floor_max_angle = 44.9f * DEG;
+        s.up = cb_vec(0.223f, 0.951f, 0.216f);
+        s.gravity = 19.5f;
+        s.max_slides = 4;
+        s.center_offset = cb_vec(0.0f, 0.0f, 0.0f);
+        char_body_configure(&body, &s);
+        body.input_velocity = cb_vec(-0.133f, -16.252f, -1.920f);
+        int rest = 0, most = 0;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            fm_vec3_t before = pos;
+            CB_STEP(&body, 1.0f / rates[i]);
+            bool still = fabsf(pos.x - before.x) + fabsf(pos.y - before.y) + fabsf(pos.z - before.z) < 1e-6f;
+            rest = still && !char_body_is_on_floor(&body) ? rest + 1 : 0;
+            if (rest > most) most = rest;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "tilted up at rest in a room corner at %.0f Hz: frames at rest in the air", (double)rates[i]);
+        cb_report(name, (float)most, "");
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(most < 3);
+    }
+}
+
 /* No motion across up is faster than the speed limit (200 m/s), so the velocity can say
  * what the body moved with. Falling at 15 m/s onto the edge of a ledge just past it (the
  * foot point 5 cm beyond, the lower floor 5 m down), the slide pushes the body off the edge
@@ -1213,6 +1293,8 @@ int main(void)
     RUN_TEST(test_landing_on_slope_rest_beyond_snap);
     RUN_TEST(test_resting_on_kerb_edge_over_floor_is_grounded);
     RUN_TEST(test_one_slide_body_falls_along_wall_it_pushes);
+    RUN_TEST(test_one_slide_body_walks_up_gentle_ramp);
+    RUN_TEST(test_tilted_up_in_room_corner_stands);
     RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);
     return UNITY_END();

@@ -385,6 +385,24 @@ static bool resting_beside(const cb_ctx_t *c, fm_vec3_t pos, float gap)
     return nu >= b->cos_floor_max_angle && gap <= c->radius / nu + margin - lift;
 }
 
+/**
+ * Landing, the foot point over a walkable floor just out of the contact reach (the caller
+ * allows up to twice it), while a wall or a steep face stops the capsule going down along up
+ * to it: under a tilted up in a room's corner the fall along up goes into one wall and the
+ * lift back along up into the other, so the body hung at rest in the air 2.6 mm over the
+ * floor for ever (soak s3 l110). It is held there, standing: the snap slides it down as far
+ * as it goes. (Allowed as far as the snap distance it also grounded bodies whose foot was
+ * below a raised floor: 2 new footing failures at 1M frames, seed 1.)
+ */
+static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
+{
+    coll_sweep_hit_t h;
+    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -gap), &h) ||
+        !isfinite(h.t) || !v3_finite(h.normal))
+        return false;
+    return h.t < 1.0f && v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -422,6 +440,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     resting_on(c, *pos, hit.normal))
                     reach = gap;
                 else if (gap > reach && !one_way_deep && resting_beside(c, *pos, gap))
+                    reach = gap;
+                else if (gap > reach && gap <= 2.0f * contact_eps && !one_way_deep && held_over_floor(c, *pos, gap))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};

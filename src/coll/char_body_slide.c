@@ -340,11 +340,14 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             /* Started inside: step out along the push-out direction first, verified
              * (not swept: a sweep from inside stops at once); a push that would end
              * inside something else ends the slide here instead. */
-            if (v3_dot(topup, topup) > 0.0f && hit.depth * hit.depth <= v3_dot(topup, topup)) {
+            if (v3_dot(topup, topup) > 0.0f && hit.depth <= v3_len(topup) + c->min_depth) {
                 /* Only the last skin top-up put it there (the place before it was clear:
                  * the sweep that led there met nothing sooner): take the top-up back and
                  * slide along this plane too. In a crease the top-up off one wall goes
-                 * into the other; pushing out of that one goes into the first again. */
+                 * into the other; pushing out of that one goes into the first again.
+                 * "Clear" is within the sweep's touch tolerance (min_depth): a body resting
+                 * 0.05 mm into an overhang, topped up 1 mm off the floor under it, was
+                 * 1.01 mm in and not recognised (soak s3 l385, a 1.01 mm penetration). */
                 *pos = untopped;
             } else {
                 float d = hit.depth < c->radius ? hit.depth : c->radius;
@@ -386,6 +389,11 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             }
         }
         fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        /* Walking, a first sweep that met a walkable floor in the step zone (the foot of a
+         * ramp) is the body following the floor, not a slide off an obstacle: the motion
+         * along that floor still gets its sweep. Else with max_slides 1 a body stops at the
+         * foot of every ramp, step after step (soak s3 l438: a 5 degree ramp). */
+        if (it == 0 && grounded && v3_dot(n, c->up) >= b->cos_floor_max_angle) slides++;
         if (c->ev) record_hit(c, rem, n, hit.normal);
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
