@@ -149,8 +149,7 @@ static void tri_indices(const coll_mesh_t *m, uint32_t i, uint32_t idx[3])
         idx[0] = t[0]; idx[1] = t[1]; idx[2] = t[2];
     } else if (m->flags & COLL_MESHF_IDXBLK) {
         const uint16_t *t = (const uint16_t *)(const void *)base + 3u * i;
-        const uint32_t *tb = (const uint32_t *)(const void *)((const uint8_t *)m + layout_of_mesh(m).off_tbase);
-        uint32_t b = tb[i >> COLL_MESH_TRI_BLOCK_SHIFT];
+        uint32_t b = coll_mesh_tri_bases(m)[i >> COLL_MESH_TRI_BLOCK_SHIFT];
         idx[0] = b + t[0]; idx[1] = b + t[1]; idx[2] = b + t[2];
     } else {
         const uint32_t *t = (const uint32_t *)(const void *)base + 3u * i;
@@ -223,38 +222,28 @@ static bool tri_kept(const coll_mesh_t *m, const float *verts, uint32_t nverts, 
     return tri_has_area(tri);
 }
 
-/* Smallest vertex index of the next COLL_MESH_TRI_BLOCK kept triangles from input t on, and
- * whether they all lie within 65535 of it (*fits). */
-static uint32_t block_base(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices,
-                           uint32_t ntris, uint32_t t, bool *fits)
+/* Block-based 16-bit indices for a mesh of more than 65535 vertices: each block of
+ * COLL_MESH_TRI_BLOCK kept triangles gets its smallest vertex index as base (into tbase);
+ * false when a block reaches over more than 65535 vertices above it. */
+static bool block_bases(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices,
+                        uint32_t ntris, uint32_t *tbase)
 {
     uint32_t lo = UINT32_MAX, hi = 0, n = 0;
-    for (; t < ntris && n < COLL_MESH_TRI_BLOCK; t++) {
-        if (!tri_kept(m, verts, nverts, indices, t)) continue;
+    for (uint32_t t = 0; t <= ntris; t++) {
+        if (t < ntris && !tri_kept(m, verts, nverts, indices, t)) continue;
+        if (n > 0 && (t == ntris || (n & (COLL_MESH_TRI_BLOCK - 1u)) == 0u)) { /* a block ends */
+            if (hi - lo > 65535u) return false;
+            tbase[(n - 1u) >> COLL_MESH_TRI_BLOCK_SHIFT] = lo;
+            lo = UINT32_MAX;
+            hi = 0;
+        }
+        if (t == ntris) break;
         for (int k = 0; k < 3; k++) {
             uint32_t v = indices[3u * t + k];
             if (v < lo) lo = v;
             if (v > hi) hi = v;
         }
         n++;
-    }
-    *fits = n == 0 || hi - lo <= 65535u;
-    return n ? lo : 0u;
-}
-
-/* Block-based 16-bit indices fit this mesh (more than 65535 vertices): every block of kept
- * triangles reaches over at most 65535 vertices above its smallest index. */
-static bool blocks_fit(const coll_mesh_t *m, const float *verts, uint32_t nverts, const uint32_t *indices,
-                       uint32_t ntris)
-{
-    uint32_t t = 0;
-    while (t < ntris) {
-        uint32_t n = 0, start = t;
-        bool fits;
-        block_base(m, verts, nverts, indices, ntris, t, &fits);
-        if (!fits) return false;
-        for (; t < ntris && n < COLL_MESH_TRI_BLOCK; t++) n += tri_kept(m, verts, nverts, indices, t);
-        if (t == start) break;
     }
     return true;
 }
@@ -564,20 +553,24 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
      * every block's triangles lie within 65535 vertices of it (meshes as modelled and
      * exported do: neighbouring triangles share nearby vertices), else 32-bit ones. */
     uint32_t nt_kept = 0;
+    const uint32_t *tbase = NULL;
     if (!(flags & COLL_MESHF_IDX16)) {
         for (uint32_t t = 0; t < ntris; t++) nt_kept += tri_kept(m, verts, nverts, indices, t);
-        if (nt_kept > 0u && blocks_fit(m, verts, nverts, indices, ntris)) {
+        /* the bases go where that layout puts them, inside the 32-bit one's indices (which
+         * overwrite them when a block does not fit) */
+        coll_mesh_layout_t lb = coll_mesh_layout_of(flags | COLL_MESHF_IDXBLK, nverts, nt_kept, 0, 0);
+        if (lb.off_cells > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
+        uint32_t *tb = (uint32_t *)(void *)(base + lb.off_tbase);
+        if (nt_kept > 0u && block_bases(m, verts, nverts, indices, ntris, tb)) {
             flags |= COLL_MESHF_IDXBLK;
             m->flags = flags;
+            tbase = tb;
         }
     }
-    coll_mesh_layout_t lb = coll_mesh_layout_of(flags, nverts, nt_kept, 0, 0);
-    uint32_t *tbase = (uint32_t *)(void *)(base + lb.off_tbase);
-    if ((flags & COLL_MESHF_IDXBLK) && lb.off_cells > buf_size) return COLL_ERR_BUFFER_TOO_SMALL;
 
     /* Triangles: usable ones compacted in input order; bounds and mean size from the
      * stored (possibly quantized) vertices. */
-    uint32_t nt = 0, bbase = 0;
+    uint32_t nt = 0;
     float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
     float extent_sum = 0.0f;
     size_t stride = (flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 6u : 12u;
@@ -591,12 +584,8 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
         if (flags & COLL_MESHF_IDX16) {
             uint16_t *d = (uint16_t *)(void *)dst;
             d[0] = (uint16_t)ix[0]; d[1] = (uint16_t)ix[1]; d[2] = (uint16_t)ix[2];
-        } else if (flags & COLL_MESHF_IDXBLK) {
-            if ((nt & (COLL_MESH_TRI_BLOCK - 1u)) == 0u) {
-                bool fits;
-                bbase = block_base(m, verts, nverts, indices, ntris, t, &fits);
-                tbase[nt >> COLL_MESH_TRI_BLOCK_SHIFT] = bbase;
-            }
+        } else if (tbase) {
+            uint32_t bbase = tbase[nt >> COLL_MESH_TRI_BLOCK_SHIFT];
             uint16_t *d = (uint16_t *)(void *)dst;
             d[0] = (uint16_t)(ix[0] - bbase); d[1] = (uint16_t)(ix[1] - bbase); d[2] = (uint16_t)(ix[2] - bbase);
         } else {

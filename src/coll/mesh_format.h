@@ -183,6 +183,13 @@ static inline const uint32_t *coll_mesh_cells(const coll_mesh_t *m)
     return (const uint32_t *)(const void *)((const uint8_t *)m + m->off_cells);
 }
 
+/** The block bases of a COLL_MESHF_IDXBLK mesh (they follow the indices). */
+static inline const uint32_t *coll_mesh_tri_bases(const coll_mesh_t *m)
+{
+    coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, 0u, 0u);
+    return (const uint32_t *)(const void *)((const uint8_t *)m + l.off_tbase);
+}
+
 /** Local-space vertices of triangle i (i < ntris, unchecked). */
 void coll_mesh_tri_local(const coll_mesh_t *m, uint32_t i, fm_vec3_t out[3]);
 
@@ -207,9 +214,7 @@ static inline void coll_mesh_view_init(coll_mesh_view_t *v, const coll_mesh_t *m
     v->tris = b + m->off_tris;
     v->refs = b + m->off_refs;
     v->cells = (const uint32_t *)(const void *)(b + m->off_cells);
-    /* the tri bases follow the indices (coll_mesh_layout_of) */
-    uint64_t tb = m->off_tris + (((uint64_t)m->ntris * 6u + 7u) & ~(uint64_t)7u);
-    v->tbase = (const uint32_t *)(const void *)(b + tb);
+    v->tbase = (m->flags & COLL_MESHF_IDXBLK) ? coll_mesh_tri_bases(m) : NULL;
     v->flags = m->flags;
     for (int a = 0; a < 3; a++) { v->qo[a] = m->qorigin[a]; v->qs[a] = m->qscale[a]; }
 }
