@@ -244,6 +244,7 @@ static bool tri_contains(const tri_t *t, fm_vec3_t q)
 static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt,
                                 int *edge, float *eu, float *ev)
 {
+    const bool point = a.x == b.x && a.y == b.y && a.z == b.z; /* a sphere's centre */
     float best = 3.0e38f;
     *edge = -1;
     if (t->has_face) {
@@ -258,7 +259,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
         fm_vec3_t q = v3_madd(a, t->n, -ha);
         bool ina = tri_contains(t, q);
         if (ina) { best = ha * ha; *ps = a; *pt = q; }
-        if (a.x == b.x && a.y == b.y && a.z == b.z) {
+        if (point) {
             if (ina) return best; /* a point over the face: nothing is closer */
         } else {
             q = v3_madd(b, t->n, -hb);
@@ -269,7 +270,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
             if (ina && inb) return best;
         }
     }
-    if (a.x == b.x && a.y == b.y && a.z == b.z) {
+    if (point) {
         /* A point (a sphere's centre): the closest point of each edge by projection, far
          * cheaper than the segment-segment closest pair it would otherwise reduce to. */
         for (int i = 0; i < 3; i++) {
