@@ -523,12 +523,9 @@ static bool reachable(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to, bool deep
 static bool sinks_foot(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to)
 {
     if (!(v3_dot(v3_sub(from, to), c->up) > c->contact_eps)) return false;
-    const float above = c->step + c->radius;
-    coll_ray_hit_t h;
-    if (!cb_ray(c, v3_madd(cb_foot(c, to), c->up, above), v3_scale(c->up, -1.0f), above, &h) ||
-        !isfinite(h.distance) || !v3_finite(h.normal))
-        return false;
-    return v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle && above - h.distance > c->contact_eps;
+    fm_vec3_t foot = cb_foot(c, to);
+    float h;
+    return floor_height(c, foot, c->step + c->radius, 0.0f, foot, &h) && h > c->contact_eps;
 }
 
 /**
@@ -606,12 +603,11 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
  * above the foot (swept). *p is moved onto that floor. */
 static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
 {
-    const float above = c->radius + c->step, step_eps = cb_len_tol(c, CB_STEP_EPS);
-    coll_ray_hit_t h;
-    if (!cb_ray(c, v3_madd(cb_foot(c, *p), c->up, above), v3_scale(c->up, -1.0f), above + c->snap, &h) ||
-        !isfinite(h.distance) || !v3_finite(h.normal) || v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle)
-        return false;
-    float gap = h.distance - above;
+    const float step_eps = cb_len_tol(c, CB_STEP_EPS);
+    fm_vec3_t foot = cb_foot(c, *p);
+    float rise;
+    if (!floor_height(c, foot, c->radius + c->step, c->snap, foot, &rise)) return false;
+    float gap = -rise;
     if (gap < -step_eps) {
         fm_vec3_t q = *p;
         if (coll_cb_move_swept(c, &q, v3_scale(c->up, -gap)) * -gap < -gap - step_eps) return false;
