@@ -11,6 +11,7 @@
 #include "core_ref.h"
 #include "coll/scene.h"
 #include "mesh_format.h"
+#include "gather.h"
 #include "prim.h"
 #include <math.h>
 #include <stdio.h>
@@ -966,6 +967,71 @@ static void test_dedup_overflow_falls_back_exactly(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)best, rh.distance);
 }
 
+/* A step's gathered sweep that reaches outside the gathered box (the crack rule's roll) is
+ * answered from the gathered triangles when it meets one before it leaves the box (nothing
+ * outside can be met sooner), and from the scene otherwise: the same hits as the scene's. */
+static void test_gathered_sweep_leaving_the_box(void)
+{
+    /* walls (quads across x) at x = 0.8 and x = 3, and one at x = -3 */
+    const float wx[3] = { 0.8f, 3.0f, -3.0f };
+    uint32_t nv = 0, nt = 0;
+    for (int w = 0; w < 3; w++) {
+        for (int k = 0; k < 4; k++) {
+            g_verts[3 * nv + 0] = wx[w];
+            g_verts[3 * nv + 1] = (k & 1) ? 2.0f : -2.0f;
+            g_verts[3 * nv + 2] = (k & 2) ? 2.0f : -2.0f;
+            nv++;
+        }
+        uint32_t b = nv - 4;
+        uint32_t q[6] = { b, b + 1, b + 3, b, b + 3, b + 2 };
+        for (int k = 0; k < 6; k++) g_idx[3 * nt + k] = q[k];
+        nt += 2;
+    }
+    coll_mesh_build_opts_t o = { 1.0f, 0 };
+    const coll_mesh_t *m = build_mesh(0, nv, nt, &o);
+    coll_scene_t s;
+    coll_scene_init(&s);
+    coll_query_stats_t st = {0};
+    coll_scene_set_stats(&s, &st);
+    coll_mesh_instance_t a;
+    place(&a, m, 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(&s, &a);
+    static coll_gather_t g;
+    coll_gather_begin(&g, &s, (fm_vec3_t){{ -1, -1, -1 }}, (fm_vec3_t){{ 1, 1, 1 }}, 0xFF, COLL_TYPE_ALL);
+    TEST_ASSERT_EQUAL_UINT16(2, g.ntris);
+    const fm_vec3_t c = {{ 0, 0, 0 }};
+    coll_sweep_hit_t h, want;
+    /* +x: the wall at 0.8 is met at t = 0.1375, inside the gathered box */
+    fm_vec3_t d = {{ 4, 0, 0 }};
+    uint32_t q0 = st.queries;
+    TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &h));
+    TEST_ASSERT_EQUAL_UINT32(1, st.gather_queries);
+    TEST_ASSERT_EQUAL_UINT32(0, st.gather_misses);
+    TEST_ASSERT_EQUAL_UINT32(q0, st.queries);
+    TEST_ASSERT_TRUE(coll_capsule_sweep(&s, c, UP, 0.25f, 0.0f, d, 0xFF, COLL_TYPE_ALL, &want));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, want.t, h.t);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.1375f, h.t);
+    TEST_ASSERT_EQUAL_INT32(want.triangle, h.triangle);
+    /* -x: nothing within the box; the wall at -3 lies beyond it: the scene answers */
+    d = (fm_vec3_t){{ -4, 0, 0 }};
+    TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &h));
+    TEST_ASSERT_EQUAL_UINT32(1, st.gather_misses);
+    TEST_ASSERT_TRUE(coll_capsule_sweep(&s, c, UP, 0.25f, 0.0f, d, 0xFF, COLL_TYPE_ALL, &want));
+    TEST_ASSERT_EQUAL_FLOAT(want.t, h.t);
+    TEST_ASSERT_EQUAL_INT32(want.triangle, h.triangle);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 2.75f / 4.0f, h.t);
+    /* across the walls (along z), out of the box: no hit anywhere */
+    d = (fm_vec3_t){{ 0, 0, 4 }};
+    TEST_ASSERT_FALSE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &h));
+    TEST_ASSERT_EQUAL_UINT32(2, st.gather_misses);
+    /* a start outside the box: the scene */
+    fm_vec3_t far = {{ 2.6f, 0, 0 }};
+    d = (fm_vec3_t){{ 0.2f, 0, 0 }};
+    TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, far, UP, 0.25f, 0.0f, d, &h));
+    TEST_ASSERT_EQUAL_UINT32(3, st.gather_misses);
+    TEST_ASSERT_FLOAT_WITHIN(1e-5f, 0.75f, h.t);
+}
+
 /* A level 5 km from the origin: hits accurate to well under 1 mm. */
 static void test_precision_far_from_origin(void)
 {
@@ -1231,5 +1297,6 @@ int main(void)
     RUN_TEST(test_random_raycasts_match_reference);
     RUN_TEST(test_random_capsule_sweeps_match_reference);
     RUN_TEST(test_grid_kinds_covered);
+    RUN_TEST(test_gathered_sweep_leaving_the_box);
     return UNITY_END();
 }

@@ -657,6 +657,40 @@ bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir
     return ray_result(&rb, &origin, hit);
 }
 
+/* The query box lo..hi (relative to the query origin at rel from the gather's) lies inside
+ * the gathered box (gather_covers without its counters). */
+CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
+{
+    for (int a = 0; a < 3; a++)
+        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
+    return true;
+}
+
+/* The largest fraction t of a capsule sweep (rel: its centre from the gather's origin) whose
+ * swept box (swept_box(q, t)) lies inside the gathered box, verified with that box itself;
+ * -1 when not even the start's does. A triangle the sweep meets at or before t meets that
+ * box (what lets the scene sweep shrink its box to the best hit), so it was gathered. */
+static float gather_covered_part(const coll_gather_t *g, const fm_vec3_t *rel, const capsule_q_t *q)
+{
+    if (!g->valid) return -1.0f;
+    fm_vec3_t lo, hi;
+    swept_box(q, 1.0f, &lo, &hi);
+    if (gather_inside(g, rel, &lo, &hi)) return 1.0f;
+    swept_box(q, 0.0f, &lo, &hi);
+    float t = 1.0f;
+    for (int a = 0; a < 3; a++) {
+        if (!(lo.v[a] + rel->v[a] >= g->lo.v[a]) || !(hi.v[a] + rel->v[a] <= g->hi.v[a])) return -1.0f;
+        float d = q->disp.v[a];
+        float room = d > 0.0f ? g->hi.v[a] - (hi.v[a] + rel->v[a]) : (lo.v[a] + rel->v[a]) - g->lo.v[a];
+        float ta = d != 0.0f ? room / fabsf(d) : 1.0f;
+        if (ta < t) t = ta;
+    }
+    t *= 0.999f; /* below the rounding of the division; the box check below decides */
+    if (!(t > 0.0f)) return 0.0f;
+    swept_box(q, t, &lo, &hi);
+    return gather_inside(g, rel, &lo, &hi) ? t : 0.0f;
+}
+
 bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
 {
@@ -667,9 +701,15 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
     fm_vec3_t rel, lo, hi;
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 1.0f, &lo, &hi);
-    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+    /* A sweep reaching outside the gathered box (the crack rule's roll) is still answered
+     * from the gathered triangles when its hit comes before it leaves the box (covered):
+     * nothing that was not gathered can be met sooner. */
+    float covered = (g->types & COLL_TYPE_MESH) ? gather_covered_part(g, &rel, &q) : -1.0f;
+    if (!(covered >= 0.0f)) {
+        if (g->types & COLL_TYPE_MESH) STATS_ADD(g->scene, gather_misses);
         return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
                                   g->types, hit);
+    }
     best_hit_t sb;
     best_init(&sb, 1.0f);
     fm_vec3_t glo, ghi;
@@ -683,6 +723,13 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
             gather_box(&rel, &lo, &hi, &glo, &ghi);
         }
     }
+    if (covered < 1.0f && !(sb.have && sb.best <= covered)) {
+        /* no hit within the covered part: the rest may meet what was not gathered */
+        STATS_ADD(g->scene, gather_misses);
+        return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
+                                  g->types, hit);
+    }
+    STATS_ADD(g->scene, gather_queries);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
 }
