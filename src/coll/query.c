@@ -666,20 +666,38 @@ CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, con
     return true;
 }
 
-/* The largest fraction t of a capsule sweep (rel: its centre from the gather's origin) whose
- * swept box (swept_box(q, t)) lies inside the gathered box, verified with that box itself;
- * -1 when not even the start's does. A triangle the sweep meets at or before t meets that
- * box (what lets the scene sweep shrink its box to the best hit), so it was gathered. */
+/* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;
+ * lo..hi: swept_box(q, covered)) into sb. part: only those its swept box up to `covered`
+ * meets (a sweep leaving the gathered box: nothing else can be met by then); else every
+ * one its whole box meets (covered 1). */
+CAND_INLINE void gather_sweep_scan(const coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
+                                   fm_vec3_t lo, fm_vec3_t hi, const bool part, float covered, best_hit_t *sb)
+{
+    fm_vec3_t glo, ghi;
+    gather_box(rel, &lo, &hi, &glo, &ghi);
+    for (uint16_t k = 0; k < g->ntris; k++) {
+        fm_vec3_t w0, shape[3];
+        if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
+        fm_vec3_t u = one_way_up(g->tris[k].inst);
+        if (sweep_tri(q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, sb)) {
+            swept_box(q, part ? f_min(sb->best, covered) : sb->best, &lo, &hi); /* shrink the sweep */
+            gather_box(rel, &lo, &hi, &glo, &ghi);
+        }
+    }
+}
+
+/* A sweep whose box reaches outside the gathered box (the crack rule's roll): the largest
+ * fraction t of it whose swept box (swept_box(q, t)) still lies inside, verified with that
+ * box itself; -1 when not even the start's does. A triangle the sweep meets at or before t
+ * meets that box (what lets the scene sweep shrink its box to the best hit), so it was
+ * gathered: a gathered hit no later than t is the sweep's hit. */
 static float gather_covered_part(const coll_gather_t *g, const fm_vec3_t *rel, const capsule_q_t *q)
 {
-    if (!g->valid) return -1.0f;
     fm_vec3_t lo, hi;
-    swept_box(q, 1.0f, &lo, &hi);
-    if (gather_inside(g, rel, &lo, &hi)) return 1.0f;
     swept_box(q, 0.0f, &lo, &hi);
+    if (!gather_inside(g, rel, &lo, &hi)) return -1.0f;
     float t = 1.0f;
     for (int a = 0; a < 3; a++) {
-        if (!(lo.v[a] + rel->v[a] >= g->lo.v[a]) || !(hi.v[a] + rel->v[a] <= g->hi.v[a])) return -1.0f;
         float d = q->disp.v[a];
         float room = d > 0.0f ? g->hi.v[a] - (hi.v[a] + rel->v[a]) : (lo.v[a] + rel->v[a]) - g->lo.v[a];
         float ta = d != 0.0f ? room / fabsf(d) : 1.0f;
@@ -701,33 +719,29 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
     fm_vec3_t rel, lo, hi;
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 1.0f, &lo, &hi);
-    /* A sweep reaching outside the gathered box (the crack rule's roll) is still answered
-     * from the gathered triangles when its hit comes before it leaves the box (covered):
-     * nothing that was not gathered can be met sooner. */
-    float covered = (g->types & COLL_TYPE_MESH) ? gather_covered_part(g, &rel, &q) : -1.0f;
-    if (!(covered >= 0.0f)) {
-        if (g->types & COLL_TYPE_MESH) STATS_ADD(g->scene, gather_misses);
-        return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
-                                  g->types, hit);
-    }
     best_hit_t sb;
     best_init(&sb, 1.0f);
-    fm_vec3_t glo, ghi;
-    gather_box(&rel, &lo, &hi, &glo, &ghi);
-    for (uint16_t k = 0; k < g->ntris; k++) {
-        fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
-        fm_vec3_t u = one_way_up(g->tris[k].inst);
-        if (sweep_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &sb)) {
-            swept_box(&q, sb.best, &lo, &hi); /* shrink the sweep */
-            gather_box(&rel, &lo, &hi, &glo, &ghi);
-        }
-    }
-    if (covered < 1.0f && !(sb.have && sb.best <= covered)) {
-        /* no hit within the covered part: the rest may meet what was not gathered */
-        STATS_ADD(g->scene, gather_misses);
+    if (!(g->types & COLL_TYPE_MESH)) {
         return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
                                   g->types, hit);
+    } else if (g->valid && gather_inside(g, &rel, &lo, &hi)) {
+        gather_sweep_scan(g, &q, &rel, lo, hi, false, 1.0f, &sb);
+    } else {
+        /* Reaching outside the gathered box, the gathered triangles still answer when their
+         * hit comes before the sweep leaves it; else the scene does. (Not tried when it
+         * leaves within its first eighth: a hit that soon is rare, and the scan is then
+         * paid on top of the scene's.) */
+        float covered = g->valid ? gather_covered_part(g, &rel, &q) : -1.0f;
+        if (!(covered >= 0.125f)) covered = -1.0f;
+        if (covered >= 0.0f) {
+            swept_box(&q, covered, &lo, &hi);
+            gather_sweep_scan(g, &q, &rel, lo, hi, true, covered, &sb);
+        }
+        if (!(covered >= 0.0f) || !(sb.have && sb.best <= covered)) {
+            if (g->valid) STATS_ADD(g->scene, gather_misses);
+            return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
+                                      g->types, hit);
+        }
     }
     STATS_ADD(g->scene, gather_queries);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
