@@ -1261,6 +1261,28 @@ static void test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit(void)
     TEST_ASSERT_FLOAT_WITHIN(0.001f, -0.28f, pos.y);     /* went on down */
 }
 
+/* ---- cost: what a step asks of the scene (issue 14) ---- */
+
+/* Walking along a crack, the crack rule's roll across it reaches outside the step's gathered
+ * box, but meets the crack's far edge at once: the gathered triangles answer it, no query
+ * of the walk runs on the scene. */
+static void test_crack_walk_queries_answered_by_the_gather(void)
+{
+    cb_world_reset();
+    build_crack(0.4f);
+    coll_query_stats_t st = {0};
+    coll_scene_set_stats(&cb_world.scene, &st);
+    cb_body_init(&body, &pos, cb_vec(-5.0f, 0.0f, 0.0f));
+    body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+    for (int i = 0; i < 60; i++) CB_STEP(&body, 1.0f / 60.0f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.x > -2.5f);
+    TEST_ASSERT_EQUAL_UINT32(60, st.gathers);
+    TEST_ASSERT_EQUAL_UINT32(0, st.gather_overflows);
+    TEST_ASSERT_EQUAL_UINT32(0, st.gather_misses);
+    TEST_ASSERT_EQUAL_UINT32(0, st.queries);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -1297,5 +1319,6 @@ int main(void)
     RUN_TEST(test_tilted_up_in_room_corner_stands);
     RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);
+    RUN_TEST(test_crack_walk_queries_answered_by_the_gather);
     return UNITY_END();
 }
