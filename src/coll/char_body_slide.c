@@ -229,8 +229,13 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
             return false;
         tread -= base;
         if (!(tread > eps) || tread > c->step + eps) return false;
-    } else if (floor_h > rise && coll_cb_move_swept(c, &p, v3_scale(c->up, floor_h - rise)) < 1.0f) {
-        return false;
+    } else if (floor_h > rise) {
+        /* Up onto the tread. Within the way the lift just came down it needs no sweep: the
+         * down sweep met nothing on it (nothing closer than the touch tolerance: it would
+         * have stopped there), so going back up it meets nothing either. */
+        fm_vec3_t d = v3_scale(c->up, floor_h - rise);
+        if (travel > 0.0f && floor_h - rise <= travel) p = v3_add(p, d);
+        else if (coll_cb_move_swept(c, &p, d) < 1.0f) return false;
     }
     if (c->ev) c->ev->step += v3_dot(v3_sub(p, *pos), c->up);
     *pos = p;
