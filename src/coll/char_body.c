@@ -386,8 +386,8 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
 
     /* The step's candidate triangles, gathered once where it will look: the full capsule
      * grown by this step's reach of motion (the platform's carry included), a stair step's
-     * lift above and the floor probe below. Queries beyond it (the crack rule's ball, an
-     * unstick) go to the scene. */
+     * lift above and the floor probe below. Queries beyond it (an unstick; the crack rule's
+     * roll, unless what it meets lies inside) go to the scene. */
     fm_vec3_t carry = v3(0.0f, 0.0f, 0.0f);
     bool carried = was_grounded && s->follow_floor && coll_cb_carry_delta(&c, &carry);
     coll_gather_t gather;

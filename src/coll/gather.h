@@ -9,7 +9,9 @@
  * exact shape and the first vertex's offset from the gather's origin), in a fixed buffer;
  * the queries below then scan that buffer. A query whose box is not inside the gathered box,
  * or any query after the buffer overflowed, goes to the scene query instead: results are
- * the same either way (exact nearest hits, all candidates).
+ * the same either way (exact nearest hits, all candidates). A sweep that leaves the box (the
+ * crack rule's roll) is still answered by the gathered triangles when one of them is met
+ * before its swept box leaves the gathered one: nothing else can be met sooner.
  */
 #ifndef COLL_GATHER_H
 #define COLL_GATHER_H
