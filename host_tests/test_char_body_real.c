@@ -285,6 +285,62 @@ static void test_crack_beside_wall(void)
     TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
 }
 
+/* ---- 2a'. a crack between tiles under a steep face leaning over it ---- */
+
+/* Tiles 10 cm high with a 2 cm crack along x over a base floor, and beside the crack a
+ * steep face (80 degrees, a rock's or a slab's side) whose foot is 30 cm above the tiles,
+ * leaning away from the crack as it rises (soak s1 l184, l257, s3 l318, l400: modular
+ * tiles under a rock). The crack rule drops the capsule's bottom ball from the sweep
+ * capsule's; on its way down it grazes the face first. Rolled down the face's tangent by at
+ * most half a radius of descent it met nothing, the rule gave up and the body stood on the
+ * floor in the crack, 10 cm inside both tiles. The ball slides down past the face: it rests
+ * on the tiles' edges. */
+static void test_crack_under_leaning_face(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    /* where the dropped ball's centre meets the face: 0.15-0.25 m above its rest, more
+     * than half a radius (the drop starts 0.65 m above the tiles) */
+    static const float meet[3] = {0.6f, 0.65f, 0.7f};
+    const float r = 0.274f, top = 0.1f, g = 0.02f, lean = 10.0f * DEG, yb = top + 0.3f;
+    float worst = top;
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 3; k++) {
+            const float zb = r / cosf(lean) - (meet[k] - yb) * tanf(lean), zt = zb + (3.0f - yb) * tanf(lean);
+            cb_world_reset();
+            cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+            cb_geo_box(cb_vec(0.0f, 0.5f * top, -0.5f * g - 1.0f), cb_vec(4.0f, 0.5f * top, 1.0f), 0.0f);
+            cb_geo_box(cb_vec(0.0f, 0.5f * top, 0.5f * g + 1.0f), cb_vec(4.0f, 0.5f * top, 1.0f), 0.0f);
+            cb_geo_quad(cb_vec(-4.0f, yb, zb), cb_vec(4.0f, yb, zb), cb_vec(4.0f, 3.0f, zt), cb_vec(-4.0f, 3.0f, zt));
+            TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+            pos = cb_vec(-2.5f, top, 0.0f);
+            char_body_init(&body, &pos);
+            char_body_settings_t s = cb_foot_settings();
+            s.radius = r;
+            s.height = 2.8112f;
+            s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+            s.step_height = 0.376f;
+            s.floor_snap_distance = 0.45f;
+            s.floor_max_angle = 22.4f * DEG;
+            s.max_slides = 3;
+            char_body_configure(&body, &s);
+            float lowest = top;
+            for (int f = 0; f < (int)(0.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            body.input_velocity = cb_vec(2.0f, 0.0f, 0.0f);
+            for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            if (lowest < worst) worst = lowest;
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            TEST_ASSERT_TRUE(pos.x > -0.5f);
+        }
+    cb_report("crack under a leaning face: lowest grounded foot (tile tops 0.10)", worst, "m");
+    TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -1272,6 +1328,7 @@ int main(void)
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
     RUN_TEST(test_crack_beside_wall);
+    RUN_TEST(test_crack_under_leaning_face);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
