@@ -668,6 +668,61 @@ static void test_steep_slab_low_edge(void)
         }
 }
 
+/* The same low edge on a collider body: a box slab 8 cm thick leaning at 50-60 degrees
+ * (soak s1 l351: r 0.13, step 1.07, the slab a box body, 41.9 degrees walkable). The
+ * floor probe's ray meets the slab's face above the foot; the ray continued past it to
+ * find the floor under the face starts inside the solid box, meets it at once, and the
+ * body stood on the face with its foot 0.11 m in the floor. */
+static void steep_body_slab_push(float deg, float lip, float hz, fm_vec3_t input)
+{
+    const float dt = 1.0f / hz, a = deg * DEG, len = 3.0f, th = 0.08f;
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* the box's low, lower corner at (0, lip): its centre is that corner's offset back */
+    const float cx = 0.5f * len * cosf(a) - 0.5f * th * sinf(a), cy = lip + 0.5f * len * sinf(a) + 0.5f * th * cosf(a);
+    coll_body_t *slab = cb_world_add_box_body(cb_vec(cx, cy, 0.0f), cb_vec(0.5f * len, 0.5f * th, 5.0f), 2);
+    TEST_ASSERT_NOT_NULL(slab);
+    slab->xf.rot = (fm_quat_t){{0.0f, 0.0f, sinf(0.5f * a), cosf(0.5f * a)}};
+    pos = cb_vec(-1.5f, 0.0f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = 0.1253f;
+    s.height = 2.5048f;
+    s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+    s.step_height = 1.066f;
+    s.floor_snap_distance = 1.066f;
+    s.floor_max_angle = 41.9f * DEG;
+    s.max_slides = 2;
+    s.coll_types = 0xff;
+    char_body_configure(&body, &s);
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    char name[112];
+    snprintf(name, sizeof name, "steep body slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
+             (double)lip, (double)hz);
+    cb_report(name, lowest, "m");
+    TEST_ASSERT_TRUE(lowest > -0.001f);
+}
+
+static void test_steep_body_slab_low_edge(void)
+{
+    static const float degs[2] = {50.0f, 60.0f};
+    static const float lips[2] = {0.0f, 0.02f};
+    for (int d = 0; d < 2; d++)
+        for (int l = 0; l < 2; l++) {
+            steep_body_slab_push(degs[d], lips[l], 30.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_body_slab_push(degs[d], lips[l], 120.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_body_slab_push(degs[d], lips[l], 60.0f, cb_vec(3.0f, 0.0f, 2.0f));
+        }
+}
+
 /* The game teleports a body under an overhang lower than it (soak seed 1 levels 53, 68,
  * 255, 283, 293, 411, 453 at 1M frames; seed 2 level 67): the head is in the slab. The
  * recovery pushed the capsule down out of the slab, which the shortened sweep capsule
@@ -1336,6 +1391,7 @@ int main(void)
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
+    RUN_TEST(test_steep_body_slab_low_edge);
     RUN_TEST(test_teleport_under_low_overhang);
     RUN_TEST(test_teleport_into_raised_floor_under_overhang);
     RUN_TEST(test_low_ledge_blocks);

@@ -443,6 +443,28 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
     return h.t < 1.0f && v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle;
 }
 
+/**
+ * The steep face found above the foot belongs to a collider body (a slab, a box) and the ray
+ * continued past the face starts inside it: a ray from inside a solid meets it at once, so
+ * the loop that looks past the face for a floor advanced a skin at a time and gave up, and
+ * the body stood on the face with its foot 0.11 m in the floor under the slab's low edge
+ * (soak s1 l351: r 0.13, step 1.07). Looked for from the foot instead, along up, as far as
+ * the face: a walkable floor the foot is under (either face of a triangle) is the one to
+ * stand on (lifted onto it, as in the loop).
+ */
+static void floor_over_foot(const cb_ctx_t *c, fm_vec3_t pos, float height, support_t *s)
+{
+    const float step_eps = cb_len_tol(c, CB_STEP_EPS);
+    coll_ray_hit_t h;
+    if (!(height > step_eps) ||
+        !cb_ray(c, cb_foot(c, pos), c->up, height, &h) || !v3_finite(h.normal) || !v3_finite(h.point) ||
+        !isfinite(h.distance) || !(h.distance > step_eps))
+        return;
+    fm_vec3_t n = v3_scale(h.normal, -1.0f); /* met from below: turned to face up */
+    if (v3_dot(n, c->up) < c->body->cos_floor_max_angle) return;
+    *s = (support_t){true, false, -h.distance, n, h.point, h.id, h.instance};
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -518,6 +540,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (!cb_ray(c, v3_madd(origin, up, -past), v3_scale(up, -1.0f), above - past, &under) ||
                         !v3_finite(under.normal) || !v3_finite(under.point) || !isfinite(under.distance))
                         break;
+                    if (!(under.distance > 0.0f) && under.triangle < 0) {
+                        floor_over_foot(c, *pos, -gap, &s); /* inside a collider body's slab */
+                        break;
+                    }
                     float g2 = under.distance + past - above;
                     if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
                         if (g2 < -step_eps)
