@@ -444,6 +444,21 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 }
 
 /**
+ * The foot ray found a face too steep to stand on, nearly along up (within 60 degrees: a
+ * wall, a tile's side), within reach. Under a tilted up the ray through a crack between
+ * tiles meets a tile's side, and the body stood "steep" on it with its foot 14-85 mm
+ * below the tile tops around it (soak s2 l117, l356, l375, s3 l369). Where the crack rule
+ * holds the ball higher (on the edges of the gap), the body stands there instead.
+ */
+static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
+{
+    if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
+    support_t w = {0};
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
+        *s = w;
+}
+
+/**
  * The steep face found above the foot belongs to a collider body (a slab, a box) and the ray
  * continued past the face starts inside it: a ray from inside a solid meets it at once, so
  * the loop that looks past the face for a floor advanced a skin at a time and gave up, and
@@ -555,6 +570,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             }
         }
         if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s);
+        else if (s.steep) wall_under_crack(c, *pos, reach, &hit, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
