@@ -289,6 +289,165 @@ static void test_crack_beside_wall(void)
     TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
 }
 
+/* ---- 2a'. a crack between tiles under a steep face leaning over it ---- */
+
+/* Tiles 10 cm high with a 2 cm crack along x over a base floor, and beside the crack a
+ * steep face (80 degrees, a rock's or a slab's side) whose foot is 30 cm above the tiles,
+ * leaning away from the crack as it rises (soak s1 l184, l257, s3 l318, l400: modular
+ * tiles under a rock). The crack rule drops the capsule's bottom ball from the sweep
+ * capsule's; on its way down it grazes the face first. Rolled down the face's tangent by at
+ * most half a radius of descent it met nothing, the rule gave up and the body stood on the
+ * floor in the crack, 10 cm inside both tiles. The ball slides down past the face: it rests
+ * on the tiles' edges. */
+static void test_crack_under_leaning_face(void)
+{
+    static const float rates[2] = {30.0f, 60.0f};
+    /* where the dropped ball's centre meets the face: 0.15-0.25 m above its rest, more
+     * than half a radius (the drop starts 0.65 m above the tiles) */
+    static const float meet[3] = {0.6f, 0.65f, 0.7f};
+    const float r = 0.274f, top = 0.1f, g = 0.02f, lean = 10.0f * DEG, yb = top + 0.3f;
+    float worst = top;
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 3; k++) {
+            const float zb = r / cosf(lean) - (meet[k] - yb) * tanf(lean), zt = zb + (3.0f - yb) * tanf(lean);
+            cb_world_reset();
+            cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+            cb_geo_box(cb_vec(0.0f, 0.5f * top, -0.5f * g - 1.0f), cb_vec(4.0f, 0.5f * top, 1.0f), 0.0f);
+            cb_geo_box(cb_vec(0.0f, 0.5f * top, 0.5f * g + 1.0f), cb_vec(4.0f, 0.5f * top, 1.0f), 0.0f);
+            cb_geo_quad(cb_vec(-4.0f, yb, zb), cb_vec(4.0f, yb, zb), cb_vec(4.0f, 3.0f, zt), cb_vec(-4.0f, 3.0f, zt));
+            TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+            pos = cb_vec(-2.5f, top, 0.0f);
+            char_body_init(&body, &pos);
+            char_body_settings_t s = cb_foot_settings();
+            s.radius = r;
+            s.height = 2.8112f;
+            s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+            s.step_height = 0.376f;
+            s.floor_snap_distance = 0.45f;
+            s.floor_max_angle = 22.4f * DEG;
+            s.max_slides = 3;
+            char_body_configure(&body, &s);
+            float lowest = top;
+            for (int f = 0; f < (int)(0.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            body.input_velocity = cb_vec(2.0f, 0.0f, 0.0f);
+            for (int f = 0; f < (int)(1.5f * rates[i]); f++) {
+                CB_STEP(&body, 1.0f / rates[i]);
+                if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+            }
+            if (lowest < worst) worst = lowest;
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            TEST_ASSERT_TRUE(pos.x > -0.5f);
+        }
+    cb_report("crack under a leaning face: lowest grounded foot (tile tops 0.10)", worst, "m");
+    TEST_ASSERT_TRUE(worst >= top - crack_sag(r, g) - 0.001f);
+}
+
+/* ---- 2a''. a crack under a tilted up ---- */
+
+/* Soak s2 l356 (generator 2), the pieces within 1.1 m of the spot (coordinates rounded to
+ * 0.1 mm): tiles 0.27 m high with cracks between them, up tilted 4 degrees by the game
+ * (s2 l117, l375 alike). The foot ray, along up, went down through a crack into a tile's
+ * side: a face too steep to stand on, found within reach, so the body stood "steep" on it
+ * with its foot in the crack, 85 mm below the ball's rest on the tiles' edges, and the
+ * crack rule (asked only when nothing was found) never ran. */
+static const float tilted_crack_tris[][9] = {
+    {20.4959f, 0.0000f, 0.2566f, 19.7146f, 0.0000f, -1.4309f, 19.7146f, 0.2819f, -1.4309f},
+    {20.4959f, 0.0000f, 0.2566f, 19.7146f, 0.2819f, -1.4309f, 20.4959f, 0.2819f, 0.2566f},
+    {19.7128f, 0.0000f, -1.4349f, 18.9315f, 0.0000f, -3.1224f, 18.9315f, 0.2802f, -3.1224f},
+    {19.7128f, 0.0000f, -1.4349f, 18.9315f, 0.2802f, -3.1224f, 19.7128f, 0.2802f, -1.4349f},
+    {20.5017f, 0.0000f, 0.2587f, 20.5017f, 0.2662f, 0.2587f, 22.1892f, 0.2662f, -0.5226f},
+    {20.5017f, 0.0000f, 0.2587f, 22.1892f, 0.2662f, -0.5226f, 22.1892f, 0.0000f, -0.5226f},
+    {20.4998f, 0.0000f, 0.2547f, 20.4998f, 0.2662f, 0.2547f, 19.7186f, 0.2662f, -1.4328f},
+    {20.4998f, 0.0000f, 0.2547f, 19.7186f, 0.2662f, -1.4328f, 19.7186f, 0.0000f, -1.4328f},
+    {22.1873f, 0.0000f, -0.5265f, 21.4061f, 0.0000f, -2.2140f, 21.4061f, 0.2662f, -2.2140f},
+    {22.1873f, 0.0000f, -0.5265f, 21.4061f, 0.2662f, -2.2140f, 22.1873f, 0.2662f, -0.5265f},
+    {20.4998f, 0.0000f, 0.2547f, 19.7186f, 0.0000f, -1.4328f, 21.4061f, 0.0000f, -2.2140f},
+    {20.4998f, 0.0000f, 0.2547f, 21.4061f, 0.0000f, -2.2140f, 22.1873f, 0.0000f, -0.5265f},
+    {20.4998f, 0.2662f, 0.2547f, 22.1873f, 0.2662f, -0.5265f, 21.4061f, 0.2662f, -2.2140f},
+    {20.4998f, 0.2662f, 0.2547f, 21.4061f, 0.2662f, -2.2140f, 19.7186f, 0.2662f, -1.4328f},
+    {20.4998f, 0.0000f, 0.2547f, 22.1873f, 0.0000f, -0.5265f, 22.1873f, 0.2662f, -0.5265f},
+    {20.4998f, 0.0000f, 0.2547f, 22.1873f, 0.2662f, -0.5265f, 20.4998f, 0.2662f, 0.2547f},
+    {19.7186f, 0.0000f, -1.4328f, 19.7186f, 0.2662f, -1.4328f, 21.4061f, 0.2662f, -2.2140f},
+    {19.7186f, 0.0000f, -1.4328f, 21.4061f, 0.2662f, -2.2140f, 21.4061f, 0.0000f, -2.2140f},
+    {19.7167f, 0.0000f, -1.4367f, 19.7167f, 0.2662f, -1.4367f, 18.9355f, 0.2662f, -3.1242f},
+    {19.7167f, 0.0000f, -1.4367f, 18.9355f, 0.2662f, -3.1242f, 18.9355f, 0.0000f, -3.1242f},
+    {21.4042f, 0.0000f, -2.2180f, 20.6230f, 0.0000f, -3.9055f, 20.6230f, 0.2662f, -3.9055f},
+    {21.4042f, 0.0000f, -2.2180f, 20.6230f, 0.2662f, -3.9055f, 21.4042f, 0.2662f, -2.2180f},
+    {19.7167f, 0.0000f, -1.4367f, 18.9355f, 0.0000f, -3.1242f, 20.6230f, 0.0000f, -3.9055f},
+    {19.7167f, 0.0000f, -1.4367f, 20.6230f, 0.0000f, -3.9055f, 21.4042f, 0.0000f, -2.2180f},
+    {19.7167f, 0.2662f, -1.4367f, 21.4042f, 0.2662f, -2.2180f, 20.6230f, 0.2662f, -3.9055f},
+    {19.7167f, 0.2662f, -1.4367f, 20.6230f, 0.2662f, -3.9055f, 18.9355f, 0.2662f, -3.1242f},
+    {19.7167f, 0.0000f, -1.4367f, 21.4042f, 0.0000f, -2.2180f, 21.4042f, 0.2662f, -2.2180f},
+    {19.7167f, 0.0000f, -1.4367f, 21.4042f, 0.2662f, -2.2180f, 19.7167f, 0.2662f, -1.4367f},
+    {18.9355f, 0.0000f, -3.1242f, 18.9355f, 0.2662f, -3.1242f, 20.6230f, 0.2662f, -3.9055f},
+    {18.9355f, 0.0000f, -3.1242f, 20.6230f, 0.2662f, -3.9055f, 20.6230f, 0.0000f, -3.9055f},
+    {22.1931f, 0.0000f, -0.5244f, 22.1931f, 0.2538f, -0.5244f, 23.8806f, 0.2538f, -1.3057f},
+    {22.1931f, 0.0000f, -0.5244f, 23.8806f, 0.2538f, -1.3057f, 23.8806f, 0.0000f, -1.3057f},
+    {22.1913f, 0.0000f, -0.5284f, 22.1913f, 0.2589f, -0.5284f, 21.4100f, 0.2589f, -2.2159f},
+    {22.1913f, 0.0000f, -0.5284f, 21.4100f, 0.2589f, -2.2159f, 21.4100f, 0.0000f, -2.2159f},
+    {23.8788f, 0.0000f, -1.3096f, 23.0975f, 0.0000f, -2.9971f, 23.0975f, 0.2589f, -2.9971f},
+    {23.8788f, 0.0000f, -1.3096f, 23.0975f, 0.2589f, -2.9971f, 23.8788f, 0.2589f, -1.3096f},
+    {22.1913f, 0.0000f, -0.5284f, 21.4100f, 0.0000f, -2.2159f, 23.0975f, 0.0000f, -2.9971f},
+    {22.1913f, 0.0000f, -0.5284f, 23.0975f, 0.0000f, -2.9971f, 23.8788f, 0.0000f, -1.3096f},
+    {22.1913f, 0.2589f, -0.5284f, 23.8788f, 0.2589f, -1.3096f, 23.0975f, 0.2589f, -2.9971f},
+    {22.1913f, 0.2589f, -0.5284f, 23.0975f, 0.2589f, -2.9971f, 21.4100f, 0.2589f, -2.2159f},
+    {22.1913f, 0.0000f, -0.5284f, 23.8788f, 0.0000f, -1.3096f, 23.8788f, 0.2589f, -1.3096f},
+    {22.1913f, 0.0000f, -0.5284f, 23.8788f, 0.2589f, -1.3096f, 22.1913f, 0.2589f, -0.5284f},
+    {21.4100f, 0.0000f, -2.2159f, 21.4100f, 0.2589f, -2.2159f, 23.0975f, 0.2589f, -2.9971f},
+    {21.4100f, 0.0000f, -2.2159f, 23.0975f, 0.2589f, -2.9971f, 23.0975f, 0.0000f, -2.9971f},
+    {21.4082f, 0.0000f, -2.2198f, 21.4082f, 0.2662f, -2.2198f, 20.6269f, 0.2662f, -3.9073f},
+    {21.4082f, 0.0000f, -2.2198f, 20.6269f, 0.2662f, -3.9073f, 20.6269f, 0.0000f, -3.9073f},
+    {23.0957f, 0.0000f, -3.0011f, 22.3144f, 0.0000f, -4.6886f, 22.3144f, 0.2662f, -4.6886f},
+    {23.0957f, 0.0000f, -3.0011f, 22.3144f, 0.2662f, -4.6886f, 23.0957f, 0.2662f, -3.0011f},
+    {21.4082f, 0.0000f, -2.2198f, 20.6269f, 0.0000f, -3.9073f, 22.3144f, 0.0000f, -4.6886f},
+    {21.4082f, 0.0000f, -2.2198f, 22.3144f, 0.0000f, -4.6886f, 23.0957f, 0.0000f, -3.0011f},
+    {21.4082f, 0.2662f, -2.2198f, 23.0957f, 0.2662f, -3.0011f, 22.3144f, 0.2662f, -4.6886f},
+    {21.4082f, 0.2662f, -2.2198f, 22.3144f, 0.2662f, -4.6886f, 20.6269f, 0.2662f, -3.9073f},
+    {21.4082f, 0.0000f, -2.2198f, 23.0957f, 0.0000f, -3.0011f, 23.0957f, 0.2662f, -3.0011f},
+    {21.4082f, 0.0000f, -2.2198f, 23.0957f, 0.2662f, -3.0011f, 21.4082f, 0.2662f, -2.2198f},
+    {20.6269f, 0.0000f, -3.9073f, 20.6269f, 0.2662f, -3.9073f, 22.3144f, 0.2662f, -4.6886f},
+    {20.6269f, 0.0000f, -3.9073f, 22.3144f, 0.2662f, -4.6886f, 22.3144f, 0.0000f, -4.6886f}
+};
+
+static void test_crack_under_tilted_up(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    for (size_t i = 0; i < sizeof tilted_crack_tris / sizeof tilted_crack_tris[0]; i++) {
+        const float *t = tilted_crack_tris[i];
+        cb_geo_tri(cb_vec(t[0], t[1], t[2]), cb_vec(t[3], t[4], t[5]), cb_vec(t[6], t[7], t[8]));
+    }
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(21.3997f, 1.685292f, -2.181013f); /* the soak body's state (owner = capsule centre) */
+    char_body_init(&body, &pos);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.up = cb_vec(0.0664315f, 0.9977514f, -0.0088922f);
+    s.radius = 0.827046f;
+    s.height = 2.850702f;
+    s.center_offset = cb_vec(0.0f, 0.0f, 0.0f);
+    s.step_height = 0.190682f;
+    s.floor_snap_distance = 0.226224f;
+    s.floor_max_angle = 0.404248f;
+    s.gravity = 6.30343f;
+    s.max_fall_speed = 23.5058f;
+    s.max_slides = 5;
+    s.coll_types = 0xff;
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(1.069107f, -0.185330f, -0.399656f));
+    const float half = 0.5f * s.height;
+    float lowest = 1.0f;
+    for (int f = 0; f < 5; f++) {
+        CB_STEP(&body, f == 0 ? 0.1052302f : 1.0f / 30.0f);
+        float foot = pos.y - body.settings.up.y * half;
+        if (char_body_is_on_floor(&body) && foot < lowest) lowest = foot;
+    }
+    cb_report("crack under a tilted up: lowest grounded foot (tile tops 0.266)", lowest, "m");
+    TEST_ASSERT_TRUE(lowest >= 0.25f);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -613,6 +772,61 @@ static void test_steep_slab_low_edge(void)
             steep_slab_push(degs[d], lips[l], 30.0f, cb_vec(4.0f, 0.0f, 0.0f));
             steep_slab_push(degs[d], lips[l], 120.0f, cb_vec(4.0f, 0.0f, 0.0f));
             steep_slab_push(degs[d], lips[l], 60.0f, cb_vec(3.0f, 0.0f, 2.0f));
+        }
+}
+
+/* The same low edge on a collider body: a box slab 8 cm thick leaning at 50-60 degrees
+ * (soak s1 l351: r 0.13, step 1.07, the slab a box body, 41.9 degrees walkable). The
+ * floor probe's ray meets the slab's face above the foot; the ray continued past it to
+ * find the floor under the face starts inside the solid box, meets it at once, and the
+ * body stood on the face with its foot 0.11 m in the floor. */
+static void steep_body_slab_push(float deg, float lip, float hz, fm_vec3_t input)
+{
+    const float dt = 1.0f / hz, a = deg * DEG, len = 3.0f, th = 0.08f;
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* the box's low, lower corner at (0, lip): its centre is that corner's offset back */
+    const float cx = 0.5f * len * cosf(a) - 0.5f * th * sinf(a), cy = lip + 0.5f * len * sinf(a) + 0.5f * th * cosf(a);
+    coll_body_t *slab = cb_world_add_box_body(cb_vec(cx, cy, 0.0f), cb_vec(0.5f * len, 0.5f * th, 5.0f), 2);
+    TEST_ASSERT_NOT_NULL(slab);
+    slab->xf.rot = (fm_quat_t){{0.0f, 0.0f, sinf(0.5f * a), cosf(0.5f * a)}};
+    pos = cb_vec(-1.5f, 0.0f, 0.0f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = 0.1253f;
+    s.height = 2.5048f;
+    s.center_offset = cb_vec(0.0f, 0.5f * s.height, 0.0f);
+    s.step_height = 1.066f;
+    s.floor_snap_distance = 1.066f;
+    s.floor_max_angle = 41.9f * DEG;
+    s.max_slides = 2;
+    s.coll_types = 0xff;
+    char_body_configure(&body, &s);
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    char name[112];
+    snprintf(name, sizeof name, "steep body slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
+             (double)lip, (double)hz);
+    cb_report(name, lowest, "m");
+    TEST_ASSERT_TRUE(lowest > -0.001f);
+}
+
+static void test_steep_body_slab_low_edge(void)
+{
+    static const float degs[2] = {50.0f, 60.0f};
+    static const float lips[2] = {0.0f, 0.02f};
+    for (int d = 0; d < 2; d++)
+        for (int l = 0; l < 2; l++) {
+            steep_body_slab_push(degs[d], lips[l], 30.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_body_slab_push(degs[d], lips[l], 120.0f, cb_vec(4.0f, 0.0f, 0.0f));
+            steep_body_slab_push(degs[d], lips[l], 60.0f, cb_vec(3.0f, 0.0f, 2.0f));
         }
 }
 
@@ -1316,6 +1530,8 @@ int main(void)
     RUN_TEST(test_crack_walk_along);
     RUN_TEST(test_crack_walk_across);
     RUN_TEST(test_crack_beside_wall);
+    RUN_TEST(test_crack_under_leaning_face);
+    RUN_TEST(test_crack_under_tilted_up);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
@@ -1323,6 +1539,7 @@ int main(void)
     RUN_TEST(test_valley_slot);
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
+    RUN_TEST(test_steep_body_slab_low_edge);
     RUN_TEST(test_teleport_under_low_overhang);
     RUN_TEST(test_teleport_into_raised_floor_under_overhang);
     RUN_TEST(test_low_ledge_blocks);

@@ -22,6 +22,9 @@
  *   within reach the same ball holds the body above it where the gap is between surfaces
  *   at one level, or between surfaces on opposite sides of the foot at any levels (blocks
  *   of different heights): never on a stair's nosings, whose roll ends on the tread below.
+ *   A side the dropped ball meets first there (a face too steep to stand on: a rock or a
+ *   slab beside the tiles) is slid down past, and a face nearly along up that the foot
+ *   point finds (a tile's side under a tilted up) does not stop the rule.
  * - Room to stand: a step that would leave the full capsule standing on a floor it has no
  *   room above (under a low ledge or an overhang) is not taken.
  * - char_body_get_velocity() is the velocity the body moved with (a stop by a wall, wedge

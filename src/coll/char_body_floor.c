@@ -107,6 +107,41 @@ static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
     return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) < c->body->cos_floor_max_angle;
 }
 
+/**
+ * The crack rule's drop, over a floor the foot ray found, met the side of something first:
+ * a contact too steep to stand on (a block's or a wall's edge beside the ball, well above
+ * the floor), whose tangent the roll then followed into nothing, so the rule gave up and the
+ * foot went down into the crack under the ball (soak s1 l184, l257, s3 l318, l400: tiles
+ * around the foot, a block or a slab's edge beside). The ball slides down past it, swept
+ * down the contact's tangent plane by the rest of the drop's length along up, and what it
+ * meets there is the first contact (at most twice: a second side). The ball's centre moves
+ * across up with the slide; the body does not, only the height it rests at comes from
+ * here.
+ */
+static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_sweep_hit_t *h1, float *d1)
+{
+    const fm_vec3_t up = c->up;
+    const float r = c->radius;
+    const fm_vec3_t bc = v3_madd(v3_madd(*b0, up, -*d1), h1->normal, 0.2f * c->skin);
+    const float rest = len - *d1;
+    if (!(rest > c->tiny)) return false;
+    /* down its tangent plane (dropped straight past an edge, the ball met the same
+     * leaning edge again a few centimetres lower, twice: soak s3 l400) */
+    fm_vec3_t down = v3_madd(v3_scale(up, -1.0f), h1->normal, v3_dot(h1->normal, up));
+    float sink = -v3_dot(down, up);
+    if (!(sink > 0.1f)) return false;
+    fm_vec3_t way = v3_scale(down, rest / sink);
+    coll_sweep_hit_t h;
+    if (!cb_sweep(c, bc, r, 0.0f, way, &h) || !isfinite(h.t) || !v3_finite(h.normal) || !v3_finite(h.point))
+        return false;
+    float t = h.t > 0.0f ? h.t : 0.0f;
+    *b0 = v3_madd(*b0, v3_reject(way, up), t); /* where the ball went across up */
+    *d1 += t * rest;
+    *h1 = h;
+    h1->t = *d1 / len;
+    return true;
+}
+
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
                       const coll_sweep_hit_t *first, float first_len, support_t *out)
 {
@@ -134,6 +169,11 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fabsf(v3_dot(v3_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
+    for (int k = 0; k < 2 && over_floor && n1u < b->cos_floor_max_angle; k++) {
+        if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
+        n1u = v3_dot(h1.normal, up);
+        if (!(n1u > 0.02f)) return false;
+    }
     float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
     float gap = d1 - c->step; /* resting on the first contact (the body is not moved sideways) */
@@ -403,6 +443,43 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
     return h.t < 1.0f && v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle;
 }
 
+/**
+ * The foot ray found a face too steep to stand on, nearly along up (within 60 degrees: a
+ * wall, a tile's side), within reach. Under a tilted up the ray through a crack between
+ * tiles meets a tile's side, and the body stood "steep" on it with its foot 14-85 mm
+ * below the tile tops around it (soak s2 l117, l356, l375, s3 l369). Where the crack rule
+ * holds the ball higher (on the edges of the gap), the body stands there instead.
+ */
+static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
+{
+    if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
+    support_t w = {0};
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
+        *s = w;
+}
+
+/**
+ * The steep face found above the foot belongs to a collider body (a slab, a box) and the ray
+ * continued past the face starts inside it: a ray from inside a solid meets it at once, so
+ * the loop that looks past the face for a floor advanced a skin at a time and gave up, and
+ * the body stood on the face with its foot 0.11 m in the floor under the slab's low edge
+ * (soak s1 l351: r 0.13, step 1.07). Looked for from the foot instead, along up, as far as
+ * the face: a walkable floor the foot is under (either face of a triangle) is the one to
+ * stand on (lifted onto it, as in the loop).
+ */
+static void floor_over_foot(const cb_ctx_t *c, fm_vec3_t pos, float height, support_t *s)
+{
+    const float step_eps = cb_len_tol(c, CB_STEP_EPS);
+    coll_ray_hit_t h;
+    if (!(height > step_eps) ||
+        !cb_ray(c, cb_foot(c, pos), c->up, height, &h) || !v3_finite(h.normal) || !v3_finite(h.point) ||
+        !isfinite(h.distance) || !(h.distance > step_eps))
+        return;
+    fm_vec3_t n = v3_scale(h.normal, -1.0f); /* met from below: turned to face up */
+    if (v3_dot(n, c->up) < c->body->cos_floor_max_angle) return;
+    *s = (support_t){true, false, -h.distance, n, h.point, h.id, h.instance};
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -478,6 +555,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (!cb_ray(c, v3_madd(origin, up, -past), v3_scale(up, -1.0f), above - past, &under) ||
                         !v3_finite(under.normal) || !v3_finite(under.point) || !isfinite(under.distance))
                         break;
+                    if (!(under.distance > 0.0f) && under.triangle < 0) {
+                        floor_over_foot(c, *pos, -gap, &s); /* inside a collider body's slab */
+                        break;
+                    }
                     float g2 = under.distance + past - above;
                     if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
                         if (g2 < -step_eps)
@@ -489,6 +570,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             }
         }
         if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s);
+        else if (s.steep) wall_under_crack(c, *pos, reach, &hit, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
