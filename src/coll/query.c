@@ -280,7 +280,7 @@ static bool ray_result(const best_hit_t *rb, const fm_vec3_t *origin, coll_ray_h
 
 CAND_INLINE bool ray_args_ok(const fm_vec3_t *origin, const fm_vec3_t *dir, float max_dist)
 {
-    return vfin(origin) && vfin(dir) && isfinite(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
+    return vfin(origin) && vfin(dir) && f_isfin(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
 }
 
 bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, float max_dist,
@@ -390,7 +390,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
 
 CAND_INLINE bool capsule_args_ok(const fm_vec3_t *center, const fm_vec3_t *axis, float radius, float hh)
 {
-    return vfin(center) && vfin(axis) && isfinite(radius) && radius > 0.0f && isfinite(hh) && hh >= 0.0f;
+    return vfin(center) && vfin(axis) && f_isfin(radius) && radius > 0.0f && f_isfin(hh) && hh >= 0.0f;
 }
 
 CAND_INLINE void capsule_setup(capsule_q_t *q, const fm_vec3_t *axis, float radius, float hh, const fm_vec3_t *disp)
