@@ -1294,6 +1294,64 @@ static void test_gather_keeps_the_triangles_meeting_its_box(void)
     TEST_ASSERT_TRUE(n_inside > checked / 2);
 }
 
+/* Capsule sweeps whose swept volume passes within 0.3 % of r of a tilted floor's plane, on
+ * either side of touching: the scene's sweep (its plane cull before the exact test
+ * included) finds a hit exactly when the exact triangle test does on some triangle. */
+static void test_sweeps_grazing_a_plane_agree_with_the_exact_test(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 777);
+    coll_scene_t s;
+    coll_scene_init(&s);
+    coll_mesh_instance_t a;
+    place(&a, floor_mesh(0, 4, 0), 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(&s, &a);
+    int hits = 0, n = 0;
+    for (int q = 0; q < 4000; q++) {
+        random_quat(&r, &a.xf.rot);
+        if (q % 3 == 0) { a.xf.rot.x = a.xf.rot.z = 0; a.xf.rot.y = (float)core_rng_range(&r, -1, 1); a.xf.rot.w = 1; }
+        fm_quat_norm(&a.xf.rot, &a.xf.rot);
+        for (int k = 0; k < 3; k++) a.xf.pos.v[k] = (float)core_rng_range(&r, -3, 3);
+        fm_vec3_t nrm, c0, l = {{ (float)core_rng_range(&r, -2, 2), 0, (float)core_rng_range(&r, -2, 2) }};
+        fm_quat_rotate_vec3(&nrm, &a.xf.rot, &UP);
+        fm_quat_rotate_vec3(&c0, &a.xf.rot, &l);
+        fm_vec3_add(&c0, &c0, &a.xf.pos);
+        float rad = (float)core_rng_range(&r, 0.1, 0.6), hh = (float)core_rng_range(&r, 0, 0.6);
+        fm_vec3_t disp = {{ (float)core_rng_range(&r, -1, 1), (float)core_rng_range(&r, -1, 1),
+                            (float)core_rng_range(&r, -1, 1) }};
+        if (q % 2) { /* along the plane */
+            float dn = fm_vec3_dot(&disp, &nrm);
+            for (int k = 0; k < 3; k++) disp.v[k] -= dn * nrm.v[k];
+        }
+        double u = core_rng_range(&r, -0.003, 0.003);
+        float side = q % 5 == 0 ? -1.0f : 1.0f; /* below the floor too (two-sided) */
+        double nu = fabs(fm_vec3_dot(&nrm, &UP)), nd = side * fm_vec3_dot(&nrm, &disp);
+        double dist = rad * (1.0 + u) + hh * nu - fmin(0.0, nd);
+        fm_vec3_t c;
+        for (int k = 0; k < 3; k++) c.v[k] = c0.v[k] + side * (float)dist * nrm.v[k];
+        if (fabs(u) * rad < 3e-4) continue; /* within the touch tolerance: either way */
+        n++;
+        bool want = false;
+        fm_vec3_t seg[2] = { {{ 0, -hh, 0 }}, {{ 0, hh, 0 }} };
+        for (uint32_t t = 0; t < 2; t++) {
+            core_d3 w[3];
+            core_world_tri(&a, t, w);
+            fm_vec3_t tri[3];
+            for (int k = 0; k < 3; k++) tri[k] = to_f(core_d3_sub(w[k], core_d3_of(c)));
+            coll_prim_hit_t ph;
+            want = want || coll_capsule_triangle_sweep(seg, rad, &disp, tri, 1.0f, &ph);
+        }
+        coll_sweep_hit_t h;
+        bool got = coll_capsule_sweep(&s, c, UP, rad, hh, disp, 0xFF, COLL_TYPE_MESH, &h);
+        char msg[120];
+        snprintf(msg, sizeof msg, "query %d: u %.5f side %.0f got %d want %d", q, u, side, got, want);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, got, msg);
+        hits += got;
+    }
+    TEST_ASSERT_TRUE(n > 2000);
+    TEST_ASSERT_TRUE(hits > n / 4 && hits < n - n / 4);
+}
+
 static void test_grid_kinds_covered(void)
 {
     printf("grids built: %u dense, %u hashed\n", g_dense_built, g_hashed_built);
@@ -1319,6 +1377,7 @@ int main(void)
     RUN_TEST(test_random_raycasts_match_reference);
     RUN_TEST(test_random_capsule_sweeps_match_reference);
     RUN_TEST(test_gather_keeps_the_triangles_meeting_its_box);
+    RUN_TEST(test_sweeps_grazing_a_plane_agree_with_the_exact_test);
     RUN_TEST(test_grid_kinds_covered);
     return UNITY_END();
 }

@@ -349,6 +349,34 @@ static bool sweep_better(const coll_prim_hit_t *h, const best_hit_t *sb)
     return h->t == sb->ph.t && h->t == 0.0f && h->depth > sb->ph.depth;
 }
 
+/* The swept capsule (axis ends seg relative to the triangle's first vertex, moved by
+ * disp * t) stays on one side of the triangle's plane, farther than r with an allowance for
+ * rounding (0.1 % of r, 1e-4 of the coordinates' size): no contact is possible. The sweep's
+ * own first test, without its setup (the edges' lengths, a square root and a division for
+ * the unit normal): most candidates of a walking step are the floor under a capsule that
+ * moves across it. A near-degenerate face (the two edges within 0.6 degrees) is left to the
+ * exact test. */
+CAND_INLINE bool sweep_plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t *disp, float t,
+                                     const fm_vec3_t shape[3])
+{
+    fm_vec3_t n, m;
+    fm_vec3_cross(&n, &shape[1], &shape[2]);
+    float nn = fm_vec3_len2(&n);
+    if (!(nn > 1e-4f * fm_vec3_len2(&shape[1]) * fm_vec3_len2(&shape[2]))) return false;
+    fm_vec3_scale(&m, disp, t);
+    float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]), dd = fm_vec3_dot(&n, &m);
+    float lo = f_min(d0, d1), hi = f_max(d0, d1);
+    if (dd < 0.0f) lo += dd;
+    else hi += dd;
+    if (!(lo > 0.0f) && !(hi < 0.0f)) return false;
+    float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
+               fabsf(seg[1].z) + fabsf(m.x) + fabsf(m.y) + fabsf(m.z) + fabsf(shape[1].x) + fabsf(shape[1].y) +
+               fabsf(shape[1].z) + fabsf(shape[2].x) + fabsf(shape[2].y) + fabsf(shape[2].z);
+    float rr = r * 1.001f + 1e-4f * l1 + 1e-6f;
+    float mn = lo > 0.0f ? lo : -hi;
+    return mn * mn > rr * rr * nn;
+}
+
 /* One candidate triangle t of inst (w0, shape as for ray_tri; u: the one-way up, zero for
  * an ordinary instance) against the capsule sweep; true when it is the new best hit. */
 static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
@@ -357,6 +385,7 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    if (sweep_plane_rejects(q->r, seg, &q->disp, sb->best, shape)) return false;
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
