@@ -311,14 +311,18 @@ typedef struct {
     float eps;          /* AABB slack */
 } capsule_q_t;
 
-/* World-relative AABB of the capsule swept from 0 to t. */
+/* World-relative AABB of the capsule swept from 0 to t. Without a branch (the console has
+ * no conditional moves; this runs for every query): the axis ends are -e and e
+ * (capsule_setup), so their least and largest are -|e| and |e|, and min(d, 0) and max(d, 0)
+ * are d/2 -+ |d|/2 (exact: halving and the sum are; a zero's sign, the only difference
+ * from f_min/f_max, is lost in adding r). */
 CAND_INLINE void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *hi)
 {
     for (int a = 0; a < 3; a++) {
-        float d = q->disp.v[a] * t;
-        float mn = f_min(q->seg[0].v[a], q->seg[1].v[a]), mx = f_max(q->seg[0].v[a], q->seg[1].v[a]);
-        lo->v[a] = mn + f_min(d, 0.0f) - q->r - q->eps;
-        hi->v[a] = mx + f_max(d, 0.0f) + q->r + q->eps;
+        float d = q->disp.v[a] * t, e = fabsf(q->seg[1].v[a]);
+        float h = 0.5f * d, ha = 0.5f * fabsf(d);
+        lo->v[a] = -e + (h - ha) - q->r - q->eps;
+        hi->v[a] = e + (h + ha) + q->r + q->eps;
     }
 }
 
