@@ -363,19 +363,19 @@ static bool sweep_better(const coll_prim_hit_t *h, const best_hit_t *sb)
 CAND_INLINE bool sweep_plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t *disp, float t,
                                      const fm_vec3_t shape[3])
 {
-    fm_vec3_t n, m;
+    fm_vec3_t n;
     fm_vec3_cross(&n, &shape[1], &shape[2]);
-    float nn = fm_vec3_len2(&n);
-    if (!(nn > 1e-4f * fm_vec3_len2(&shape[1]) * fm_vec3_len2(&shape[2]))) return false;
-    fm_vec3_scale(&m, disp, t);
-    float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]), dd = fm_vec3_dot(&n, &m);
+    float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]), dd = fm_vec3_dot(&n, disp) * t;
     float lo = f_min(d0, d1), hi = f_max(d0, d1);
     if (dd < 0.0f) lo += dd;
     else hi += dd;
+    /* the swept axis crosses the plane (the common case of a candidate kept): no more work */
     if (!(lo > 0.0f) && !(hi < 0.0f)) return false;
+    float nn = fm_vec3_len2(&n);
+    if (!(nn > 1e-4f * fm_vec3_len2(&shape[1]) * fm_vec3_len2(&shape[2]))) return false;
     float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
-               fabsf(seg[1].z) + fabsf(m.x) + fabsf(m.y) + fabsf(m.z) + fabsf(shape[1].x) + fabsf(shape[1].y) +
-               fabsf(shape[1].z) + fabsf(shape[2].x) + fabsf(shape[2].y) + fabsf(shape[2].z);
+               fabsf(seg[1].z) + (fabsf(disp->x) + fabsf(disp->y) + fabsf(disp->z)) * t + fabsf(shape[1].x) +
+               fabsf(shape[1].y) + fabsf(shape[1].z) + fabsf(shape[2].x) + fabsf(shape[2].y) + fabsf(shape[2].z);
     float rr = r * 1.001f + 1e-4f * l1 + 1e-6f;
     float mn = lo > 0.0f ? lo : -hi;
     return mn * mn > rr * rr * nn;
@@ -384,12 +384,12 @@ CAND_INLINE bool sweep_plane_rejects(float r, const fm_vec3_t seg[2], const fm_v
 /* One candidate triangle t of inst (w0, shape as for ray_tri; u: the one-way up, zero for
  * an ordinary instance) against the capsule sweep; true when it is the new best hit. */
 static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
-                      const fm_vec3_t shape[3], const fm_vec3_t *u, best_hit_t *sb)
+                      const fm_vec3_t shape[3], const fm_vec3_t *u, bool cull, best_hit_t *sb)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
-    if (sweep_plane_rejects(q->r, seg, &q->disp, sb->best, shape)) return false;
+    if (cull && sweep_plane_rejects(q->r, seg, &q->disp, sb->best, shape)) return false;
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
@@ -412,7 +412,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
-            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, sb)) {
+            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, true, sb)) {
                 swept_box(q, sb->best, &iw.lo, &iw.hi); /* shrink the sweep, and skip cells it misses */
                 local_box(inst->mesh, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &iw.llo, &iw.lhi);
                 w.skip_missed = true;
@@ -711,7 +711,12 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
-        if (sweep_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &sb)) {
+        /* the plane cull only where it can beat the box test just passed: a triangle flat
+         * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
+         * as tight as its plane */
+        const coll_gather_tri_t *gt = &g->tris[k];
+        bool tilted = gt->hi.x - gt->lo.x > q.eps && gt->hi.y - gt->lo.y > q.eps && gt->hi.z - gt->lo.z > q.eps;
+        if (sweep_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, tilted, &sb)) {
             swept_box(&q, sb.best, &lo, &hi); /* shrink the sweep */
             gather_box(&rel, &lo, &hi, &glo, &ghi);
         }
