@@ -57,7 +57,11 @@ PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, floa
 /* Outward normal at m + d s, or away from the motion when that point is the centre. */
 PRIM_INLINE fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
 {
-    return v3_unit_or(v3_madd(m, d, s), v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f)));
+    /* v3_unit_or(m + d s, v3_unit_or(-d, +y)), the fallback worked out only when used */
+    fm_vec3_t a = v3_madd(m, d, s);
+    float l2 = v3_len2(a);
+    if (l2 > V3_TINY_LEN2 && f_finite(l2)) return v3_scale(a, 1.0f / sqrtf(l2));
+    return v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f));
 }
 
 PRIM_INLINE bool ray_sphere_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
