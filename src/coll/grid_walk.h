@@ -490,13 +490,8 @@ static inline void grid_walk_cells(grid_walk_t *w, const coll_mesh_t *m, const f
 /* Enters cell (x, y, z) (or entry x of a walk over every entry). A lazy walk entering its
  * second entry starts the table with the first entry's triangles that meet the box now
  * (those that did not are rejected again wherever they come back). */
-static inline void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint32_t z)
+static inline void grid_walk_enter_lazy(grid_walk_t *w, uint32_t ci)
 {
-    w->c[0] = x; w->c[1] = y; w->c[2] = z;
-    uint32_t ci = w->walk_all ? x : coll_mesh_cell_index(w->m, x, y, z);
-    w->k = w->mv.cells[ci];
-    w->kend = w->mv.cells[ci + 1u];
-    if (!w->lazy) return;
     if (w->entered == 0u) {
         w->first = ci;
         w->entered = 1u;
@@ -510,6 +505,16 @@ static inline void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint3
         w->entered = 2u;
         w->dedup = true;
     }
+}
+
+/* (the cell's refs inline: every visited cell pays this; the lazy dedup's start is rare) */
+CAND_INLINE void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint32_t z)
+{
+    w->c[0] = x; w->c[1] = y; w->c[2] = z;
+    uint32_t ci = w->walk_all ? x : coll_mesh_cell_index(w->m, x, y, z);
+    w->k = w->mv.cells[ci];
+    w->kend = w->mv.cells[ci + 1u];
+    if (w->lazy) grid_walk_enter_lazy(w, ci);
 }
 
 /* Next cell under the box (x fastest); false at the end. */
