@@ -13,6 +13,8 @@
 #include "mesh_format.h"
 #include "gather.h"
 #include "prim.h"
+#include "gather.h"
+#include "grid_walk.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1272,6 +1274,150 @@ static void probe_bodies(void)
 
 /* Runs after the randomized agreement tests: both grid layouts (dense and hashed) were
  * among the meshes they compared against the double reference. */
+/* The step gather (gather.h) against a reference built from the walk's own per-triangle
+ * pieces (local_box, tri_rel_of, tri_abs, tri_box_reject): over random worlds (rotated,
+ * scaled and mirrored instances, quantized meshes, dense and hashed grids, far from the
+ * origin) and random boxes it keeps only triangles that pass the local and the
+ * query-relative box tests, each once, with its placement, shape and box bit for bit, and
+ * never leaves out one with a vertex inside both boxes. */
+static void test_gather_keeps_the_triangles_meeting_its_box(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 4242);
+    static coll_gather_t g;
+    int checked = 0, kept = 0, n_inside = 0;
+    for (int wi = 0; wi < N_WORLDS; wi++) {
+        random_world(&r, false);
+        for (int q = 0; q < 20; q++) {
+            fm_vec3_t c = to_f(core_rng_u32(&r) % 2 ? random_surface_point(&r) : random_point_in_region(&r, 2.0));
+            fm_vec3_t lo, hi;
+            for (int a = 0; a < 3; a++) {
+                double e = core_rng_range(&r, 0.05, 4.0);
+                lo.v[a] = (float)(c.v[a] - e);
+                hi.v[a] = (float)(c.v[a] + core_rng_range(&r, 0.05, 4.0));
+            }
+            uint8_t mask = core_rng_u32(&r) % 3 ? 0xFF : 2;
+            ASSERT_NO_ALLOC(coll_gather_begin(&g, &g_w.scene, lo, hi, mask, COLL_TYPE_MESH));
+            if (!g.valid) continue; /* overflowed: every query goes to the scene */
+            checked++;
+            for (uint16_t k = 0; k < g.ntris; k++)
+                for (uint16_t j = (uint16_t)(k + 1); j < g.ntris; j++)
+                    TEST_ASSERT_FALSE(g.tris[k].inst == g.tris[j].inst && g.tris[k].tri == g.tris[j].tri);
+            for (uint16_t i = 0; i < g_w.scene.mesh_count; i++) {
+                const coll_mesh_instance_t *in = g_w.scene.meshes[i];
+                xf3_t x;
+                memset(&x, 0, sizeof x);
+                TEST_ASSERT_TRUE(xf_prepare(&in->xf, &x));
+                fm_vec3_t o_l = to_local_point(&x, &in->xf, in->mesh, &g.origin), llo, lhi;
+                local_box(in->mesh, &x, &o_l, &g.lo, &g.hi, &llo, &lhi);
+                for (uint32_t t = 0; t < coll_mesh_triangle_count(in->mesh); t++) {
+                    fm_vec3_t v[3], w0, shape[3], tri[3];
+                    coll_mesh_triangle(in->mesh, t, v);
+                    tri_rel_of(v, &x, &o_l, &w0, shape);
+                    tri_abs(&w0, shape, tri);
+                    int found = -1;
+                    for (uint16_t k = 0; k < g.ntris; k++)
+                        if (g.tris[k].inst == in && g.tris[k].tri == (int32_t)t) found = k;
+                    /* the walk's two tests: the local box (with the grid margin), then the
+                     * query-relative one (the cells list a triangle only where its surface
+                     * meets them, so one passing both may still be left out, but not one
+                     * with a vertex well inside both boxes) */
+                    bool meets = (in->write_mask & mask) && !tri_box_reject(v, &llo, &lhi) &&
+                                 !tri_box_reject(tri, &g.lo, &g.hi);
+                    bool inside = false;
+                    for (int kk = 0; kk < 3; kk++) {
+                        bool in_both = true;
+                        for (int a = 0; a < 3; a++) {
+                            double e = 1e-3 * (1.0 + fabs(v[kk].v[a]));
+                            in_both = in_both && v[kk].v[a] > llo.v[a] + e && v[kk].v[a] < lhi.v[a] - e &&
+                                      tri[kk].v[a] > g.lo.v[a] + 1e-3 && tri[kk].v[a] < g.hi.v[a] - 1e-3;
+                        }
+                        inside = inside || in_both;
+                    }
+                    if (found < 0) {
+                        TEST_ASSERT_FALSE_MESSAGE(meets && inside, "a triangle inside the gathered box is missing");
+                        continue;
+                    }
+                    TEST_ASSERT_TRUE_MESSAGE(meets, "a gathered triangle fails the box tests");
+                    n_inside += inside;
+                    kept++;
+                    const coll_gather_tri_t *gt = &g.tris[found];
+                    TEST_ASSERT_EQUAL_MEMORY(&w0, &gt->w0, sizeof w0);
+                    TEST_ASSERT_EQUAL_MEMORY(&shape[1], &gt->e1, sizeof w0);
+                    TEST_ASSERT_EQUAL_MEMORY(&shape[2], &gt->e2, sizeof w0);
+                    for (int a = 0; a < 3; a++) {
+                        float mn = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
+                        float mx = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
+                        TEST_ASSERT_EQUAL_MEMORY(&mn, &gt->lo.v[a], sizeof mn);
+                        TEST_ASSERT_EQUAL_MEMORY(&mx, &gt->hi.v[a], sizeof mx);
+                    }
+                }
+            }
+        }
+    }
+    TEST_ASSERT_TRUE(checked > N_WORLDS * 10);
+    TEST_ASSERT_TRUE(kept > checked);
+    TEST_ASSERT_TRUE(n_inside > checked / 2);
+}
+
+/* Capsule sweeps whose swept volume passes within 0.3 % of r of a tilted floor's plane, on
+ * either side of touching: the scene's sweep (its plane cull before the exact test
+ * included) finds a hit exactly when the exact triangle test does on some triangle. */
+static void test_sweeps_grazing_a_plane_agree_with_the_exact_test(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 777);
+    coll_scene_t s;
+    coll_scene_init(&s);
+    coll_mesh_instance_t a;
+    place(&a, floor_mesh(0, 4, 0), 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(&s, &a);
+    int hits = 0, n = 0;
+    for (int q = 0; q < 4000; q++) {
+        random_quat(&r, &a.xf.rot);
+        if (q % 3 == 0) { a.xf.rot.x = a.xf.rot.z = 0; a.xf.rot.y = (float)core_rng_range(&r, -1, 1); a.xf.rot.w = 1; }
+        fm_quat_norm(&a.xf.rot, &a.xf.rot);
+        for (int k = 0; k < 3; k++) a.xf.pos.v[k] = (float)core_rng_range(&r, -3, 3);
+        fm_vec3_t nrm, c0, l = {{ (float)core_rng_range(&r, -2, 2), 0, (float)core_rng_range(&r, -2, 2) }};
+        fm_quat_rotate_vec3(&nrm, &a.xf.rot, &UP);
+        fm_quat_rotate_vec3(&c0, &a.xf.rot, &l);
+        fm_vec3_add(&c0, &c0, &a.xf.pos);
+        float rad = (float)core_rng_range(&r, 0.1, 0.6), hh = (float)core_rng_range(&r, 0, 0.6);
+        fm_vec3_t disp = {{ (float)core_rng_range(&r, -1, 1), (float)core_rng_range(&r, -1, 1),
+                            (float)core_rng_range(&r, -1, 1) }};
+        if (q % 2) { /* along the plane */
+            float dn = fm_vec3_dot(&disp, &nrm);
+            for (int k = 0; k < 3; k++) disp.v[k] -= dn * nrm.v[k];
+        }
+        double u = core_rng_range(&r, -0.003, 0.003);
+        float side = q % 5 == 0 ? -1.0f : 1.0f; /* below the floor too (two-sided) */
+        double nu = fabs(fm_vec3_dot(&nrm, &UP)), nd = side * fm_vec3_dot(&nrm, &disp);
+        double dist = rad * (1.0 + u) + hh * nu - fmin(0.0, nd);
+        fm_vec3_t c;
+        for (int k = 0; k < 3; k++) c.v[k] = c0.v[k] + side * (float)dist * nrm.v[k];
+        if (fabs(u) * rad < 3e-4) continue; /* within the touch tolerance: either way */
+        n++;
+        bool want = false;
+        fm_vec3_t seg[2] = { {{ 0, -hh, 0 }}, {{ 0, hh, 0 }} };
+        for (uint32_t t = 0; t < 2; t++) {
+            core_d3 w[3];
+            core_world_tri(&a, t, w);
+            fm_vec3_t tri[3];
+            for (int k = 0; k < 3; k++) tri[k] = to_f(core_d3_sub(w[k], core_d3_of(c)));
+            coll_prim_hit_t ph;
+            want = want || coll_capsule_triangle_sweep(seg, rad, &disp, tri, 1.0f, &ph);
+        }
+        coll_sweep_hit_t h;
+        bool got = coll_capsule_sweep(&s, c, UP, rad, hh, disp, 0xFF, COLL_TYPE_MESH, &h);
+        char msg[120];
+        snprintf(msg, sizeof msg, "query %d: u %.5f side %.0f got %d want %d", q, u, side, got, want);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, got, msg);
+        hits += got;
+    }
+    TEST_ASSERT_TRUE(n > 2000);
+    TEST_ASSERT_TRUE(hits > n / 4 && hits < n - n / 4);
+}
+
 static void test_grid_kinds_covered(void)
 {
     printf("grids built: %u dense, %u hashed\n", g_dense_built, g_hashed_built);
@@ -1296,6 +1442,8 @@ int main(void)
     RUN_TEST(test_sweeps_test_few_triangles_on_a_big_level);
     RUN_TEST(test_random_raycasts_match_reference);
     RUN_TEST(test_random_capsule_sweeps_match_reference);
+    RUN_TEST(test_gather_keeps_the_triangles_meeting_its_box);
+    RUN_TEST(test_sweeps_grazing_a_plane_agree_with_the_exact_test);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);
     return UNITY_END();

@@ -32,11 +32,15 @@ BENCH_VR_OBJS   := $(patsubst %.c,$(BENCH_OUT)/vr4300/%.o,$(LIB_SRCS))
 # GNU ld refuses to link MIPS III (vr4300) objects with Debian's MIPS32r2 libc, so the
 # compiler's VR4300 assembly is assembled as MIPS32r2 (the .module arch line dropped): the
 # instructions are the VR4300 code's own; the assembler rejects any that MIPS32r2 lacks.
+# (-MMD: a change to a private header such as grid_walk.h rebuilds them too)
 $(BENCH_OUT)/vr4300/%.o: %.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(qemu_CC) $(STD) $(WARN) $(BENCH_VR_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) -S $< -o $(@:.o=.s)
+	$(qemu_CC) $(STD) $(WARN) $(BENCH_VR_CFLAGS) $(INC) $(PRIV_INC) $(CCD_INC) -MMD -MP -MT $@ -MF $(@:.o=.d) \
+	    -S $< -o $(@:.o=.s)
 	sed -i '/^[[:space:]]*\.module[[:space:]]*arch=/d' $(@:.o=.s)
 	$(qemu_CC) -march=mips32r2 -c $(@:.o=.s) -o $@
+
+-include $(wildcard $(BENCH_VR_OBJS:.o=.d))
 
 $(BENCH_OUT)/vr4300/libcoll.a: $(BENCH_VR_OBJS)
 	rm -f $@ && $(qemu_AR) rcs $@ $^

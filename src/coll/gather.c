@@ -17,8 +17,20 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
     while (grid_walk_next_cell(w))
         for (uint32_t k = w->k; k < w->kend; k++) {
             uint32_t t;
-            fm_vec3_t shape[3], w0, tri[3];
-            if (!grid_walk_take_in_box_lay(w, lay, k, x, o_l, &g->lo, &g->hi, &t, &w0, shape, tri)) continue;
+            fm_vec3_t shape[3], w0, v[3], lo, hi;
+            if (!grid_walk_take_lay(w, lay, k, &t, v)) continue;
+            tri_rel_of(v, x, o_l, &w0, shape);
+            /* The triangle's box, then the box test on it: all three vertices below the
+             * gathered box on an axis is their largest below it (tri_box_reject's test, for
+             * finite coordinates), and the box is what the queries keep anyway. */
+            bool out = false;
+            for (int a = 0; a < 3; a++) {
+                float v1 = w0.v[a] + shape[1].v[a], v2 = w0.v[a] + shape[2].v[a], v0 = w0.v[a] + shape[0].v[a];
+                lo.v[a] = f_min(v0, f_min(v1, v2));
+                hi.v[a] = f_max(v0, f_max(v1, v2));
+                out |= hi.v[a] < g->lo.v[a] || lo.v[a] > g->hi.v[a];
+            }
+            if (out) continue;
             if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
                 STATS_ADD(scene, gather_overflows);
                 g->valid = false;
@@ -29,10 +41,8 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             gt->w0 = w0;
             gt->e1 = shape[1];
             gt->e2 = shape[2];
-            for (int a = 0; a < 3; a++) {
-                gt->lo.v[a] = f_min(tri[0].v[a], f_min(tri[1].v[a], tri[2].v[a]));
-                gt->hi.v[a] = f_max(tri[0].v[a], f_max(tri[1].v[a], tri[2].v[a]));
-            }
+            gt->lo = lo;
+            gt->hi = hi;
             gt->inst = inst;
             gt->tri = (int32_t)t;
         }

@@ -41,14 +41,28 @@ typedef struct {
     bool simple;     /* identity rotation and unit scale */
 } xf3_t;
 
-static inline bool vfin(const fm_vec3_t *v) { return isfinite(v->x) && isfinite(v->y) && isfinite(v->z); }
+/* isfinite on the bit pattern (the exponent not all ones): on the console isfinite is a
+ * move to the FPU, an unordered compare and a branch with two hazard slots per value; every
+ * query checks a dozen of its arguments this way. */
+static inline uint32_t f_inf_bits(float x)
+{
+    union { float f; uint32_t u; } b = { x }; /* a union: the console build has no memcpy inline */
+    return (uint32_t)((b.u & 0x7f800000u) == 0x7f800000u);
+}
+static inline bool f_isfin(float x) { return f_inf_bits(x) == 0u; }
+static inline bool vfin(const fm_vec3_t *v) { return (f_inf_bits(v->x) | f_inf_bits(v->y) | f_inf_bits(v->z)) == 0u; }
 
 static inline bool xf_prepare(const coll_transform_t *xf, xf3_t *o)
 {
     const fm_quat_t *q = &xf->rot;
     const fm_vec3_t *s = &xf->scale;
-    if (!vfin(&xf->pos) || !vfin(s) || !isfinite(q->x) || !isfinite(q->y) || !isfinite(q->z) ||
-        !isfinite(q->w))
+    /* The common instance first (no rotation, unit scale: the tests below on fewer values,
+     * with the same outcome): its rotation is valid when w is finite and not ~0. */
+    if (q->x == 0.0f && q->y == 0.0f && q->z == 0.0f && s->x == 1.0f && s->y == 1.0f && s->z == 1.0f) {
+        o->simple = true;
+        return vfin(&xf->pos) && f_isfin(q->w) && q->w * q->w > 1e-12f;
+    }
+    if (!vfin(&xf->pos) || !vfin(s) || (f_inf_bits(q->x) | f_inf_bits(q->y) | f_inf_bits(q->z) | f_inf_bits(q->w)))
         return false;
     if (s->x == 0.0f || s->y == 0.0f || s->z == 0.0f) return false;
     float n2 = q->x * q->x + q->y * q->y + q->z * q->z + q->w * q->w;
@@ -476,13 +490,8 @@ static inline void grid_walk_cells(grid_walk_t *w, const coll_mesh_t *m, const f
 /* Enters cell (x, y, z) (or entry x of a walk over every entry). A lazy walk entering its
  * second entry starts the table with the first entry's triangles that meet the box now
  * (those that did not are rejected again wherever they come back). */
-static inline void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint32_t z)
+static inline void grid_walk_enter_lazy(grid_walk_t *w, uint32_t ci)
 {
-    w->c[0] = x; w->c[1] = y; w->c[2] = z;
-    uint32_t ci = w->walk_all ? x : coll_mesh_cell_index(w->m, x, y, z);
-    w->k = w->mv.cells[ci];
-    w->kend = w->mv.cells[ci + 1u];
-    if (!w->lazy) return;
     if (w->entered == 0u) {
         w->first = ci;
         w->entered = 1u;
@@ -496,6 +505,16 @@ static inline void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint3
         w->entered = 2u;
         w->dedup = true;
     }
+}
+
+/* (the cell's refs inline: every visited cell pays this; the lazy dedup's start is rare) */
+CAND_INLINE void grid_walk_enter(grid_walk_t *w, uint32_t x, uint32_t y, uint32_t z)
+{
+    w->c[0] = x; w->c[1] = y; w->c[2] = z;
+    uint32_t ci = w->walk_all ? x : coll_mesh_cell_index(w->m, x, y, z);
+    w->k = w->mv.cells[ci];
+    w->kend = w->mv.cells[ci + 1u];
+    if (w->lazy) grid_walk_enter_lazy(w, ci);
 }
 
 /* Next cell under the box (x fastest); false at the end. */

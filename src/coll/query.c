@@ -280,7 +280,7 @@ static bool ray_result(const best_hit_t *rb, const fm_vec3_t *origin, coll_ray_h
 
 CAND_INLINE bool ray_args_ok(const fm_vec3_t *origin, const fm_vec3_t *dir, float max_dist)
 {
-    return vfin(origin) && vfin(dir) && isfinite(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
+    return vfin(origin) && vfin(dir) && f_isfin(max_dist) && max_dist > 0.0f && fm_vec3_len2(dir) > 0.0f;
 }
 
 bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, float max_dist,
@@ -311,14 +311,18 @@ typedef struct {
     float eps;          /* AABB slack */
 } capsule_q_t;
 
-/* World-relative AABB of the capsule swept from 0 to t. */
+/* World-relative AABB of the capsule swept from 0 to t. Without a branch (the console has
+ * no conditional moves; this runs for every query): the axis ends are -e and e
+ * (capsule_setup), so their least and largest are -|e| and |e|, and min(d, 0) and max(d, 0)
+ * are d/2 -+ |d|/2 (exact: halving and the sum are; a zero's sign, the only difference
+ * from f_min/f_max, is lost in adding r). */
 CAND_INLINE void swept_box(const capsule_q_t *q, float t, fm_vec3_t *lo, fm_vec3_t *hi)
 {
     for (int a = 0; a < 3; a++) {
-        float d = q->disp.v[a] * t;
-        float mn = f_min(q->seg[0].v[a], q->seg[1].v[a]), mx = f_max(q->seg[0].v[a], q->seg[1].v[a]);
-        lo->v[a] = mn + f_min(d, 0.0f) - q->r - q->eps;
-        hi->v[a] = mx + f_max(d, 0.0f) + q->r + q->eps;
+        float d = q->disp.v[a] * t, e = fabsf(q->seg[1].v[a]);
+        float h = 0.5f * d, ha = 0.5f * fabsf(d);
+        lo->v[a] = -e + (h - ha) - q->r - q->eps;
+        hi->v[a] = e + (h + ha) + q->r + q->eps;
     }
 }
 
@@ -349,14 +353,43 @@ static bool sweep_better(const coll_prim_hit_t *h, const best_hit_t *sb)
     return h->t == sb->ph.t && h->t == 0.0f && h->depth > sb->ph.depth;
 }
 
+/* The swept capsule (axis ends seg relative to the triangle's first vertex, moved by
+ * disp * t) stays on one side of the triangle's plane, farther than r with an allowance for
+ * rounding (0.1 % of r, 1e-4 of the coordinates' size): no contact is possible. The sweep's
+ * own first test, without its setup (the edges' lengths, a square root and a division for
+ * the unit normal): most candidates of a walking step are the floor under a capsule that
+ * moves across it. A near-degenerate face (the two edges within 0.6 degrees) is left to the
+ * exact test. */
+CAND_INLINE bool sweep_plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t *disp, float t,
+                                     const fm_vec3_t shape[3])
+{
+    fm_vec3_t n;
+    fm_vec3_cross(&n, &shape[1], &shape[2]);
+    float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]), dd = fm_vec3_dot(&n, disp) * t;
+    float lo = f_min(d0, d1), hi = f_max(d0, d1);
+    if (dd < 0.0f) lo += dd;
+    else hi += dd;
+    /* the swept axis crosses the plane (the common case of a candidate kept): no more work */
+    if (!(lo > 0.0f) && !(hi < 0.0f)) return false;
+    float nn = fm_vec3_len2(&n);
+    if (!(nn > 1e-4f * fm_vec3_len2(&shape[1]) * fm_vec3_len2(&shape[2]))) return false;
+    float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
+               fabsf(seg[1].z) + (fabsf(disp->x) + fabsf(disp->y) + fabsf(disp->z)) * t + fabsf(shape[1].x) +
+               fabsf(shape[1].y) + fabsf(shape[1].z) + fabsf(shape[2].x) + fabsf(shape[2].y) + fabsf(shape[2].z);
+    float rr = r * 1.001f + 1e-4f * l1 + 1e-6f;
+    float mn = lo > 0.0f ? lo : -hi;
+    return mn * mn > rr * rr * nn;
+}
+
 /* One candidate triangle t of inst (w0, shape as for ray_tri; u: the one-way up, zero for
  * an ordinary instance) against the capsule sweep; true when it is the new best hit. */
 static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
-                      const fm_vec3_t shape[3], const fm_vec3_t *u, best_hit_t *sb)
+                      const fm_vec3_t shape[3], const fm_vec3_t *u, bool cull, best_hit_t *sb)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    if (cull && sweep_plane_rejects(q->r, seg, &q->disp, sb->best, shape)) return false;
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
@@ -379,7 +412,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
-            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, sb)) {
+            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, true, sb)) {
                 swept_box(q, sb->best, &iw.lo, &iw.hi); /* shrink the sweep, and skip cells it misses */
                 local_box(inst->mesh, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &iw.llo, &iw.lhi);
                 w.skip_missed = true;
@@ -390,7 +423,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
 
 CAND_INLINE bool capsule_args_ok(const fm_vec3_t *center, const fm_vec3_t *axis, float radius, float hh)
 {
-    return vfin(center) && vfin(axis) && isfinite(radius) && radius > 0.0f && isfinite(hh) && hh >= 0.0f;
+    return vfin(center) && vfin(axis) && f_isfin(radius) && radius > 0.0f && f_isfin(hh) && hh >= 0.0f;
 }
 
 CAND_INLINE void capsule_setup(capsule_q_t *q, const fm_vec3_t *axis, float radius, float hh, const fm_vec3_t *disp)
@@ -677,7 +710,12 @@ CAND_INLINE void gather_sweep_scan(const coll_gather_t *g, const capsule_q_t *q,
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
-        if (sweep_tri(q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, sb)) {
+        /* the plane cull only where it can beat the box test just passed: a triangle flat
+         * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
+         * as tight as its plane */
+        const coll_gather_tri_t *gt = &g->tris[k];
+        bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
+        if (sweep_tri(q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, tilted, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
         }
