@@ -434,7 +434,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     float reach = was_grounded ? c->snap : contact_eps;
     support_t s = {0};
     /* the foot ray's floor, where the crack rule held the ball between an edge and it */
-    support_t floor_s = {0};
+    support_t floor_s;
+    bool edge_and_floor = false;
     bool fits = true;
     if (!jumping) {
         fm_vec3_t origin = v3_madd(cb_foot(c, *pos), up, above);
@@ -483,7 +484,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                         (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w, &far) && w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot */
-                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps) floor_s = s;
+                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps) {
+                            floor_s = s;
+                            edge_and_floor = true;
+                        }
                         s = w;
                     }
                 }
@@ -533,7 +537,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             } else {
                 float done = coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
                 if (s.gap < -step_eps && done * -s.gap < -s.gap - step_eps) fits = false;
-                if (!fits && (edges_over_floor || floor_s.found)) {
+                if (!fits && (edges_over_floor || edge_and_floor)) {
                     /* No room to be lifted onto the crack rule's edges: they do not hold
                      * it. Where the ball was held between an edge and the floor under the
                      * foot itself (no gap: a tile's edge beside it, seen as a wedge with the
@@ -542,7 +546,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * the one below. Over a real gap the step is still undone. */
                     *pos = before;
                     fits = true;
-                    s = floor_s;
+                    s = edge_and_floor ? floor_s : (support_t){0};
                     if (s.found && s.gap > 0.0f) {
                         snap_down(c, pos, s.gap);
                     } else if (s.found) {

@@ -651,6 +651,46 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
     return false;
 }
 
+bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
+                     bool rising)
+{
+    char_body_t *b = c->body;
+    /* No room to stand at the start either (the game teleported the body with its foot in
+     * a raised floor under an overhang: the sweep capsule is free, so no recovery ran): the
+     * nearest place where it stands, moved to as motion. The search's places are checked
+     * by the probe itself (a crack's edges it has no room to be lifted onto: the next place,
+     * along a V valley's slot, soak s3 l374). */
+    fm_vec3_t p = start;
+    bool stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+    const fm_vec3_t held = *pos;
+    int next = 0;
+    bool tried = false;
+    while (!stands && coll_cb_stand_search(c, &p, in_h, !was_grounded, &next)) {
+        *pos = p;
+        stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+        if (stands) b->velocity = v3_scale(v3_reject(v3_sub(*pos, start), c->up), 1.0f / c->dt);
+        p = start;
+        tried = true;
+    }
+    if (!stands && tried) {
+        *pos = held;
+        stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+    }
+    /* Nowhere to stand the way the input goes (walls), but a way out behind or beside it:
+     * the foot in a floor it has no room to be lifted onto is not standing on it, it is
+     * wedged there. Airborne, the next step's search takes that way (back from under the
+     * overhang, down the ramp): there is no walk to keep to then (soak s2 l229, s3 l175:
+     * grounded, the foot 0.18-0.23 m inside the floor, for ever). With no way out at all it
+     * stays as it stands (s2 l193). */
+    fm_vec3_t q = start;
+    int first = 0;
+    if (!stands && was_grounded && coll_cb_stand_search(c, &q, in_h, true, &first)) {
+        *pos = start; /* nor lifted part of the way: that was no motion */
+        return true;
+    }
+    return false;
+}
+
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
