@@ -1422,6 +1422,95 @@ static void test_tilted_up_in_room_corner_stands(void)
     }
 }
 
+/* A tilted up (-0.025 0.990 0.139) leaning into a room wall (face z = 24), beside a square
+ * tile 0.213 m high, taller than the step (0.128), turned 17.5 degrees: the body in the air
+ * with its foot 47 mm over the floor and its full capsule's bottom ball over the tile's
+ * edge, walking into tile and wall (soak s1 l347, the state and the tiles taken from there).
+ * The crack rule held the ball between the tile's edge and the floor (under the tilted up
+ * the floor's normal leans away from the wall, so the two look like a V valley) where a lift
+ * onto the edge had no room (the wall): the step was undone, for ever, the body at rest in
+ * the air. No room to be lifted onto the edges and the ball between an edge and the very
+ * floor under the foot: it lands on that floor. */
+static void test_tilted_up_beside_tall_tile_in_room_corner_lands(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(14.0f, -0.5f, 20.0f), cb_vec(10.0f, 0.5f, 10.0f), 0.0f);  /* floor y = 0 */
+    cb_geo_box(cb_vec(14.0f, 3.0f, 24.5f), cb_vec(10.0f, 3.0f, 0.5f), 0.0f);    /* wall face z = 24 */
+    cb_geo_box(cb_vec(15.2205f, 0.1065f, 23.3765f), cb_vec(0.6223f, 0.1065f, 0.6223f), 0.3053f); /* tile, 0.213 */
+    cb_geo_box(cb_vec(14.8460f, 0.0990f, 22.1895f), cb_vec(0.6223f, 0.0990f, 0.6223f), 0.3053f); /* tile, 0.198 */
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(14.012044f, 1.058925f, 23.090696f); /* the capsule's centre (offset 0) */
+    char_body_init(&body, &pos);
+    char_body_settings_t s = cb_foot_settings();
+    s.radius = 0.8899f;
+    s.height = 2.0446f;
+    s.step_height = 0.1276f;
+    s.floor_snap_distance = 0.3066f;
+    s.floor_max_angle = 42.76f * DEG;
+    s.up = cb_vec(-0.02482f, 0.98997f, 0.13912f);
+    s.gravity = 47.98f;
+    s.max_slides = 6;
+    s.center_offset = cb_vec(0.0f, 0.0f, 0.0f);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(2.937f, 0.532f, 0.0f));
+    body.input_velocity = cb_vec(2.951f, 0.0f, 5.849f);
+    int rest = 0, most = 0;
+    for (int f = 0; f < 60; f++) {
+        fm_vec3_t before = pos;
+        CB_STEP(&body, 1.0f / 60.0f);
+        bool still = fabsf(pos.x - before.x) + fabsf(pos.y - before.y) + fabsf(pos.z - before.z) < 1e-4f;
+        rest = still && !char_body_is_on_floor(&body) ? rest + 1 : 0;
+        if (rest > most) most = rest;
+    }
+    cb_report("tilted up beside a tall tile in a room corner: frames at rest in the air", (float)most, "");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(most < 3);
+}
+
+/* Teleported with its foot 0.2 m inside a raised slab (top y = 0.25, from x = 0.5) under an
+ * overhang 1 cm over its head, walking into a wall ahead (soak s2 l229, s2 l349, s3 l175:
+ * the same shape after a teleport or a jump up a ramp). There is no room to be lifted onto
+ * the slab and no place to stand the way the input goes: it was left grounded with its foot
+ * in the slab for ever. The way out is behind it (off the slab's edge, onto the floor): the
+ * foot in a floor it cannot be lifted onto is not standing, and a body that is not standing
+ * has no walk to keep to, so it takes it. At 30, 60 and 120 Hz. */
+static void test_teleported_into_raised_floor_under_overhang_gets_out(void)
+{
+    static const float rates[3] = {30.0f, 60.0f, 120.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(10.0f, 0.5f, 10.0f), 0.0f);   /* floor y = 0 */
+        cb_geo_box(cb_vec(2.5f, 0.125f, 0.0f), cb_vec(2.0f, 0.125f, 3.0f), 0.0f);  /* slab x 0.5..4.5, top 0.25 */
+        cb_geo_box(cb_vec(1.5f, 1.61f, 0.0f), cb_vec(2.5f, 0.25f, 3.0f), 0.0f);    /* overhang x -1..4, from y 1.36 */
+        cb_geo_box(cb_vec(1.81f, 0.75f, 0.0f), cb_vec(0.5f, 0.75f, 3.0f), 0.0f);   /* wall face x = 1.31 */
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        pos = cb_vec(1.0f, 0.05f, 0.0f); /* the foot */
+        char_body_init(&body, &pos);
+        char_body_settings_t s = cb_foot_settings();
+        s.radius = 0.3f;
+        s.height = 1.3f;
+        s.step_height = 0.3f;
+        s.floor_snap_distance = 0.3f;
+        s.center_offset = cb_vec(0.0f, 0.65f, 0.0f);
+        char_body_configure(&body, &s);
+        char_body_teleport(&body, pos, false);
+        body.input_velocity = cb_vec(3.0f, 0.0f, 0.0f);
+        int sunk = 0;
+        for (int f = 0; f < (int)rates[i]; f++) {
+            CB_STEP(&body, 1.0f / rates[i]);
+            /* grounded with the foot in the slab */
+            if (char_body_is_on_floor(&body) && pos.x > 0.5f && pos.y < 0.25f - 1e-3f) sunk++;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "teleported into a raised floor under an overhang at %.0f Hz: frames grounded in it",
+                 (double)rates[i]);
+        cb_report(name, (float)sunk, "");
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(sunk <= 1);
+        TEST_ASSERT_TRUE(pos.y > -1e-3f);
+    }
+}
+
 /* No motion across up is faster than the speed limit (200 m/s), so the velocity can say
  * what the body moved with. Falling at 15 m/s onto the edge of a ledge just past it (the
  * foot point 5 cm beyond, the lower floor 5 m down), the slide pushes the body off the edge
@@ -1556,6 +1645,8 @@ int main(void)
     RUN_TEST(test_one_slide_body_falls_along_wall_it_pushes);
     RUN_TEST(test_one_slide_body_walks_up_gentle_ramp);
     RUN_TEST(test_tilted_up_in_room_corner_stands);
+    RUN_TEST(test_tilted_up_beside_tall_tile_in_room_corner_lands);
+    RUN_TEST(test_teleported_into_raised_floor_under_overhang_gets_out);
     RUN_TEST(test_velocity_slide_off_edge_within_speed_limit);
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);
     RUN_TEST(test_crack_walk_queries_answered_by_the_gather);

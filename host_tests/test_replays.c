@@ -444,6 +444,38 @@ static void test_oracle_support(void)
     TEST_ASSERT_TRUE(soak_check_touches_walkable(&lvl, &b->settings, p));
 }
 
+/* Support: a body resting on a floor's edge is held up by it; one touching a floor's edge
+ * with its side is not (the contact normal as steep as a wall: soak s3 l96, a ramp's side
+ * at the ball's equator, 90 degrees off up; s3 l46, the low edge of an overhang's underside,
+ * 63 degrees). Hand-made: a block top (x >= e, at height y) beside a body hovering 0.2 m
+ * over the floor (bottom ball centre at (0, 0.7, 0), r 0.5, floor angle 45 degrees), the
+ * block's edge touching the ball at an angle a off up: e = 0.5 sin a, y = 0.7 - 0.5 cos a. */
+static void test_oracle_support_edge_contacts(void)
+{
+    char_body_t *b = oracle_setup(SOAK_FAIL_SUPPORT);
+    const double deg = M_PI / 180.0;
+    const double angles[4] = {0.0, 30.0, 60.0, 84.0};
+    const bool rests[4] = {true, true, false, false};
+    fm_vec3_t p = V(0, 0.2f, 0), z = V(0, 0, 0);
+    for (int i = 0; i < 4; i++) {
+        double a = angles[i] * deg, e = 0.5 * sin(a) - 1e-4, y = 0.7 - 0.5 * cos(a);
+        tops_begin();
+        top_quad(-3, 3, -3, 3, 0.0);
+        top_quad(e, 2, -2, 2, y);
+        TEST_ASSERT_EQUAL(rests[i], soak_check_touches_walkable(&lvl, &b->settings, p));
+        /* at rest there, airborne, for the oracle's 30 frames: fails exactly when it rests */
+        b->flags = 0; b->floor_id = -1;
+        osim.rest_frames = 0;
+        int k = SOAK_FAIL_NONE;
+        for (int f = 0; f < SOAK_REST_FRAMES && k == SOAK_FAIL_NONE; f++) k = oracle_step(p, p, z, z, false, false, false);
+        TEST_ASSERT_EQUAL_INT(rests[i] ? SOAK_FAIL_SUPPORT : SOAK_FAIL_NONE, k);
+    }
+    /* hovering 0.2 m over the floor with nothing beside: nothing to rest on */
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    TEST_ASSERT_FALSE(soak_check_touches_walkable(&lvl, &b->settings, p));
+}
+
 static void test_oracle_velocity(void)
 {
     oracle_setup(SOAK_FAIL_VELOCITY);
@@ -665,6 +697,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
     RUN_TEST(test_oracle_support);
+    RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);
     RUN_TEST(test_every_replay_passes);

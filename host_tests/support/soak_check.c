@@ -560,7 +560,15 @@ bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settin
         double c[3], d[3];
         closest_pt_tri(c, full.a, w->v[0], w->v[1], w->v[2]);
         sub3(d, full.a, c);
-        if (dot3(d, up) > 1e-6 && dist3(c, full.a) <= r + 1e-3) return true;
+        double dl = dist3(c, full.a);
+        if (!(dot3(d, up) > 1e-6 && dl <= r + 1e-3)) continue;
+        /* Resting on it: the contact normal (from the contact to the ball's centre) is
+         * itself walkable. A face's is its own normal; at a floor's edge that the ball
+         * touches with its side (a ramp's side beside it, soak s3 l96: 90 degrees off up;
+         * the lower edge of an overhang's underside, s3 l46: 63 degrees) it is as steep
+         * as a wall, and the ball rests on nothing there. */
+        if (dl > 1e-9 && dot3(d, up) < (cos((double)s->floor_max_angle) - 1e-4) * dl) continue;
+        return true;
     }
     return false;
 }

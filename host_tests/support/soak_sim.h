@@ -309,7 +309,8 @@ extern double soak_footing_widest; ///< their widest angular gap across up, rad
  *  owner along disp (across up). */
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp);
 /** Support: whether the full capsule touches (within 1 mm) walkable geometry below its
- *  bottom ball centre. */
+ *  bottom ball centre, resting on it: the contact normal is within the walkable angle
+ *  (not a floor's edge touched with the ball's side). */
 bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
 /** Full and sweep capsules of settings s at owner position owner. */
 void soak_capsules_at(const char_body_settings_t *s, fm_vec3_t owner, soak_capsule_t *full, soak_capsule_t *sweep);

@@ -487,20 +487,9 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         if (!kept) {
             pos = start;
             body->velocity = v3(0.0f, 0.0f, 0.0f);
-            /* No room to stand at the start either (the game teleported the body with its
-             * foot in a raised floor under an overhang: the sweep capsule is free, so no
-             * recovery ran): the nearest place where it stands, moved to as motion. */
-            fm_vec3_t p = start;
-            if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising) && coll_cb_stand_search(&c, &p, in_h)) {
-                fm_vec3_t held = pos;
-                pos = p;
-                if (coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
-                    body->velocity = v3_scale(v3_reject(v3_sub(pos, start), up), 1.0f / dt);
-                } else {
-                    pos = held;
-                    coll_cb_probe_floor(&c, &pos, was_grounded, rising);
-                }
-            }
+            /* No room to stand at the start either: the nearest place where it stands
+             * (char_body_slide.c); wedged where it is, with a way out, it is not standing. */
+            if (coll_cb_unwedge(&c, &pos, start, in_h, was_grounded, rising)) clear_floor(body);
         }
     }
 

@@ -143,7 +143,7 @@ static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_swe
 }
 
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
-                      const coll_sweep_hit_t *first, float first_len, support_t *out)
+                      const coll_sweep_hit_t *first, float first_len, support_t *out, fm_vec3_t *far_out)
 {
     const bool over_floor = floor_gap < 1e29f;
     const char_body_t *b = c->body;
@@ -177,7 +177,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
     float gap = d1 - c->step; /* resting on the first contact (the body is not moved sideways) */
-    fm_vec3_t normal = h1.normal;
+    fm_vec3_t normal = h1.normal, far = h1.point;
     fm_vec3_t tangent = v3_madd(v3_scale(up, -1.0f), h1.normal, n1u); /* length: sine of the tilt */
     if (v3_len(tangent) > 1e-4f) { /* else a face right under the centre: held */
         fm_vec3_t downhill = v3_norm(tangent);
@@ -238,6 +238,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         if (!met || !isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
             return false; /* rolls off (a ledge), or into a ceiling */
         if (descent > 0.5f * r) return false;
+        far = h2.point;
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
         fm_vec3_t side1 = v3_norm(v3_reject(h1.normal, up)), side2 = v3_norm(v3_reject(h2.normal, up));
@@ -280,6 +281,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     out->point = h1.point;
     out->id = h1.id;
     out->instance = h1.instance;
+    if (far_out) *far_out = far; /* the ball's other contact (its roll's end) */
     return true;
 }
 
@@ -454,7 +456,7 @@ static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, cons
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
     support_t w = {0};
-    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
         *s = w;
 }
 
@@ -480,6 +482,26 @@ static void floor_over_foot(const cb_ctx_t *c, fm_vec3_t pos, float height, supp
     *s = (support_t){true, false, -h.distance, n, h.point, h.id, h.instance};
 }
 
+/**
+ * The foot ray's hit is a walkable floor below the foot (out of the landing reach when the
+ * probe gets here). Where the crack rule holds the ball on edges above the foot instead, but
+ * the body has no room to be lifted onto them (a wall or an overhang over it), it is not
+ * held by them: it falls on towards that floor, the foot a point as everywhere else.
+ * Undoing the step (no room to stand) instead left it hanging at rest in the air for ever:
+ * under a tilted up in a room's corner beside a tile taller than the step, the full
+ * capsule's bottom ball over the tile's edge, the lift blocked by the wall (soak s1 l347).
+ * above: the ray's origin above the foot.
+ */
+static bool floor_below(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *hit, float above)
+{
+    float gap = hit->distance - above;
+    if (!(gap > 0.0f) || v3_dot(hit->normal, c->up) < c->body->cos_floor_max_angle) return false;
+    /* and it can fall there: wedged between stair nosings under an overhang (soak s2 l193)
+     * or in a V valley (s3 l374) it cannot, and the step is undone as before (the stand
+     * search frees it) */
+    return coll_cb_move_swept(c, &pos, v3_scale(c->up, -gap)) * gap >= gap - c->contact_eps;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -488,6 +510,9 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     const float contact_eps = c->contact_eps, step_eps = cb_len_tol(c, CB_STEP_EPS);
     float reach = was_grounded ? c->snap : contact_eps;
     support_t s = {0};
+    /* the foot ray's floor, where the crack rule held the ball between an edge and it */
+    support_t floor_s;
+    bool edge_and_floor = false;
     bool fits = true;
     if (!jumping) {
         fm_vec3_t origin = v3_madd(cb_foot(c, *pos), up, above);
@@ -529,12 +554,19 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * it, landing in it, walking along the floor into it); a stair's next
                      * tread stays a step down. */
                     support_t w = {0};
+                    fm_vec3_t far;
                     coll_sweep_hit_t edge;
                     float edge_len;
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w) && w.gap < gap - step_eps)
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w, &far) && w.gap < gap - step_eps) {
+                        /* the ball between an edge and the very floor under the foot */
+                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps) {
+                            floor_s = s;
+                            edge_and_floor = true;
+                        }
                         s = w;
+                    }
                 }
             } else if (nu > 0.0f) {
                 /* Steep: the sweep capsule rests on it, its bottom ball r away from the plane,
@@ -569,8 +601,13 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 }
             }
         }
-        if (!s.found) ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s);
-        else if (s.steep) wall_under_crack(c, *pos, reach, &hit, &s);
+        /* held by the crack rule alone, over a floor the foot ray found out of reach below */
+        bool edges_over_floor = false;
+        if (!s.found) {
+            ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s, NULL);
+            edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
+        } else if (s.steep)
+            wall_under_crack(c, *pos, reach, &hit, &s);
         if (s.found && !s.steep) {
             /* Stand exactly on it: lift onto a tread, snap down a ramp or small drop.
              * Swept: the capsule is wider than the foot point, so walking off a ledge its
@@ -582,6 +619,23 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             } else {
                 float done = coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
                 if (s.gap < -step_eps && done * -s.gap < -s.gap - step_eps) fits = false;
+                if (!fits && (edges_over_floor || edge_and_floor)) {
+                    /* No room to be lifted onto the crack rule's edges: they do not hold
+                     * it. Where the ball was held between an edge and the floor under the
+                     * foot itself (no gap: a tile's edge beside it, seen as a wedge with the
+                     * floor under a tilted up), that floor does (lifted onto it where there
+                     * is room: the same test); with no floor in reach it falls on towards
+                     * the one below. Over a real gap the step is still undone. */
+                    *pos = before;
+                    fits = true;
+                    s = edge_and_floor ? floor_s : (support_t){0};
+                    if (s.found && s.gap > 0.0f) {
+                        snap_down(c, pos, s.gap);
+                    } else if (s.found) {
+                        done = coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
+                        if (s.gap < -step_eps && done * -s.gap < -s.gap - step_eps) fits = false;
+                    }
+                }
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is

@@ -141,9 +141,18 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** For a body whose full capsule has no room to stand where it is (its foot in a floor
  *  under an overhang, where the game teleported it): the nearest place across up, swept
  *  to, never against the input, where it stands (4 distances, r/2 to 4r, none beyond the
- *  speed limit's step, x 8 directions; only on that rare step). Moves *pos there and
- *  returns true, or false. */
-bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input);
+ *  speed limit's step, x 8 directions; only on that rare step). Airborne (`airborne`: no
+ *  walk to keep to) any way, and a place where its foot is in no floor, to fall from,
+ *  will do too. Moves *pos there and returns true, or false. The places are tried in a
+ *  fixed order from *next on (0: the first); *next is set past the one returned. */
+bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bool airborne, int *next);
+/** The step could not stand the body anywhere it went, nor at its start (pos, probed
+ *  there): the stand search's places, each checked by the probe, moved to as motion (the
+ *  velocity says so). True when the body stands nowhere within reach the way its input goes
+ *  but could another way: it is wedged, not standing (the caller clears the floor; *pos is
+ *  the start). in_h: the input across up; rising: as for the probe. */
+bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
+                     bool rising);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot.
  *  True when its way entered a walkable floor (from above): a landing, the probe's job. */
 bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);

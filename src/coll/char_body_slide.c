@@ -621,27 +621,78 @@ static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
     return true;
 }
 
-bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input)
+/* Nothing (a floor, a slope, any face) between the foot at p and r + step above it: the
+ * foot is in no floor there, the body may fall from there. */
+static bool foot_free_at(const cb_ctx_t *c, fm_vec3_t p)
+{
+    const float above = c->radius + c->step;
+    coll_ray_hit_t rh;
+    return !cb_ray(c, v3_madd(cb_foot(c, p), c->up, above), v3_scale(c->up, -1.0f), above, &rh);
+}
+
+bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bool airborne, int *next)
 {
     fm_vec3_t side = v3_norm(v3_reject(v3(1.0f, 0.0f, 0.0f), c->up));
     if (v3_len(side) < 0.5f) side = v3_norm(v3_reject(v3(0.0f, 0.0f, 1.0f), c->up));
     fm_vec3_t side2 = v3_cross(c->up, side);
     const float r = c->radius;
     const float dists[4] = {0.5f * r, r, 2.0f * r, 4.0f * r};
-    fm_vec3_t in = v3_reject(input, c->up);
+    fm_vec3_t in = airborne ? v3(0.0f, 0.0f, 0.0f) : v3_reject(input, c->up);
     for (int k = 0; k < 4; k++)
         for (int dir = 0; dir < 8; dir++) {
+            if (k * 8 + dir < *next) continue; /* tried already */
+            *next = k * 8 + dir + 1;
             float a = (float)dir * (0.25f * FM_PI);
             fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
             if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
             fm_vec3_t p = *pos;
             if (coll_cb_move_swept(c, &p, v3_scale(d, dists[k])) < 1.0f) continue;
-            if (v3_finite(p) && stands_at(c, &p)) {
+            if (v3_finite(p) && (stands_at(c, &p) || (airborne && foot_free_at(c, p)))) {
                 *pos = p;
                 return true;
             }
         }
+    return false;
+}
+
+bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
+                     bool rising)
+{
+    char_body_t *b = c->body;
+    /* No room to stand at the start either (the game teleported the body with its foot in
+     * a raised floor under an overhang: the sweep capsule is free, so no recovery ran): the
+     * nearest place where it stands, moved to as motion. The search's places are checked
+     * by the probe itself (a crack's edges it has no room to be lifted onto: the next place,
+     * along a V valley's slot, soak s3 l374). */
+    fm_vec3_t p = start;
+    bool stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+    const fm_vec3_t held = *pos;
+    int next = 0;
+    bool tried = false;
+    while (!stands && coll_cb_stand_search(c, &p, in_h, !was_grounded, &next)) {
+        *pos = p;
+        stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+        if (stands) b->velocity = v3_scale(v3_reject(v3_sub(*pos, start), c->up), 1.0f / c->dt);
+        p = start;
+        tried = true;
+    }
+    if (!stands && tried) {
+        *pos = held;
+        stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
+    }
+    /* Nowhere to stand the way the input goes (walls), but a way out behind or beside it:
+     * the foot in a floor it has no room to be lifted onto is not standing on it, it is
+     * wedged there. Airborne, the next step's search takes that way (back from under the
+     * overhang, down the ramp): there is no walk to keep to then (soak s2 l229, s3 l175:
+     * grounded, the foot 0.18-0.23 m inside the floor, for ever). With no way out at all it
+     * stays as it stands (s2 l193). */
+    fm_vec3_t q = start;
+    int first = 0;
+    if (!stands && was_grounded && coll_cb_stand_search(c, &q, in_h, true, &first)) {
+        *pos = start; /* nor lifted part of the way: that was no motion */
+        return true;
+    }
     return false;
 }
 
