@@ -383,6 +383,31 @@ static void test_oracle_footing_contacts_must_surround_the_foot(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
 }
 
+/* The straight border of a tile field 1 mm beside the foot (soak seed 2 level 282): the
+ * contacts along it lie a hair under 180 degrees apart as seen from the foot, within
+ * SOAK_CRACK_OPEN of surrounding it; but they lie on one line with the tiles beyond it, a
+ * ledge the body may step down off (the one-sided overlap of the step zone), not a crack.
+ * Two tiles of the border 0.6 m apart, then three (one beside the foot), pass; the same
+ * tiles with a tile across the foot on the other side (a groove) still fail. */
+static void test_oracle_footing_ledge_a_hair_beside_the_foot(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25 */
+    fm_vec3_t z = V(0, 0, 0);
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(-2, -0.001, -2, -0.3, 0.15);
+    top_quad(-2, -0.001, 0.3, 2, 0.15);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    top_quad(-2, -0.001, -0.3, 0.3, 0.15); /* the border closed beside the foot */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    /* a tile on the foot's other side too: a groove 0.101 m wide under the foot */
+    top_quad(0.1, 2, -2, 2, 0.15);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -664,6 +689,7 @@ int main(void)
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
+    RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);
