@@ -408,6 +408,54 @@ static void test_oracle_footing_ledge_a_hair_beside_the_foot(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
 }
 
+/* The V valley of soak seed 3 levels 15 and 146: two slopes (35 and 41 degrees) with a
+ * 0.116 m slot between their bottom edges, under l15's capsule (r 0.7805, step 0.1612):
+ * r / cos > r + step on both, too steep for the capsule's bottom. The body stands on the
+ * gentler slope beside the slot the seed's way: the sweep capsule's bottom ball rests on
+ * it, the foot r / cos - (r + step) = 11.3 mm above it, the sweep ball clear of the other
+ * slope. The foot is over that slope, not over the slot, so its plane is no side of a gap
+ * under the foot, as on a gentler valley (test_oracle_footing_on_a_valley_slope); the
+ * oracle paired it with the other slope's face as a crack (11.5 mm in l15, 51.6 in l146);
+ * so it did a foot held higher over a floor (s3 l124: 36 mm over it, in a wedge). A plane
+ * the foot is at or above is no side of a gap. Lower on that slope, or in the slot, still
+ * fails. */
+static void test_oracle_footing_resting_on_a_steep_valley_slope(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    char_body_settings_t *s = &osim.body.settings;
+    s->radius = 0.7805f;
+    s->step_height = 0.1612f;
+    s->floor_max_angle = (float)(56.0 * 3.14159265358979323846 / 180.0);
+    fm_vec3_t z = V(0, 0, 0);
+    const double pi = 3.14159265358979323846, h = 0.058, ta = tan(35.0 * pi / 180), tb = tan(41.0 * pi / 180);
+    const double rest = 0.7805 / cos(35.0 * pi / 180) - (0.7805 + 0.1612);
+    const double q[3][4][3] = {{{-3, (3 - h) * ta, -5}, {-h, 0, -5}, {-h, 0, 5}, {-3, (3 - h) * ta, 5}},
+                               {{h, 0, -5}, {3, (3 - h) * tb, -5}, {3, (3 - h) * tb, 5}, {h, 0, 5}},
+                               {{-1, -0.2, -5}, {1, -0.2, -5}, {1, -0.2, 5}, {-1, -0.2, 5}}};
+    for (int k = 0; k < 6; k++) {
+        soak_wtri_t *w = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        memcpy(w->v[0], c[0], sizeof w->v[0]);
+        memcpy(w->v[1], c[(k % 2) ? 2 : 1], sizeof w->v[0]);
+        memcpy(w->v[2], c[(k % 2) ? 3 : 2], sizeof w->v[0]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = 6;
+    lvl.npieces = 0;
+    /* the foot 23 mm up the gentler slope from its edge, resting there */
+    const float x = (float)(-h - 0.023), y = (float)(0.023 * ta + rest);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(x, y, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(x, y, 0), z, z, true, false, false));
+    /* held 5 mm higher over that slope (by a wedge, s3 l124): over it, not in a gap */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(x, y + 0.005f, 0)));
+    /* sunk 3 mm more than the slope rule allows (case 1): fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(x, (float)(0.023 * ta - rest - 0.003), 0), z, z, true, false, false));
+    /* on the floor in the slot, or hanging in it 5 cm below its edges: fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.2f, 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.05f, 0), z, z, true, false, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -690,6 +738,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
     RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
+    RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_velocity);
     RUN_TEST(test_replay_format_round_trips_special_values);

@@ -412,9 +412,10 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    (higher than the step zone it would be inside the sweep capsule: penetration) */
     bool found = false;
     double z1 = -1e300, ex1 = 0;
-    /* planes of the walkable triangles the foot stands on (crossed by that line within
-     * SOAK_FOOT_TOL of the foot): case 2 below does not take them for a side of a gap */
-    enum { MAXON = 8 };
+    /* planes of the walkable triangles the foot stands on or over (crossed by that line
+     * at most SOAK_FOOT_TOL above the foot, or below it), each once: case 2 below does
+     * not take them for a side of a gap */
+    enum { MAXON = 32 };
     double onn[MAXON][3], ond[MAXON];
     int non = 0;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
@@ -430,7 +431,14 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
         if (pt_tri_dist(x, w) > 1e-9) continue;
         if (!found || t > z1) z1 = t;
-        if (fabs(t) <= SOAK_FOOT_TOL && non < MAXON) {
+        /* at it or above it (t <= SOAK_FOOT_TOL): the foot is over this floor, not over a
+         * gap, however high it is held above it (the sweep capsule's bottom ball resting on
+         * a slope too steep for the capsule's bottom, r / cos > r + step: s3 l15, l146; the
+         * ball held in a wedge over it: s3 l124) */
+        bool dup = false;
+        for (int k = 0; k < non && !dup; k++)
+            dup = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;
+        if (t <= SOAK_FOOT_TOL && !dup && non < MAXON) {
             for (int k = 0; k < 3; k++) onn[non][k] = n[k];
             ond[non++] = dot3(n, w->v[0]);
         }
