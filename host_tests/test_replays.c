@@ -383,6 +383,79 @@ static void test_oracle_footing_contacts_must_surround_the_foot(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
 }
 
+/* The straight border of a tile field 1 mm beside the foot (soak seed 2 level 282): the
+ * contacts along it lie a hair under 180 degrees apart as seen from the foot, within
+ * SOAK_CRACK_OPEN of surrounding it; but they lie on one line with the tiles beyond it, a
+ * ledge the body may step down off (the one-sided overlap of the step zone), not a crack.
+ * Two tiles of the border 0.6 m apart, then three (one beside the foot), pass; the same
+ * tiles with a tile across the foot on the other side (a groove) still fail. */
+static void test_oracle_footing_ledge_a_hair_beside_the_foot(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25 */
+    fm_vec3_t z = V(0, 0, 0);
+    tops_begin();
+    top_quad(-3, 3, -3, 3, 0.0);
+    top_quad(-2, -0.001, -2, -0.3, 0.15);
+    top_quad(-2, -0.001, 0.3, 2, 0.15);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    top_quad(-2, -0.001, -0.3, 0.3, 0.15); /* the border closed beside the foot */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, z));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, z, z, z, true, false, false));
+    /* a tile on the foot's other side too: a groove 0.101 m wide under the foot */
+    top_quad(0.1, 2, -2, 2, 0.15);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, z, z, z, true, false, false));
+}
+
+/* The V valley of soak seed 3 levels 15 and 146: two slopes (35 and 41 degrees) with a
+ * 0.116 m slot between their bottom edges, under l15's capsule (r 0.7805, step 0.1612):
+ * r / cos > r + step on both, too steep for the capsule's bottom. The body stands on the
+ * gentler slope beside the slot the seed's way: the sweep capsule's bottom ball rests on
+ * it, the foot r / cos - (r + step) = 11.3 mm above it, the sweep ball clear of the other
+ * slope. The foot is over that slope, not over the slot, so its plane is no side of a gap
+ * under the foot, as on a gentler valley (test_oracle_footing_on_a_valley_slope); the
+ * oracle paired it with the other slope's face as a crack (11.5 mm in l15, 51.6 in l146);
+ * so it did a foot held higher over a floor (s3 l124: 36 mm over it, in a wedge). A plane
+ * the foot is at or above is no side of a gap. Lower on that slope, or in the slot, still
+ * fails. */
+static void test_oracle_footing_resting_on_a_steep_valley_slope(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    char_body_settings_t *s = &osim.body.settings;
+    s->radius = 0.7805f;
+    s->step_height = 0.1612f;
+    s->floor_max_angle = (float)(56.0 * 3.14159265358979323846 / 180.0);
+    fm_vec3_t z = V(0, 0, 0);
+    const double pi = 3.14159265358979323846, h = 0.058, ta = tan(35.0 * pi / 180), tb = tan(41.0 * pi / 180);
+    const double rest = 0.7805 / cos(35.0 * pi / 180) - (0.7805 + 0.1612);
+    const double q[3][4][3] = {{{-3, (3 - h) * ta, -5}, {-h, 0, -5}, {-h, 0, 5}, {-3, (3 - h) * ta, 5}},
+                               {{h, 0, -5}, {3, (3 - h) * tb, -5}, {3, (3 - h) * tb, 5}, {h, 0, 5}},
+                               {{-1, -0.2, -5}, {1, -0.2, -5}, {1, -0.2, 5}, {-1, -0.2, 5}}};
+    for (int k = 0; k < 6; k++) {
+        soak_wtri_t *w = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        memcpy(w->v[0], c[0], sizeof w->v[0]);
+        memcpy(w->v[1], c[(k % 2) ? 2 : 1], sizeof w->v[0]);
+        memcpy(w->v[2], c[(k % 2) ? 3 : 2], sizeof w->v[0]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = 6;
+    lvl.npieces = 0;
+    /* the foot 23 mm up the gentler slope from its edge, resting there */
+    const float x = (float)(-h - 0.023), y = (float)(0.023 * ta + rest);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(x, y, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, V(x, y, 0), z, z, true, false, false));
+    /* held 5 mm higher over that slope (by a wedge, s3 l124): over it, not in a gap */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, V(x, y + 0.005f, 0)));
+    /* sunk 3 mm more than the slope rule allows (case 1): fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(x, (float)(0.023 * ta - rest - 0.003), 0), z, z, true, false, false));
+    /* on the floor in the slot, or hanging in it 5 cm below its edges: fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.2f, 0), z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.05f, 0), z, z, true, false, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -696,6 +769,8 @@ int main(void)
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
+    RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
+    RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

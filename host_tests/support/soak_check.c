@@ -366,6 +366,40 @@ int32_t soak_footing_tri2 = -1; /* the other triangle of its crack pair, or -1: 
 int soak_footing_ncontacts = 0; /* contacts around the foot of the crack case, 0: under the foot */
 double soak_footing_widest = 0; /* their widest angular gap across up, rad */
 
+/* Footing, case 2: the triangles of the first n contacts in ord (ctri) all lie on one
+ * side of a line across up beside the foot: the directions from the ball centre bc to
+ * their vertices, across up, leave a gap wider than 180 degrees (e1, e2: a basis across
+ * up). That is a ledge (the straight border of a tile field beside the foot), which the
+ * ball rolls off away from the line, not a crack. A foot a hair beside such a border sees
+ * the contacts along it nearly 180 degrees apart, within SOAK_CRACK_OPEN of surrounding
+ * it (soak seed 2 level 282: 1 mm); the edges of a crack, a slot or a hole have vertices
+ * on both sides of the foot. */
+static bool contacts_on_one_ledge(const soak_level_t *lvl, const double e1[3], const double e2[3],
+                                  const double bc[3], const int32_t *ctri, const int *ord, int n)
+{
+    enum { MAXV = 3 * 8 };
+    double a[MAXV];
+    int na = 0;
+    if (3 * n > MAXV) return false;
+    for (int i = 0; i < n; i++) {
+        const soak_wtri_t *w = &lvl->wtris[ctri[ord[i]]];
+        for (int v = 0; v < 3; v++) {
+            double d[3];
+            sub3(d, w->v[v], bc);
+            double x = dot3(d, e1), y = dot3(d, e2);
+            if (x * x + y * y < 1e-12) return false; /* a vertex right under the foot */
+            double t = atan2(y, x);
+            int j = na++;
+            while (j > 0 && a[j - 1] > t) { a[j] = a[j - 1]; j--; }
+            a[j] = t;
+        }
+    }
+    double widest = a[0] + 2 * M_PI - a[na - 1];
+    for (int i = 1; i < na; i++)
+        if (a[i] - a[i - 1] > widest) widest = a[i] - a[i - 1];
+    return widest > M_PI + SOAK_LEDGE_GAP;
+}
+
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
 {
     soak_footing_tri = soak_footing_tri2 = -1;
@@ -378,9 +412,10 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    (higher than the step zone it would be inside the sweep capsule: penetration) */
     bool found = false;
     double z1 = -1e300, ex1 = 0;
-    /* planes of the walkable triangles the foot stands on (crossed by that line within
-     * SOAK_FOOT_TOL of the foot): case 2 below does not take them for a side of a gap */
-    enum { MAXON = 8 };
+    /* planes of the walkable triangles the foot stands on or over (crossed by that line
+     * at most SOAK_FOOT_TOL above the foot, or below it), each once: case 2 below does
+     * not take them for a side of a gap */
+    enum { MAXON = 32 };
     double onn[MAXON][3], ond[MAXON];
     int non = 0;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
@@ -396,7 +431,14 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
         if (pt_tri_dist(x, w) > 1e-9) continue;
         if (!found || t > z1) z1 = t;
-        if (fabs(t) <= SOAK_FOOT_TOL && non < MAXON) {
+        /* at it or above it (t <= SOAK_FOOT_TOL): the foot is over this floor, not over a
+         * gap, however high it is held above it (the sweep capsule's bottom ball resting on
+         * a slope too steep for the capsule's bottom, r / cos > r + step: s3 l15, l146; the
+         * ball held in a wedge over it: s3 l124) */
+        bool dup = false;
+        for (int k = 0; k < non && !dup; k++)
+            dup = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;
+        if (t <= SOAK_FOOT_TOL && !dup && non < MAXON) {
             for (int k = 0; k < 3; k++) onn[non][k] = n[k];
             ond[non++] = dot3(n, w->v[0]);
         }
@@ -491,6 +533,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         for (int i = 1; i <= k; i++)
             if (ang[i] - ang[i - 1] > widest) widest = ang[i] - ang[i - 1];
         if (widest > M_PI + SOAK_CRACK_OPEN) continue;
+        if (widest > M_PI - SOAK_CRACK_OPEN && contacts_on_one_ledge(lvl, e1, e2, bc, ctri, ord, k + 1)) continue;
         if (cex[ord[k]] > worst) {
             worst = cex[ord[k]];
             soak_footing_tri = ctri[ord[k]];

@@ -229,6 +229,7 @@ const char *soak_fail_name(int kind);
 #define SOAK_PROGRESS_MIN 0.90  ///< progress: share of the input distance covered on free flat floor
 #define SOAK_FOOT_TOL     1e-3  ///< footing: foot below the surface under it, m
 #define SOAK_CRACK_OPEN   (0.5 * M_PI / 180.0) ///< footing: contacts around the foot leaving no gap wider than 180 degrees + this hold the ball (parallel edges, not a kerb beside the foot)
+#define SOAK_LEDGE_GAP    1e-9  ///< footing: contacts whose triangles' vertices leave a gap wider than 180 degrees + this (rad, rounding) around the foot are a ledge beside it, not a crack
 #define SOAK_REST_FRAMES  30    ///< support: frames at rest before the body must be grounded
 #define SOAK_REST_MOVE    1e-4  ///< support: "at rest" = at most this displacement per frame, m
 #define SOAK_VEL_TOL_POS  1e-3  ///< velocity: tolerance, as a displacement over dt (m)
