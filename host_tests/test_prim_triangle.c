@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #ifdef __mips__
 #define N_RANDOM_SWEEPS 1500
@@ -750,10 +751,71 @@ static void test_ray_triangle_basics(void)
     TEST_ASSERT_FALSE(coll_ray_triangle(&o3, &par, floor_tri, 100.0f, &h));
 }
 
+
+/* A triangle's prep (prim.h), filled by the first test and used by the later ones, gives
+ * the plain tests' results to the bit, for the sweep (held or not) and the overlap, on the
+ * random triangles (needles and slivers among them). The gather keeps one per triangle. */
+static bool hits_equal(bool ga, const coll_prim_hit_t *a, bool gb, const coll_prim_hit_t *b)
+{
+    return ga == gb && (!ga || memcmp(a, b, sizeof *a) == 0);
+}
+
+static void test_prepared_triangle_is_bit_identical(void)
+{
+    int n_hits = 0, n_prepared = 0;
+    for (int i = 0; i < N_RANDOM_SWEEPS / 4; i++) {
+        prim_ref_v3 rt[3];
+        double L = pow(10, rnd_range(-1, 1.2));
+        random_triangle(rt, L);
+        fm_vec3_t tri[3] = { V(0, 0, 0), F(prim_ref_sub(rt[1], rt[0])), F(prim_ref_sub(rt[2], rt[0])) };
+        coll_tri_prep_t prep;
+        memset(&prep, 0xA5, sizeof prep); /* garbage, as on the stack: ready false is what counts */
+        prep.ready = false;
+        for (int k = 0; k < 4; k++) { /* one prep, several queries */
+            double r = exp(rnd_range(log(0.02), log(2.0)));
+            prim_ref_v3 c = prim_ref_scale(rnd_unit(), L * rnd_range(0, 1.5));
+            prim_ref_v3 ax = prim_ref_scale(rnd_unit(), rnd() < 0.2 ? 0.0 : rnd_range(0, 1));
+            fm_vec3_t seg[2] = { F(prim_ref_sub(c, ax)), F(prim_ref_add(c, ax)) };
+            fm_vec3_t d = F(prim_ref_scale(rnd_unit(), L * rnd_range(0, 2)));
+            float t_max = rnd() < 0.5f ? 1.0f : (float)rnd();
+            coll_prim_hit_t a, b;
+            memset(&a, 0, sizeof a);
+            memset(&b, 0, sizeof b);
+            bool held = k & 1;
+            bool ga = held ? coll_tri_sweep_before(seg, (float)r, &d, tri, t_max, &a)
+                           : coll_tri_sweep(seg, (float)r, &d, tri, t_max, &a);
+            bool gb = coll_tri_sweep_prep(seg, (float)r, &d, tri, &prep, t_max, held, &b);
+            TEST_ASSERT_TRUE(hits_equal(ga, &a, gb, &b));
+            n_hits += ga;
+            memset(&a, 0, sizeof a);
+            memset(&b, 0, sizeof b);
+            ga = coll_capsule_triangle_overlap(seg, (float)r, tri, &a);
+            gb = coll_capsule_triangle_overlap_prep(seg, (float)r, tri, &prep, &b);
+            TEST_ASSERT_TRUE(hits_equal(ga, &a, gb, &b));
+            TEST_ASSERT_TRUE(prep.ready);
+        }
+        n_prepared++;
+    }
+    TEST_ASSERT_TRUE(n_hits > N_RANDOM_SWEEPS / 40);
+    /* a ready prep is what the tests use: a wrong one (the normal reversed) shows */
+    coll_tri_prep_t prep = { { { 0, 0, 0 } }, { { 0, 0, 0 } }, false, false };
+    fm_vec3_t seg[2] = { V(0, 2, 0), V(0, 3, 0) }, d = V(0, -4, 0);
+    coll_prim_hit_t h;
+    TEST_ASSERT_TRUE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, false, &h));
+    TEST_ASSERT_TRUE(prep.ready && prep.has_face);
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, fabsf(prep.n.y));
+    TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
+    prep.has_face = false; /* as if no face: the face's cull and test are skipped, the edges answer */
+    prep.n = V(0, 0, 0);
+    TEST_ASSERT_FALSE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, false, &h));
+    (void)n_prepared;
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_face_hit_vertical_capsule);
+    RUN_TEST(test_prepared_triangle_is_bit_identical);
     RUN_TEST(test_tilted_capsule_face_hit_uses_lower_end);
     RUN_TEST(test_edge_hit);
     RUN_TEST(test_vertex_hit);

@@ -1014,6 +1014,16 @@ static void test_gathered_sweep_leaving_the_box(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-6f, want.t, h.t);
     TEST_ASSERT_FLOAT_WITHIN(1e-6f, 0.1375f, h.t);
     TEST_ASSERT_EQUAL_INT32(want.triangle, h.triangle);
+    /* the wall's triangles tested exactly keep their setup (gather.h), and the step's later
+     * queries, using it, answer to the bit as the first did */
+    TEST_ASSERT_TRUE(g.tris[0].prep.ready || g.tris[1].prep.ready);
+    coll_sweep_hit_t again;
+    TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &again));
+    TEST_ASSERT_EQUAL_MEMORY(&h.point, &again.point, sizeof h.point);
+    TEST_ASSERT_EQUAL_MEMORY(&h.normal, &again.normal, sizeof h.normal);
+    TEST_ASSERT_EQUAL_MEMORY(&h.t, &again.t, sizeof h.t);
+    TEST_ASSERT_EQUAL_INT32(h.triangle, again.triangle);
+    st.gather_queries--; /* (the counts below are the first sweep's) */
     /* -x: nothing within the box; the wall at -3 lies beyond it: the scene answers */
     d = (fm_vec3_t){{ -4, 0, 0 }};
     TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &h));

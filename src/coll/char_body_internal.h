@@ -76,7 +76,7 @@ typedef struct {
     float dt;            ///< this step's (clamped) duration, s
     float max_speed;     ///< CB_MAX_SPEED in the body's unit: no motion across up is faster
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
-    const coll_gather_t *gather; ///< the step's candidate triangles, or NULL (scene queries)
+    coll_gather_t *gather; ///< the step's candidate triangles (their prep filled by the queries), or NULL
 } cb_ctx_t;
 
 /** A tolerance given in metres (CB_*), in the body's length unit (the ones used on every

@@ -45,6 +45,7 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             gt->hi = hi;
             gt->inst = inst;
             gt->tri = (int32_t)t;
+            gt->prep.ready = false; /* filled by the first exact test */
         }
     return true;
 }

@@ -87,6 +87,28 @@ bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
 bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                            const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit);
 
+/**
+ * What the triangle tests compute from the three vertices alone, independent of the query
+ * (prim_triangle.c): the raw normal (the two shortest edges crossed, exactly for a flat
+ * sliver), the unit normal (a square root and a division) and whether there is a face. A
+ * caller that tests the same triangle (the same three vertex values) against several
+ * queries keeps one (a step's gather: gather.h), ready = false at first: the first *_prep
+ * test fills it, the later ones use it. Results are bit-identical to the plain tests'.
+ */
+typedef struct {
+    fm_vec3_t nraw;   ///< (edge ia) x (edge ib), the two shortest edges
+    fm_vec3_t n;      ///< unit normal when has_face, else zero
+    bool has_face;
+    bool ready;       ///< false: not filled yet
+} coll_tri_prep_t;
+
+/** coll_tri_sweep (held false) or coll_tri_sweep_before (held true), and
+ *  coll_capsule_triangle_overlap, through the triangle's prep p (filled when not ready). */
+bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
+bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                        coll_tri_prep_t *p, coll_prim_hit_t *hit);
+
 #ifdef COLL_METHOD_HOOKS
 /*
  * Method hooks, for benchmarks and tests only. The library proper has no runtime switch

@@ -41,3 +41,12 @@ bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *dis
 {
     return tri_sweep_method(seg, r, disp, tri, t_max, true, hit);
 }
+
+bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+{
+#ifdef COLL_METHOD_HOOKS
+    if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
+#endif
+    return coll_prim_tri_sweep_prep(seg, r, disp, tri, p, t_max, held, hit);
+}

@@ -236,6 +236,29 @@ static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
     t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
 
+/* tri_setup through a triangle's prep (prim.h): made from it when it is ready, else made
+ * and kept in it (p NULL: tri_setup). The same expressions either way: bit-identical. */
+static inline void tri_setup_keep(tri_t *t, const fm_vec3_t tri[3], coll_tri_prep_t *p)
+{
+    if (!p) {
+        tri_setup(t, tri);
+        return;
+    }
+    if (p->ready) {
+        for (int i = 0; i < 3; i++) t->v[i] = tri[i];
+        for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
+        t->nraw = p->nraw;
+        t->n = p->n;
+        t->has_face = p->has_face;
+        return;
+    }
+    tri_setup(t, tri);
+    p->nraw = t->nraw;
+    p->n = t->n;
+    p->has_face = t->has_face;
+    p->ready = true;
+}
+
 /** Point q (on or near the plane) inside the closed triangle. */
 static bool tri_contains(const tri_t *t, fm_vec3_t q)
 {
@@ -530,7 +553,7 @@ static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + f
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
 static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                      float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
+                      coll_tri_prep_t *prep, float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
@@ -539,7 +562,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     if (!prim_sane3(v3_scale(*disp, t_max))) return false;
 
     sweep_ctx_t c;
-    tri_setup(&c.tri, tri);
+    tri_setup_keep(&c.tri, tri, prep);
     c.a = seg[0]; c.b = seg[1]; c.d = *disp;
     c.s = v3_sub(c.b, c.a);
     c.ss = v3_dot(c.s, c.s);
@@ -647,36 +670,54 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                             float t_max, bool confirm, coll_prim_hit_t *hit)
 {
-    return tri_sweep(seg, r, disp, tri, t_max, confirm, false, hit);
+    return tri_sweep(seg, r, disp, tri, NULL, t_max, confirm, false, hit);
 }
 
 bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                                 float t_max, coll_prim_hit_t *hit)
 {
-    return tri_sweep(seg, r, disp, tri, t_max, true, true, hit);
+    return tri_sweep(seg, r, disp, tri, NULL, t_max, true, true, hit);
+}
+
+bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                              coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+{
+    return tri_sweep(seg, r, disp, tri, p, t_max, true, held, hit);
 }
 
 bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return tri_sweep(seg, r, disp, tri, t_max, true, false, hit);
+    return tri_sweep(seg, r, disp, tri, NULL, t_max, true, false, hit);
 }
 
-bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
-                                   coll_prim_hit_t *hit)
+static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3], coll_tri_prep_t *prep,
+                        coll_prim_hit_t *hit)
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r)) return false;
     if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) ||
         !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
     tri_t t;
-    tri_setup(&t, tri);
+    tri_setup_keep(&t, tri, prep);
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&t, seg[0], seg[1], &ps, &pt);
     float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     if (!(d2 < rin * rin)) return false;
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
     return true;
+}
+
+bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                   coll_prim_hit_t *hit)
+{
+    return tri_overlap(seg, r, tri, NULL, hit);
+}
+
+bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                        coll_tri_prep_t *p, coll_prim_hit_t *hit)
+{
+    return tri_overlap(seg, r, tri, p, hit);
 }
 
 /* ---------------------------------------------------------------- ray */

@@ -90,4 +90,8 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
 bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                                 float t_max, coll_prim_hit_t *hit);
 
+/** coll_prim_tri_sweep_ex / coll_prim_tri_sweep_before (held) on a prepared triangle. */
+bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                              coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
+
 #endif

@@ -382,9 +382,11 @@ CAND_INLINE bool sweep_plane_rejects(float r, const fm_vec3_t seg[2], const fm_v
 }
 
 /* One candidate triangle t of inst (w0, shape as for ray_tri; u: the one-way up, zero for
- * an ordinary instance) against the capsule sweep; true when it is the new best hit. */
+ * an ordinary instance; gt: the gathered triangle, NULL on the scene's walk) against the
+ * capsule sweep; true when it is the new best hit. */
 static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
-                      const fm_vec3_t shape[3], const fm_vec3_t *u, bool cull, best_hit_t *sb)
+                      const fm_vec3_t shape[3], const fm_vec3_t *u, bool cull, coll_gather_tri_t *gt,
+                      best_hit_t *sb)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
@@ -393,8 +395,9 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
-    bool got = sb->have ? coll_tri_sweep_before(seg, q->r, &q->disp, shape, sb->best, &ph)
-                        : coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph);
+    bool got = gt ? coll_tri_sweep_prep(seg, q->r, &q->disp, shape, &gt->prep, sb->best, sb->have, &ph)
+           : sb->have ? coll_tri_sweep_before(seg, q->r, &q->disp, shape, sb->best, &ph)
+                      : coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph);
     if (!got || !sweep_better(&ph, sb)) return false;
     fm_vec3_add(&ph.point, &ph.point, w0);
     best_take(sb, &ph, inst, NULL, t);
@@ -412,7 +415,7 @@ static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
-            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, true, sb)) {
+            if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, true, NULL, sb)) {
                 swept_box(q, sb->best, &iw.lo, &iw.hi); /* shrink the sweep, and skip cells it misses */
                 local_box(inst->mesh, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &iw.llo, &iw.lhi);
                 w.skip_missed = true;
@@ -554,7 +557,7 @@ static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape
 
 /* One candidate triangle t of inst (w0, shape, u as for sweep_tri) against the overlap query. */
 static void overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
-                        const fm_vec3_t shape[3], const fm_vec3_t *u, contacts_t *c)
+                        const fm_vec3_t shape[3], const fm_vec3_t *u, coll_gather_tri_t *gt, contacts_t *c)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
@@ -562,7 +565,9 @@ static void overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, 
     if (plane_rejects(q->r, seg, shape)) return;
     if (!one_way_capsule(u, shape, seg, q->r)) return;
     coll_prim_hit_t ph;
-    if (coll_capsule_triangle_overlap(seg, q->r, shape, &ph) && ph.depth > 0.0f) {
+    bool got = gt ? coll_capsule_triangle_overlap_prep(seg, q->r, shape, &gt->prep, &ph)
+                  : coll_capsule_triangle_overlap(seg, q->r, shape, &ph);
+    if (got && ph.depth > 0.0f) {
         fm_vec3_add(&ph.point, &ph.point, w0);
         contact_add(c, &ph, inst, NULL, t);
     }
@@ -579,7 +584,7 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
-            overlap_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, c);
+            overlap_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, NULL, c);
         }
     grid_walk_end(&w, scene);
 }
@@ -665,7 +670,7 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
     return true;
 }
 
-bool coll_gather_raycast(const coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, float max_dist, coll_ray_hit_t *hit)
+bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, float max_dist, coll_ray_hit_t *hit)
 {
     if (!g || !g->scene) return false;
     if (!ray_args_ok(&origin, &dir, max_dist)) return false;
@@ -701,7 +706,7 @@ CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, con
 
 /* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;
  * lo..hi: its box swept to sb's limit) into sb. */
-CAND_INLINE void gather_sweep_scan(const coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
+CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
                                    fm_vec3_t lo, fm_vec3_t hi, best_hit_t *sb)
 {
     fm_vec3_t glo, ghi;
@@ -713,9 +718,9 @@ CAND_INLINE void gather_sweep_scan(const coll_gather_t *g, const capsule_q_t *q,
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
          * as tight as its plane */
-        const coll_gather_tri_t *gt = &g->tris[k];
+        coll_gather_tri_t *gt = &g->tris[k];
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
-        if (sweep_tri(q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, tilted, sb)) {
+        if (sweep_tri(q, gt->inst, gt->tri, &w0, shape, &u, tilted, gt, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
         }
@@ -753,7 +758,7 @@ static float gather_covered_part(const coll_gather_t *g, const fm_vec3_t *rel, c
 #if defined(__GNUC__)
 __attribute__((noinline)) /* (out of the common path's code) */
 #endif
-static bool gather_sweep_outside(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                  float inner_half_height, fm_vec3_t displacement, const capsule_q_t *q,
                                  const fm_vec3_t *rel, coll_sweep_hit_t *hit)
 {
@@ -777,7 +782,7 @@ static bool gather_sweep_outside(const coll_gather_t *g, fm_vec3_t center, fm_ve
                               hit);
 }
 
-bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
 {
     if (!g || !g->scene) return false;
@@ -797,7 +802,7 @@ bool coll_gather_capsule_sweep(const coll_gather_t *g, fm_vec3_t center, fm_vec3
     return sweep_result(&sb, &center, hit);
 }
 
-uint32_t coll_gather_capsule_overlaps(const coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                       float inner_half_height, coll_contact_t *out, uint32_t max_out)
 {
     if (!g || !g->scene) return 0;
@@ -818,7 +823,7 @@ uint32_t coll_gather_capsule_overlaps(const coll_gather_t *g, fm_vec3_t center, 
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
-        overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &c);
+        overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &g->tris[k], &c);
     }
     if (g->types & COLL_TYPE_BODY) overlap_bodies(g->scene, &q, g->read_mask, &c);
     return c.total;
