@@ -20,27 +20,29 @@ static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const col
  * box about its centre until the buffer has room or the new triangle is out, dropping the
  * kept triangles the smaller box misses (the walk's own test, so every triangle that meets
  * the final box is kept: the box only shrinks, and the walk goes on with it). Each round
- * takes 7/8 of the smallest scale that still keeps every triangle, so at least the farthest
- * goes. False when the box would fall below a quarter of the asked one (*scale: the part
- * left): a dense spot under the body itself, where the scene path is the better one. */
-static bool gather_shrink(coll_gather_t *g, const fm_vec3_t *lo, const fm_vec3_t *hi, float *scale)
+ * takes 3/4 of the smallest scale that still keeps every triangle, so at least the farthest
+ * goes. GATHER_FULL when the box would fall below half the asked one (g->scale: the part
+ * left): a dense spot under the body itself, where the scene path is the better one.
+ * Out of line, with the box by value: the walk's loop must not pay for it. */
+enum { GATHER_ADD, GATHER_SKIP, GATHER_FULL };
+__attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t lo, fm_vec3_t hi)
 {
     for (;;) {
         /* the scale of the box (relative to now) at which each triangle starts to meet it */
         float smax = 0.0f;
         for (int a = 0; a < 3; a++) {
             float h = g->hi.v[a];
-            if (!(h > 0.0f)) return false;
+            if (!(h > 0.0f)) return GATHER_FULL;
             float inv = 1.0f / h;
-            smax = f_max(smax, f_max(-hi->v[a] * inv, lo->v[a] * inv));
+            smax = f_max(smax, f_max(-hi.v[a] * inv, lo.v[a] * inv));
             for (uint16_t k = 0; k < g->ntris; k++) {
                 const coll_gather_tri_t *gt = &g->tris[k];
                 smax = f_max(smax, f_max(-gt->hi.v[a] * inv, gt->lo.v[a] * inv));
             }
         }
         float f = 0.75f * f_min(smax, 1.0f);
-        if (!(*scale * f >= 0.5f)) return false;
-        *scale *= f;
+        if (!(g->scale * f >= 0.5f)) return GATHER_FULL;
+        g->scale *= f;
         for (int a = 0; a < 3; a++) {
             g->hi.v[a] *= f;
             g->lo.v[a] = -g->hi.v[a];
@@ -49,15 +51,15 @@ static bool gather_shrink(coll_gather_t *g, const fm_vec3_t *lo, const fm_vec3_t
         for (uint16_t k = 0; k < g->ntris; k++)
             if (box_meets(&g->tris[k].lo, &g->tris[k].hi, g)) g->tris[n++] = g->tris[k];
         g->ntris = n;
-        if (n < COLL_GATHER_MAX || !box_meets(lo, hi, g)) return true;
+        if (!box_meets(&lo, &hi, g)) return GATHER_SKIP;
+        if (n < COLL_GATHER_MAX) return GATHER_ADD;
     }
 }
 
 /* The walk of one instance, with the mesh layout lay a constant at each call below (the
  * per-entry fetch then carries no flag tests); false when the buffer overflowed. */
 CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_instance_t *inst, const xf3_t *x,
-                             const fm_vec3_t *o_l, fm_vec3_t *llo, fm_vec3_t *lhi, float *scale, seen_t *seen,
-                             const uint32_t lay)
+                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay)
 {
     const coll_scene_t *scene = g->scene;
     while (grid_walk_next_cell(w))
@@ -80,16 +82,18 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             if (g->ntris >= COLL_GATHER_MAX) {
                 /* too many: a smaller box around the same centre (queries outside it go to
                  * the scene), or when that would be too small, every query to the scene */
-                if (!gather_shrink(g, &lo, &hi, scale)) {
+                int r = gather_shrink(g, lo, hi);
+                if (r == GATHER_FULL) {
                     STATS_ADD(scene, gather_overflows);
                     g->valid = false;
                     seen_clear(seen);
                     return false;
                 }
-                /* the rest of the walk on the smaller box (its local box, cells it misses skipped) */
-                local_box(w->m, x, o_l, &g->lo, &g->hi, llo, lhi);
+                /* the rest of the walk on the smaller box: its local box (the caller's, which
+                 * w->llo / w->lhi point to), the cells it misses skipped */
+                local_box(w->m, x, o_l, &g->lo, &g->hi, (fm_vec3_t *)(uintptr_t)w->llo, (fm_vec3_t *)(uintptr_t)w->lhi);
                 w->skip_missed = true;
-                if (!box_meets(&lo, &hi, g)) continue;
+                if (r == GATHER_SKIP) continue;
             }
             coll_gather_tri_t *gt = &g->tris[g->ntris++];
             gt->w0 = w0;
@@ -118,11 +122,11 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         g->lo.v[a] = -g->hi.v[a];
     }
     g->valid = true;
+    g->scale = 1.0f;
     STATS_ADD(scene, gathers);
     if (!(types & COLL_TYPE_MESH)) return;
     seen_t seen;
     seen_init(&seen);
-    float scale = 1.0f; /* the gathered box's size against the one asked (gather_shrink) */
     for (uint16_t i = 0; i < scene->mesh_count; i++) {
         const coll_mesh_instance_t *inst = scene->meshes[i];
         if (!inst || !(inst->write_mask & read_mask)) continue;
@@ -139,11 +143,11 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
         bool ok;
         switch (grid_walk_layout(&w)) {
-        case COLL_MESHF_IDX16 | COLL_MESHF_REF16: ok = gather_walk(g, &w, inst, &x, &o_l, &llo, &lhi, &scale, &seen, I16); break;
+        case COLL_MESHF_IDX16 | COLL_MESHF_REF16: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16); break;
         case COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_REF16:
-            ok = gather_walk(g, &w, inst, &x, &o_l, &llo, &lhi, &scale, &seen, COLL_MESHF_QUANT | I16);
+            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16);
             break;
-        default: ok = gather_walk(g, &w, inst, &x, &o_l, &llo, &lhi, &scale, &seen, grid_walk_layout(&w)); break;
+        default: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, grid_walk_layout(&w)); break;
         }
         if (!ok) return;
         grid_walk_end(&w, scene);

@@ -38,6 +38,7 @@ typedef struct {
     fm_vec3_t lo, hi;    ///< the gathered box, relative to origin (maybe shrunk: gather_shrink)
     uint8_t read_mask, types;
     bool valid;          ///< false: overflowed (or nothing gathered): every query goes to the scene
+    float scale;         ///< the gathered box's size against the one asked (gather_shrink)
     uint16_t ntris;
     coll_gather_tri_t tris[COLL_GATHER_MAX];
 } coll_gather_t;
