@@ -25,8 +25,10 @@ static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const col
  * left): a dense spot under the body itself, where the scene path is the better one.
  * Out of line, with the box by value: the walk's loop must not pay for it. */
 enum { GATHER_ADD, GATHER_SKIP, GATHER_FULL };
-__attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t lo, fm_vec3_t hi)
+__attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t lo, fm_vec3_t hi, grid_walk_t *w,
+                                                  const xf3_t *x, const fm_vec3_t *o_l)
 {
+    int r = GATHER_FULL;
     for (;;) {
         /* the scale of the box (relative to now) at which each triangle starts to meet it */
         float smax = 0.0f;
@@ -51,9 +53,20 @@ __attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t l
         for (uint16_t k = 0; k < g->ntris; k++)
             if (box_meets(&g->tris[k].lo, &g->tris[k].hi, g)) g->tris[n++] = g->tris[k];
         g->ntris = n;
-        if (!box_meets(&lo, &hi, g)) return GATHER_SKIP;
-        if (n < COLL_GATHER_MAX) return GATHER_ADD;
+        if (!box_meets(&lo, &hi, g)) { r = GATHER_SKIP; break; }
+        if (n < COLL_GATHER_MAX) { r = GATHER_ADD; break; }
     }
+    /* the rest of the walk on the smaller box: its local box (local_box's for a box centred
+     * on the origin; not a call to it, which the console build then outlined for both
+     * callers) in the caller's llo / lhi, which w points to; the cells it misses skipped */
+    fm_vec3_t hl = x->simple ? g->hi : mul3_abs(x->inv, &g->hi);
+    fm_vec3_t *llo = (fm_vec3_t *)(uintptr_t)w->llo, *lhi = (fm_vec3_t *)(uintptr_t)w->lhi;
+    for (int a = 0; a < 3; a++) {
+        llo->v[a] = o_l->v[a] - hl.v[a] - w->m->grid_margin;
+        lhi->v[a] = o_l->v[a] + hl.v[a] + w->m->grid_margin;
+    }
+    w->skip_missed = true;
+    return r;
 }
 
 /* The walk of one instance, with the mesh layout lay a constant at each call below (the
@@ -82,17 +95,13 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             if (g->ntris >= COLL_GATHER_MAX) {
                 /* too many: a smaller box around the same centre (queries outside it go to
                  * the scene), or when that would be too small, every query to the scene */
-                int r = gather_shrink(g, lo, hi);
+                int r = gather_shrink(g, lo, hi, w, x, o_l);
                 if (r == GATHER_FULL) {
                     STATS_ADD(scene, gather_overflows);
                     g->valid = false;
                     seen_clear(seen);
                     return false;
                 }
-                /* the rest of the walk on the smaller box: its local box (the caller's, which
-                 * w->llo / w->lhi point to), the cells it misses skipped */
-                local_box(w->m, x, o_l, &g->lo, &g->hi, (fm_vec3_t *)(uintptr_t)w->llo, (fm_vec3_t *)(uintptr_t)w->lhi);
-                w->skip_missed = true;
                 if (r == GATHER_SKIP) continue;
             }
             coll_gather_tri_t *gt = &g->tris[g->ntris++];
