@@ -1310,6 +1310,10 @@ static void test_gather_keeps_the_triangles_meeting_its_box(void)
             ASSERT_NO_ALLOC(coll_gather_begin(&g, &g_w.scene, lo, hi, mask, COLL_TYPE_MESH));
             if (!g.valid) continue; /* overflowed: every query goes to the scene */
             checked++;
+            /* a gather that shrank its box (gather_shrink) filtered its kept triangles by the
+             * query-relative test only: they met the larger local box */
+            bool shrunk = false;
+            for (int a = 0; a < 3; a++) shrunk = shrunk || g.hi.v[a] != 0.5f * (hi.v[a] - lo.v[a]);
             for (uint16_t k = 0; k < g.ntris; k++)
                 for (uint16_t j = (uint16_t)(k + 1); j < g.ntris; j++)
                     TEST_ASSERT_FALSE(g.tris[k].inst == g.tris[j].inst && g.tris[k].tri == g.tris[j].tri);
@@ -1332,7 +1336,7 @@ static void test_gather_keeps_the_triangles_meeting_its_box(void)
                      * query-relative one (the cells list a triangle only where its surface
                      * meets them, so one passing both may still be left out, but not one
                      * with a vertex well inside both boxes) */
-                    bool meets = (in->write_mask & mask) && !tri_box_reject(v, &llo, &lhi) &&
+                    bool meets = (in->write_mask & mask) && (shrunk || !tri_box_reject(v, &llo, &lhi)) &&
                                  !tri_box_reject(tri, &g.lo, &g.hi);
                     bool inside = false;
                     for (int kk = 0; kk < 3; kk++) {
@@ -1368,6 +1372,67 @@ static void test_gather_keeps_the_triangles_meeting_its_box(void)
     TEST_ASSERT_TRUE(checked > N_WORLDS * 10);
     TEST_ASSERT_TRUE(kept > checked);
     TEST_ASSERT_TRUE(n_inside > checked / 2);
+}
+
+/* A gather over more triangles than it keeps shrinks its box about the same centre (down
+ * to half the asked size) instead of sending every query of the step to the scene: it
+ * stays valid, keeps every triangle that meets the smaller box, and a query inside it
+ * answers as the scene does. A box that would need less than half still overflows. */
+static void test_gather_shrinks_its_box_on_dense_triangles(void)
+{
+    /* 40x40 quads of 5 cm: a 0.6 m box meets ~340 triangles, a 0.3 m one ~100 */
+    uint32_t nv;
+    uint32_t nt = core_grid_level(g_verts, &nv, g_idx, 40, 40, 0.05f, -1, 0, -1);
+    for (uint32_t i = 0; i < nv; i++) g_verts[3 * i + 1] = 0;
+    coll_mesh_build_opts_t o = { 0.25f, 0 };
+    const coll_mesh_t *m = build_mesh(0, nv, nt, &o);
+    coll_scene_t s;
+    coll_scene_init(&s);
+    coll_query_stats_t st = {0};
+    coll_scene_set_stats(&s, &st);
+    coll_mesh_instance_t a;
+    place(&a, m, 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(&s, &a);
+    static coll_gather_t g;
+    fm_vec3_t lo = {{ -0.31f, -0.3f, -0.29f }}, hi = {{ 0.29f, 0.3f, 0.31f }};
+    ASSERT_NO_ALLOC(coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH));
+    TEST_ASSERT_TRUE(g.valid);
+    TEST_ASSERT_EQUAL_UINT32(0, st.gather_overflows);
+    for (int ax = 0; ax < 3; ax++) {
+        float asked = 0.5f * (hi.v[ax] - lo.v[ax]);
+        TEST_ASSERT_TRUE(g.hi.v[ax] < asked && g.hi.v[ax] >= 0.5f * asked * 0.999f);
+        TEST_ASSERT_EQUAL_FLOAT(-g.hi.v[ax], g.lo.v[ax]);
+    }
+    TEST_ASSERT_TRUE(g.ntris > 0 && g.ntris <= COLL_GATHER_MAX);
+    uint32_t meeting = 0;
+    for (uint32_t t = 0; t < nt; t++) {
+        fm_vec3_t v[3];
+        coll_mesh_triangle(m, t, v);
+        bool meets = true;
+        for (int ax = 0; ax < 3; ax++) {
+            float r0 = v[0].v[ax] - g.origin.v[ax], r1 = v[1].v[ax] - g.origin.v[ax], r2 = v[2].v[ax] - g.origin.v[ax];
+            float mn = f_min(r0, f_min(r1, r2)), mx = f_max(r0, f_max(r1, r2));
+            meets = meets && !(mx < g.lo.v[ax] || mn > g.hi.v[ax]);
+        }
+        int found = 0;
+        for (uint16_t k = 0; k < g.ntris; k++) found += g.tris[k].tri == (int32_t)t;
+        TEST_ASSERT_TRUE(found <= 1);
+        if (meets) TEST_ASSERT_EQUAL_INT_MESSAGE(1, found, "a triangle meeting the shrunk box is missing");
+        meeting += meets;
+    }
+    TEST_ASSERT_TRUE(meeting > 0);
+    /* a capsule inside the shrunk box: the gathered answer is the scene's */
+    static coll_contact_t out_g[256], out_s[256];
+    fm_vec3_t c = {{ 0.02f, 0.05f, -0.01f }};
+    uint32_t ng = coll_gather_capsule_overlaps(&g, c, UP, 0.08f, 0.0f, out_g, 256);
+    uint32_t ns = coll_capsule_overlaps(&s, c, UP, 0.08f, 0.0f, 0xFF, COLL_TYPE_ALL, out_s, 256);
+    TEST_ASSERT_TRUE(ns > 0);
+    TEST_ASSERT_EQUAL_UINT32(ns, ng);
+    /* too dense even at half the size: every query to the scene, as before */
+    fm_vec3_t lo2 = {{ -0.8f, -0.8f, -0.8f }}, hi2 = {{ 0.8f, 0.8f, 0.8f }};
+    coll_gather_begin(&g, &s, lo2, hi2, 0xFF, COLL_TYPE_MESH);
+    TEST_ASSERT_FALSE(g.valid);
+    TEST_ASSERT_EQUAL_UINT32(1, st.gather_overflows);
 }
 
 /* Capsule sweeps whose swept volume passes within 0.3 % of r of a tilted floor's plane, on
@@ -1444,6 +1509,7 @@ int main(void)
     RUN_TEST(test_invalid_queries_return_false);
     RUN_TEST(test_initial_overlap_deepest_and_overlaps_list);
     RUN_TEST(test_dedup_overflow_falls_back_exactly);
+    RUN_TEST(test_gather_shrinks_its_box_on_dense_triangles);
     RUN_TEST(test_precision_far_from_origin);
     RUN_TEST(test_moving_platform_read_every_query);
     RUN_TEST(test_ray_along_cell_boundary);

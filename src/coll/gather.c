@@ -8,6 +8,67 @@
 #include "gather.h"
 #include "grid_walk.h"
 
+/* A kept triangle's box lo..hi meets the gathered box (the walk's test below). */
+static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const coll_gather_t *g)
+{
+    bool out = false;
+    for (int a = 0; a < 3; a++) out |= hi->v[a] < g->lo.v[a] || lo->v[a] > g->hi.v[a];
+    return !out;
+}
+
+/* The buffer is full and one more triangle (box lo..hi) meets the gathered box: shrinks the
+ * box about its centre until the buffer has room or the new triangle is out, dropping the
+ * kept triangles the smaller box misses (the walk's own test, so every triangle that meets
+ * the final box is kept: the box only shrinks, and the walk goes on with it). Each round
+ * takes 3/4 of the smallest scale that still keeps every triangle, so at least the farthest
+ * goes. GATHER_FULL when the box would fall below half the asked one (g->scale: the part
+ * left): a dense spot under the body itself, where the scene path is the better one.
+ * Out of line, with the box by value: the walk's loop must not pay for it. */
+enum { GATHER_ADD, GATHER_SKIP, GATHER_FULL };
+__attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t lo, fm_vec3_t hi, grid_walk_t *w,
+                                                  const xf3_t *x, const fm_vec3_t *o_l)
+{
+    int r = GATHER_FULL;
+    for (;;) {
+        /* the scale of the box (relative to now) at which each triangle starts to meet it */
+        float smax = 0.0f;
+        for (int a = 0; a < 3; a++) {
+            float h = g->hi.v[a];
+            if (!(h > 0.0f)) return GATHER_FULL;
+            float inv = 1.0f / h;
+            smax = f_max(smax, f_max(-hi.v[a] * inv, lo.v[a] * inv));
+            for (uint16_t k = 0; k < g->ntris; k++) {
+                const coll_gather_tri_t *gt = &g->tris[k];
+                smax = f_max(smax, f_max(-gt->hi.v[a] * inv, gt->lo.v[a] * inv));
+            }
+        }
+        float f = 0.75f * f_min(smax, 1.0f);
+        if (!(g->scale * f >= 0.5f)) return GATHER_FULL;
+        g->scale *= f;
+        for (int a = 0; a < 3; a++) {
+            g->hi.v[a] *= f;
+            g->lo.v[a] = -g->hi.v[a];
+        }
+        uint16_t n = 0;
+        for (uint16_t k = 0; k < g->ntris; k++)
+            if (box_meets(&g->tris[k].lo, &g->tris[k].hi, g)) g->tris[n++] = g->tris[k];
+        g->ntris = n;
+        if (!box_meets(&lo, &hi, g)) { r = GATHER_SKIP; break; }
+        if (n < COLL_GATHER_MAX) { r = GATHER_ADD; break; }
+    }
+    /* the rest of the walk on the smaller box: its local box (local_box's for a box centred
+     * on the origin; not a call to it, which the console build then outlined for both
+     * callers) in the caller's llo / lhi, which w points to; the cells it misses skipped */
+    fm_vec3_t hl = x->simple ? g->hi : mul3_abs(x->inv, &g->hi);
+    fm_vec3_t *llo = (fm_vec3_t *)(uintptr_t)w->llo, *lhi = (fm_vec3_t *)(uintptr_t)w->lhi;
+    for (int a = 0; a < 3; a++) {
+        llo->v[a] = o_l->v[a] - hl.v[a] - w->m->grid_margin;
+        lhi->v[a] = o_l->v[a] + hl.v[a] + w->m->grid_margin;
+    }
+    w->skip_missed = true;
+    return r;
+}
+
 /* The walk of one instance, with the mesh layout lay a constant at each call below (the
  * per-entry fetch then carries no flag tests); false when the buffer overflowed. */
 CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_instance_t *inst, const xf3_t *x,
@@ -31,11 +92,17 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                 out |= hi.v[a] < g->lo.v[a] || lo.v[a] > g->hi.v[a];
             }
             if (out) continue;
-            if (g->ntris >= COLL_GATHER_MAX) { /* too many: every query goes to the scene */
-                STATS_ADD(scene, gather_overflows);
-                g->valid = false;
-                seen_clear(seen);
-                return false;
+            if (g->ntris >= COLL_GATHER_MAX) {
+                /* too many: a smaller box around the same centre (queries outside it go to
+                 * the scene), or when that would be too small, every query to the scene */
+                int r = gather_shrink(g, lo, hi, w, x, o_l);
+                if (r == GATHER_FULL) {
+                    STATS_ADD(scene, gather_overflows);
+                    g->valid = false;
+                    seen_clear(seen);
+                    return false;
+                }
+                if (r == GATHER_SKIP) continue;
             }
             coll_gather_tri_t *gt = &g->tris[g->ntris++];
             gt->w0 = w0;
@@ -65,6 +132,7 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         g->lo.v[a] = -g->hi.v[a];
     }
     g->valid = true;
+    g->scale = 1.0f;
     STATS_ADD(scene, gathers);
     if (!(types & COLL_TYPE_MESH)) return;
     seen_t seen;

@@ -12,6 +12,9 @@
  * the same either way (exact nearest hits, all candidates). A sweep that leaves the box (the
  * crack rule's roll) is still answered by the gathered triangles when one of them is met
  * before its swept box leaves the gathered one: nothing else can be met sooner.
+ * A box that meets more triangles than the buffer holds shrinks about its centre (to no less
+ * than half its size on each axis), dropping the triangles the smaller box misses; only when
+ * that is not enough does the gather overflow (gather.c, gather_shrink).
  */
 #ifndef COLL_GATHER_H
 #define COLL_GATHER_H
@@ -38,9 +41,10 @@ typedef struct {
 typedef struct {
     const coll_scene_t *scene;
     fm_vec3_t origin;    ///< world centre of the gathered box
-    fm_vec3_t lo, hi;    ///< the gathered box, relative to origin
+    fm_vec3_t lo, hi;    ///< the gathered box, relative to origin (maybe shrunk: gather_shrink)
     uint8_t read_mask, types;
     bool valid;          ///< false: overflowed (or nothing gathered): every query goes to the scene
+    float scale;         ///< the gathered box's size against the one asked (gather_shrink)
     uint16_t ntris;
     coll_gather_tri_t tris[COLL_GATHER_MAX];
 } coll_gather_t;
