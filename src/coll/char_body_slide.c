@@ -111,8 +111,10 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
     }
     float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
     float reach = len * t;
-    if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f)) {
-        /* Touches only at the very end, within the skin: that is the target itself. */
+    if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f) && v3_dot(d, c->up) <= 0.0f) {
+        /* Touches only at the very end, within the skin: that is the target itself (going
+         * down onto a floor; a lift's target is under the sweep capsule, what it meets above
+         * is an overhang: soak s1 l347, lifted 1.04 mm into its underside). */
         *pos = v3_add(*pos, d);
         return 1.0f;
     }
