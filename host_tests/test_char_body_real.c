@@ -1590,6 +1590,61 @@ static void test_crack_walk_queries_answered_by_the_gather(void)
     TEST_ASSERT_EQUAL_UINT32(0, st.queries);
 }
 
+/* ---- real map oa_dm1: a block one step high, the foot against its side ---- */
+
+/* OpenArena oa_dm1 (collbake, make real-levels), the pieces within 1 m of the spot, exact:
+ * a floor at 0.384, a block whose top (0.768) is 0.384 above it along x >= 27.648, a wall
+ * at z = -21.504. The body (make soak-real, seed 1, l18; step 0.3673) walks into the block
+ * and the wall in the air: the sweep capsule passes over the block's top (in the step
+ * zone), losing the step's fall there, and the foot guard takes it back to the block's
+ * side: the capsule's bottom ball sat on the block's edge 1 mm off its centre line, the
+ * foot 18 mm over the floor, at rest in the air for ever. The foot is a point: it falls. */
+static const float oa_dm1_block_tris[][9] = {
+    {28.6720009f, 0.768000007f, -21.5039997f, 28.6720009f, 0.768000007f, -25.6000004f, 27.6480007f, 0.768000007f, -21.5039997f},
+    {28.6720009f, 0.768000007f, -25.6000004f, 27.6480007f, 0.768000007f, -25.6000004f, 27.6480007f, 0.768000007f, -21.5039997f},
+    {27.6480007f, 0.384000003f, -21.5039997f, 27.6480007f, 0.384000003f, -25.6000004f, 26.6240005f, 0.384000003f, -21.5039997f},
+    {27.6480007f, 0.384000003f, -25.6000004f, 26.6240005f, 0.384000003f, -25.6000004f, 26.6240005f, 0.384000003f, -21.5039997f},
+    {30.4640007f, 7.03999996f, -21.5039997f, 36.8639984f, 7.03999996f, -21.5039997f, 26.6240005f, 0.0f, -21.5039997f},
+    {36.8639984f, 7.03999996f, -21.5039997f, 36.8639984f, 1.53600001f, -21.5039997f, 26.6240005f, 0.0f, -21.5039997f},
+    {30.4640007f, 7.03999996f, -21.5039997f, 26.6240005f, 0.0f, -21.5039997f, 23.0400009f, 0.0f, -21.5039997f},
+    {23.0400009f, 6.97599983f, -21.5039997f, 30.4640007f, 7.03999996f, -21.5039997f, 23.0400009f, 0.0f, -21.5039997f},
+    {27.6480007f, 0.768000007f, -21.5039997f, 27.6480007f, 0.768000007f, -25.6000004f, 27.6480007f, 0.384000003f, -21.5039997f},
+    {27.6480007f, 0.768000007f, -25.6000004f, 27.6480007f, 0.384000003f, -25.6000004f, 27.6480007f, 0.384000003f, -21.5039997f}
+};
+
+static void test_oa_dm1_ball_on_block_edge_falls(void)
+{
+    cb_world_reset();
+    for (size_t i = 0; i < sizeof oa_dm1_block_tris / sizeof oa_dm1_block_tris[0]; i++) {
+        const float *t = oa_dm1_block_tris[i];
+        cb_geo_tri(cb_vec(t[0], t[1], t[2]), cb_vec(t[3], t[4], t[5]), cb_vec(t[6], t[7], t[8]));
+    }
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0x1.ba5a1ep+4f, 0x1.ecb02ap-2f, -0x1.5e843cp+4f); /* the soak body's state (owner = foot) */
+    char_body_init(&body, &pos);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = 0x1.9bf04ep-2f;
+    s.height = 0x1.a33fdcp+0f;
+    s.step_height = 0x1.781a2cp-2f;
+    s.floor_snap_distance = 0x1.786f28p-2f;
+    s.floor_max_angle = 0x1.be32d8p-1f;
+    s.gravity = 0x1.fc84f8p+4f;
+    s.max_fall_speed = 0x1.b8p+5f;
+    s.max_slides = 4;
+    s.center_offset = cb_vec(0.0f, 0x1.a33fdcp-1f, 0.0f);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(0.0f, -0x1.0f30fp+1f, 0.0f));
+    body.input_velocity = cb_vec(0x1.63dc78p+2f, 0.0f, 0x1.e503aap+1f);
+    int landed = -1;
+    for (int f = 0; f < 30 && landed < 0; f++) {
+        CB_STEP(&body, 0x1.111112p-6f);
+        if (char_body_is_on_floor(&body)) landed = f;
+    }
+    cb_report("ball on a block's edge (oa_dm1): frames to land", landed, "frames");
+    TEST_ASSERT_TRUE(landed >= 0 && landed < 10);
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.384f, pos.y); /* on the floor, not the block */
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -1651,5 +1706,6 @@ int main(void)
     RUN_TEST(test_snap_in_a_nanosecond_step_moves_no_faster_than_the_limit);
     RUN_TEST(test_crack_walk_queries_answered_by_the_gather);
     RUN_TEST(test_stair_climb_query_count);
+    RUN_TEST(test_oa_dm1_ball_on_block_edge_falls);
     return UNITY_END();
 }

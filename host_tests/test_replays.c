@@ -258,6 +258,45 @@ static void test_oracle_progress(void)
     TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(-0.01f, 0, 0), V(0.0333f, 0, 0)));
 }
 
+/* The foot point on a 30 degree ramp 0.7 mm short of its crest onto a flat floor (real map
+ * dm6ish, s1 l35: 27 degrees): the raised capsule is 9.6 mm from the crest, so nothing was
+ * within 9 mm, and the ramp's triangle under the foot made it "free flat floor". Walking
+ * follows the ramp (the seed's slope following) and covers cos 30 = 87 % of the input
+ * across up: no verdict. A floor tilted less than acos 0.9 = 25.8 degrees still gets one. */
+static void test_oracle_progress_at_a_ramp_crest(void)
+{
+    oracle_setup(SOAK_FAIL_PROGRESS);
+    const char_body_settings_t *s = &osim.body.settings;
+    const double t30 = tan(30.0 * 3.14159265358979323846 / 180.0);
+    const double q[2][4][3] = {{{-2, -2 * t30, -5}, {0, 0, -5}, {0, 0, 5}, {-2, -2 * t30, 5}},
+                               {{0, 0, -5}, {5, 0, -5}, {5, 0, 5}, {0, 0, 5}}};
+    for (int k = 0; k < 4; k++) {
+        soak_wtri_t *t = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
+        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
+        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
+        t->rad = 10; t->mask = 1;
+    }
+    lvl.nwtris = 4;
+    lvl.npieces = 0;
+    fm_vec3_t o = V(-0.0007f, (float)(-0.0007 * t30), 0), in = V(2, 0, 0), z = V(0, 0, 0);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, o, V(0.0333f, 0, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0282f, 0.0163f, 0), z, in, true, false, false));
+    /* past the crest, on the flat floor: the verdict stands */
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(0.001f, 0, 0), V(0.0333f, 0, 0)));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_PROGRESS, oracle_step(V(0.001f, 0, 0), V(0.0292f, 0, 0), z, in, true, false, false));
+    /* a 3 degree ramp under the foot still gets one (steeper ones, from about 3.6 degrees,
+     * come within 9 mm of the raised capsule anyway: the ball rests r / cos above them) */
+    const double t3 = tan(3.0 * 3.14159265358979323846 / 180.0);
+    lvl.wtris[0].v[0][1] = lvl.wtris[1].v[0][1] = lvl.wtris[1].v[2][1] = -2 * t3; /* the ramp's low edge */
+    for (int k = 0; k < 2; k++) {
+        soak_wtri_t *t = &lvl.wtris[k];
+        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
+    }
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-1.0f, (float)(-1.0 * t3), 0), V(0, 0, 0.0333f))); /* across it */
+}
+
 /* Two floor quads at y = 0 with a gap between x = a and x = b (a < b). */
 static void two_floors(double a, double b, int both)
 {
@@ -766,6 +805,7 @@ int main(void)
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
     RUN_TEST(test_oracle_direction);
     RUN_TEST(test_oracle_progress);
+    RUN_TEST(test_oracle_progress_at_a_ramp_crest);
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);

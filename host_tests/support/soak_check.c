@@ -582,7 +582,10 @@ bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s
             double tt = dot3(nn, d) / dot3(nn, up);
             if (!(tt >= -0.005 && tt <= 0.005)) continue;
             double x[3] = {f[0] + up[0] * tt, f[1] + up[1] * tt, f[2] + up[2] * tt};
-            if (pt_tri_dist(x, w) <= 1e-9) under = true;
+            /* tilted no more than the progress oracle's share allows: walking follows a
+             * walkable slope, covering cos(tilt) of the input across up (a ramp's crest
+             * 0.7 mm ahead is more than 9 mm from the raised capsule: dm6ish, 27 degrees) */
+            if (pt_tri_dist(x, w) <= 1e-9 && dot3(nn, up) >= SOAK_PROGRESS_MIN) under = true;
         }
         if (!under) return false;
     }

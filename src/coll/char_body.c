@@ -451,7 +451,15 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     }
 
     /* 5. foot guard */
+    const fm_vec3_t unguarded = pos;
     const bool foot_landed = !walking && coll_cb_foot_guard(&c, &pos, old_foot, &body->velocity);
+    if (!walking && !jumping && !foot_landed && v3_len2(v3_sub(pos, unguarded)) > 0.0f) {
+        /* the guard moved it: the fall the slide spent on what it passed over is made now
+         * (no more than the step's own fall: a guard's move up along a wall is not undone) */
+        float want = -v_up * dt, fell = -v3_dot(v3_sub(pos, start), up);
+        float rest = fell > 0.0f ? want - fell : want;
+        coll_cb_guard_fall(&c, &pos, rest, max_speed * dt - v3_len(v) * dt);
+    }
 
     /* Honest velocity: where the step's motion fell short of the velocity (a wall, a
      * ceiling, a wedge, a crack's edges stopped it) the velocity is the one the body moved

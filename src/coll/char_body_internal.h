@@ -156,6 +156,9 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
 /** Airborne only: the foot point may not pass through walls on its way from old_foot.
  *  True when its way entered a walkable floor (from above): a landing, the probe's job. */
 bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel);
+/** Airborne, after the foot guard moved the body back: the rest of the step's fall (a
+ *  length along -up), sliding off an edge the foot point is not over (at most room). */
+void coll_cb_guard_fall(const cb_ctx_t *c, fm_vec3_t *pos, float fall, float room);
 /** How far the mesh instance stood on last step moved the floor point: false when there is
  *  nothing to carry (not on an instance, or it left the scene). */
 bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta);

@@ -111,8 +111,10 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
     }
     float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
     float reach = len * t;
-    if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f)) {
-        /* Touches only at the very end, within the skin: that is the target itself. */
+    if (reach >= len - c->skin && !(t <= 0.0f && hit.depth > 0.0f) && v3_dot(d, c->up) <= 0.0f) {
+        /* Touches only at the very end, within the skin: that is the target itself (going
+         * down onto a floor; a lift's target is under the sweep capsule, what it meets above
+         * is an overhang: soak s1 l347, lifted 1.04 mm into its underside). */
         *pos = v3_add(*pos, d);
         return 1.0f;
     }
@@ -751,6 +753,46 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     if (stuck) unstick(c, pos, vel);
 }
 
+/**
+ * Airborne, the foot guard took the body back out of a block whose top the sweep capsule
+ * was passing over (a top within the step zone, the foot point against the block's side):
+ * the fall the slide spent on that top is lost, and the capsule's bottom ball ends balanced
+ * on the block's edge with the foot point short of it, for ever (real map oa_dm1: a block
+ * one step high, the ball 1 mm off its edge, the foot 18 mm over the floor). The rest of
+ * the step's fall is made from there (swept), sliding off the edge the foot is not over as
+ * the slide does (slide_off_edge, within the speed limit's room), then falling on.
+ */
+void coll_cb_guard_fall(const cb_ctx_t *c, fm_vec3_t *pos, float fall, float room)
+{
+    if (!(fall > c->tiny)) return;
+    for (int k = 0; k < 2; k++) {
+        fm_vec3_t d = v3_scale(c->up, -fall);
+        coll_sweep_hit_t hit;
+        if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit)) {
+            *pos = v3_add(*pos, d);
+            return;
+        }
+        if (!v3_finite(hit.normal) || !isfinite(hit.t)) return;
+        float t = hit.t < 0.0f ? 0.0f : (hit.t > 1.0f ? 1.0f : hit.t);
+        float travel = fall * t - c->skin;
+        if (travel > 0.0f) {
+            *pos = v3_madd(*pos, c->up, -travel);
+            fall -= travel;
+        }
+        if (k > 0) return;
+        fm_vec3_t fn;
+        if (coll_cb_face_normal(&hit, &fn)) hit.normal = fn;
+        /* only as far off as lets the ball (its centre hl across and h above the edge) drop
+         * by the rest of the fall: it rolls off over a few steps, not in one shove */
+        fm_vec3_t rel = v3_sub(v3_madd(cb_sweep_center(c, *pos), c->up, -c->sweep_ihh), hit.point);
+        float h = v3_dot(rel, c->up), hl = v3_len(v3_reject(rel, c->up)), lo = h - fall;
+        float need = c->radius + c->skin - hl;
+        if (lo > 0.0f && lo < c->radius) need = sqrtf(c->radius * c->radius - lo * lo) - hl + c->skin;
+        float off = slide_off_edge(c, pos, &hit, need < room ? need : room);
+        if (!(off > 0.0f)) return;
+    }
+}
+
 bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, fm_vec3_t *vel)
 {
     const char_body_t *b = c->body;
@@ -770,7 +812,12 @@ bool coll_cb_foot_guard(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t old_foot, f
     fm_vec3_t target = v3_add(v3_madd(hit.point, n, c->skin), clip_plane(after, n));
     /* Swept, like every positional change: the push must not put the capsule into
      * something else (a slope or wall on the other side). */
-    coll_cb_move_swept(c, pos, v3_sub(target, foot));
+    fm_vec3_t move = v3_sub(target, foot);
+    /* It is motion: within the speed limit (its ray starts contact_eps above the old foot,
+     * so a 1 ns step against a wall under a tilted up was moved 2 mm: soak s1 l164) */
+    float ml = v3_len(move), room = c->max_speed * c->dt;
+    if (ml > room) move = v3_scale(move, room / ml);
+    coll_cb_move_swept(c, pos, move);
     if (vel) *vel = clip_plane(*vel, n);
     return false;
 }
