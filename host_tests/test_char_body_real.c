@@ -722,6 +722,22 @@ static void test_overhang_wedge(void)
     }
 }
 
+/* One settling step, then two seconds of walking with input: the lowest grounded foot
+ * height (0 when never below the floor at y = 0). */
+static float walk_lowest_grounded_foot(float hz, fm_vec3_t input)
+{
+    const float dt = 1.0f / hz;
+    CB_STEP(&body, dt);
+    body.input_velocity = input;
+    float lowest = 0.0f;
+    for (int i = 0; i < (int)(2.0f * hz); i++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    return lowest;
+}
+
 /* A steep slab rising from the floor (soak seed 1 levels 18, 81, seed 2 levels 3, 14, 62,
  * 73): its low edge `lip` above the floor, 8 cm thick, `deg` from the horizontal (steeper
  * than floor_max_angle). Walking into it, or pushed along it, the body rested on
@@ -730,7 +746,7 @@ static void test_overhang_wedge(void)
  * stay on the floor. */
 static void steep_slab_push(float deg, float lip, float hz, fm_vec3_t input)
 {
-    const float dt = 1.0f / hz, t = tanf(deg * DEG), len = 3.0f, th = 0.08f / cosf(deg * DEG);
+    const float t = tanf(deg * DEG), len = 3.0f, th = 0.08f / cosf(deg * DEG);
     cb_world_reset();
     cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
     /* top face, underside (th lower along up), and the low end */
@@ -747,14 +763,7 @@ static void steep_slab_push(float deg, float lip, float hz, fm_vec3_t input)
     st.floor_snap_distance = 0.36f;
     st.floor_max_angle = 23.4f * DEG;
     char_body_configure(&body, &st);
-    CB_STEP(&body, dt);
-    body.input_velocity = input;
-    float lowest = 0.0f;
-    for (int i = 0; i < (int)(2.0f * hz); i++) {
-        CB_STEP(&body, dt);
-        TEST_ASSERT_TRUE(cb_body_finite(&body));
-        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
-    }
+    float lowest = walk_lowest_grounded_foot(hz, input);
     char name[112];
     snprintf(name, sizeof name, "steep slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
              (double)lip, (double)hz);
@@ -782,7 +791,7 @@ static void test_steep_slab_low_edge(void)
  * body stood on the face with its foot 0.11 m in the floor. */
 static void steep_body_slab_push(float deg, float lip, float hz, fm_vec3_t input)
 {
-    const float dt = 1.0f / hz, a = deg * DEG, len = 3.0f, th = 0.08f;
+    const float a = deg * DEG, len = 3.0f, th = 0.08f;
     cb_world_reset();
     cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
@@ -803,14 +812,7 @@ static void steep_body_slab_push(float deg, float lip, float hz, fm_vec3_t input
     s.max_slides = 2;
     s.coll_types = 0xff;
     char_body_configure(&body, &s);
-    CB_STEP(&body, dt);
-    body.input_velocity = input;
-    float lowest = 0.0f;
-    for (int i = 0; i < (int)(2.0f * hz); i++) {
-        CB_STEP(&body, dt);
-        TEST_ASSERT_TRUE(cb_body_finite(&body));
-        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
-    }
+    float lowest = walk_lowest_grounded_foot(hz, input);
     char name[112];
     snprintf(name, sizeof name, "steep body slab %.0f deg, lip %.2f m at %.0f Hz: lowest grounded foot", (double)deg,
              (double)lip, (double)hz);

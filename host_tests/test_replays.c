@@ -193,6 +193,21 @@ static char_body_t *oracle_setup(uint32_t oracle)
     return b;
 }
 
+/* The checker's level: just two quads (two triangles each, layer 1), no pieces. */
+static void checker_two_quads(const double q[2][4][3])
+{
+    for (int k = 0; k < 4; k++) {
+        soak_wtri_t *t = &lvl.wtris[k];
+        const double(*c)[3] = q[k / 2];
+        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
+        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
+        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
+        t->rad = 10; t->mask = 1;
+    }
+    lvl.nwtris = 4;
+    lvl.npieces = 0;
+}
+
 /* One hand-made step from p0 to p1 (owner positions), reported velocity v1. */
 static int oracle_step(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t v1, fm_vec3_t input, bool grounded0, bool steep0,
                        bool excuse)
@@ -244,16 +259,7 @@ static void test_oracle_progress(void)
     /* a 5 cm crack across the way: not flat */
     static const double q[2][4][3] = {{{-5, 0, -5}, {0.01, 0, -5}, {0.01, 0, 5}, {-5, 0, 5}},
                                       {{0.06, 0, -5}, {5, 0, -5}, {5, 0, 5}, {0.06, 0, 5}}};
-    for (int k = 0; k < 4; k++) {
-        soak_wtri_t *t = &lvl.wtris[k];
-        const double(*c)[3] = q[k / 2];
-        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
-        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
-        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
-        t->rad = 10; t->mask = 1;
-    }
-    lvl.nwtris = 4;
-    lvl.npieces = 0;
+    checker_two_quads(q);
     TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-2, 0, 0), V(0.0333f, 0, 0)));
     TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(-0.01f, 0, 0), V(0.0333f, 0, 0)));
 }
@@ -270,16 +276,7 @@ static void test_oracle_progress_at_a_ramp_crest(void)
     const double t30 = tan(30.0 * 3.14159265358979323846 / 180.0);
     const double q[2][4][3] = {{{-2, -2 * t30, -5}, {0, 0, -5}, {0, 0, 5}, {-2, -2 * t30, 5}},
                                {{0, 0, -5}, {5, 0, -5}, {5, 0, 5}, {0, 0, 5}}};
-    for (int k = 0; k < 4; k++) {
-        soak_wtri_t *t = &lvl.wtris[k];
-        const double(*c)[3] = q[k / 2];
-        int i1 = (k % 2) ? 2 : 1, i2 = (k % 2) ? 3 : 2;
-        memcpy(t->v[0], c[0], sizeof t->v[0]); memcpy(t->v[1], c[i1], sizeof t->v[0]); memcpy(t->v[2], c[i2], sizeof t->v[0]);
-        for (int j = 0; j < 3; j++) t->c[j] = (t->v[0][j] + t->v[1][j] + t->v[2][j]) / 3;
-        t->rad = 10; t->mask = 1;
-    }
-    lvl.nwtris = 4;
-    lvl.npieces = 0;
+    checker_two_quads(q);
     fm_vec3_t o = V(-0.0007f, (float)(-0.0007 * t30), 0), in = V(2, 0, 0), z = V(0, 0, 0);
     TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, o, V(0.0333f, 0, 0)));
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0282f, 0.0163f, 0), z, in, true, false, false));

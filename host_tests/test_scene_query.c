@@ -728,6 +728,16 @@ static void place(coll_mesh_instance_t *in, const coll_mesh_t *m, float x, float
     in->id = id;
 }
 
+/* A scene counting its queries in st, with m placed once at the origin (layer 1). */
+static void scene_of_one_mesh(coll_scene_t *s, coll_query_stats_t *st, coll_mesh_instance_t *a, const coll_mesh_t *m)
+{
+    coll_scene_init(s);
+    memset(st, 0, sizeof *st);
+    coll_scene_set_stats(s, st);
+    place(a, m, 0, 0, 0, 1, 1);
+    coll_scene_add_mesh(s, a);
+}
+
 static const fm_vec3_t DOWN = {{ 0, -1, 0 }}, UP = {{ 0, 1, 0 }};
 
 static void test_masks_types_ids_and_remove(void)
@@ -909,12 +919,9 @@ static void test_dedup_overflow_falls_back_exactly(void)
     coll_mesh_build_opts_t o = { 0.1f, 0 };
     const coll_mesh_t *m = build_mesh(0, nv, nt, &o);
     coll_scene_t s;
-    coll_scene_init(&s);
-    coll_query_stats_t st = {0};
-    coll_scene_set_stats(&s, &st);
+    coll_query_stats_t st;
     coll_mesh_instance_t a;
-    place(&a, m, 0, 0, 0, 1, 1);
-    coll_scene_add_mesh(&s, &a);
+    scene_of_one_mesh(&s, &st, &a, m);
     fm_vec3_t c = {{ 0, 0.8f, 0 }}, disp = {{ 0, -0.1f, 0 }};
     coll_sweep_hit_t h;
     uint32_t before = st.dedup_overflows;
@@ -992,12 +999,9 @@ static void test_gathered_sweep_leaving_the_box(void)
     coll_mesh_build_opts_t o = { 1.0f, 0 };
     const coll_mesh_t *m = build_mesh(0, nv, nt, &o);
     coll_scene_t s;
-    coll_scene_init(&s);
-    coll_query_stats_t st = {0};
-    coll_scene_set_stats(&s, &st);
+    coll_query_stats_t st;
     coll_mesh_instance_t a;
-    place(&a, m, 0, 0, 0, 1, 1);
-    coll_scene_add_mesh(&s, &a);
+    scene_of_one_mesh(&s, &st, &a, m);
     static coll_gather_t g;
     coll_gather_begin(&g, &s, (fm_vec3_t){{ -1, -1, -1 }}, (fm_vec3_t){{ 1, 1, 1 }}, 0xFF, COLL_TYPE_ALL);
     TEST_ASSERT_EQUAL_UINT16(2, g.ntris);
@@ -1387,12 +1391,9 @@ static void test_gather_shrinks_its_box_on_dense_triangles(void)
     coll_mesh_build_opts_t o = { 0.25f, 0 };
     const coll_mesh_t *m = build_mesh(0, nv, nt, &o);
     coll_scene_t s;
-    coll_scene_init(&s);
-    coll_query_stats_t st = {0};
-    coll_scene_set_stats(&s, &st);
+    coll_query_stats_t st;
     coll_mesh_instance_t a;
-    place(&a, m, 0, 0, 0, 1, 1);
-    coll_scene_add_mesh(&s, &a);
+    scene_of_one_mesh(&s, &st, &a, m);
     static coll_gather_t g;
     fm_vec3_t lo = {{ -0.31f, -0.3f, -0.29f }}, hi = {{ 0.29f, 0.3f, 0.31f }};
     ASSERT_NO_ALLOC(coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH));
