@@ -8,7 +8,7 @@
 #include "gather.h"
 #include "grid_walk.h"
 
-/* A kept triangle's box lo..hi meets the gathered box (the walk's test below). */
+/* A kept triangle's box lo..hi meets the gathered box (the walk's test below, fused there with the box's computation). */
 static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const coll_gather_t *g)
 {
     bool out = false;

@@ -572,22 +572,15 @@ static inline uint32_t grid_walk_layout(const grid_walk_t *w) { return w->mv.fla
 /* grid_walk_take for a box query: the triangle relative to the query origin (w0 + shape,
  * as the per-triangle tests take it) and in absolute form (tri), false when it is not
  * taken or lies wholly outside the world-relative box lo..hi. */
-CAND_INLINE bool grid_walk_take_in_box_lay(grid_walk_t *w, uint32_t lay, uint32_t k, const xf3_t *x,
-                                           const fm_vec3_t *o_l, const fm_vec3_t *lo, const fm_vec3_t *hi,
-                                           uint32_t *t, fm_vec3_t *w0, fm_vec3_t shape[3], fm_vec3_t tri[3])
-{
-    fm_vec3_t v[3];
-    if (!grid_walk_take_lay(w, lay, k, t, v)) return false;
-    tri_rel_of(v, x, o_l, w0, shape);
-    tri_abs(w0, shape, tri);
-    return !tri_box_reject(tri, lo, hi);
-}
-
 CAND_INLINE bool grid_walk_take_in_box(grid_walk_t *w, uint32_t k, const xf3_t *x, const fm_vec3_t *o_l,
                                        const fm_vec3_t *lo, const fm_vec3_t *hi, uint32_t *t, fm_vec3_t *w0,
                                        fm_vec3_t shape[3], fm_vec3_t tri[3])
 {
-    return grid_walk_take_in_box_lay(w, w->mv.flags, k, x, o_l, lo, hi, t, w0, shape, tri);
+    fm_vec3_t v[3];
+    if (!grid_walk_take_lay(w, w->mv.flags, k, t, v)) return false;
+    tri_rel_of(v, x, o_l, w0, shape);
+    tri_abs(w0, shape, tri);
+    return !tri_box_reject(tri, lo, hi);
 }
 
 /* Ends the walk: the table is cleared for the next instance; an overflow is counted. */

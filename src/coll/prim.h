@@ -103,7 +103,8 @@ typedef struct {
 } coll_tri_prep_t;
 
 /** coll_tri_sweep (held false) or coll_tri_sweep_before (held true), and
- *  coll_capsule_triangle_overlap, through the triangle's prep p (filled when not ready). */
+ *  coll_capsule_triangle_overlap, through the triangle's prep p (filled when not ready;
+ *  NULL: the plain tests). */
 bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                          coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],

@@ -19,34 +19,31 @@ void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx)
 }
 #endif
 
-/* An installed method answers both: it has no use for the caller's held hit. */
+/* An installed method answers every form: it has no use for the caller's held hit or the
+ * triangle's prep. p NULL: no prep kept. */
 static bool tri_sweep_method(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                             float t_max, bool held, coll_prim_hit_t *hit)
-{
-#ifdef COLL_METHOD_HOOKS
-    if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
-#endif
-    return held ? coll_prim_tri_sweep_before(seg, r, disp, tri, t_max, hit)
-                : coll_capsule_triangle_sweep(seg, r, disp, tri, t_max, hit);
-}
-
-bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
-                    const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
-{
-    return tri_sweep_method(seg, r, disp, tri, t_max, false, hit);
-}
-
-bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
-                           const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
-{
-    return tri_sweep_method(seg, r, disp, tri, t_max, true, hit);
-}
-
-bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+                             coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
 {
 #ifdef COLL_METHOD_HOOKS
     if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
 #endif
     return coll_prim_tri_sweep_prep(seg, r, disp, tri, p, t_max, held, hit);
+}
+
+bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                    const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, false, hit);
+}
+
+bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
+                           const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
+{
+    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, true, hit);
+}
+
+bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+{
+    return tri_sweep_method(seg, r, disp, tri, p, t_max, held, hit);
 }

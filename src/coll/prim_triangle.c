@@ -57,11 +57,7 @@ PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, floa
 /* Outward normal at m + d s, or away from the motion when that point is the centre. */
 PRIM_INLINE fm_vec3_t round_normal(fm_vec3_t m, fm_vec3_t d, float s)
 {
-    /* v3_unit_or(m + d s, v3_unit_or(-d, +y)), the fallback worked out only when used */
-    fm_vec3_t a = v3_madd(m, d, s);
-    float l2 = v3_len2(a);
-    if (l2 > V3_TINY_LEN2 && f_finite(l2)) return v3_scale(a, 1.0f / sqrtf(l2));
-    return v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f));
+    return v3_unit_or_against(v3_madd(m, d, s), d);
 }
 
 PRIM_INLINE bool ray_sphere_in(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, prim_ray_t *out)
@@ -673,12 +669,6 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
     return tri_sweep(seg, r, disp, tri, NULL, t_max, confirm, false, hit);
 }
 
-bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                                float t_max, coll_prim_hit_t *hit)
-{
-    return tri_sweep(seg, r, disp, tri, NULL, t_max, true, true, hit);
-}
-
 bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                               coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
 {
@@ -768,11 +758,7 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;
     if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
 
-    /* v3_unit_or(nraw, v3_unit_or(-d, +y)), with the fallback worked out only when it is
-     * used (as an argument it was a second square root and division on every hit) */
-    float l2 = v3_len2(t.nraw);
-    fm_vec3_t n = l2 > V3_TINY_LEN2 && f_finite(l2) ? v3_scale(t.nraw, 1.0f / sqrtf(l2))
-                                                    : v3_unit_or(v3_neg(*d), v3(0.0f, 1.0f, 0.0f));
+    fm_vec3_t n = v3_unit_or_against(t.nraw, *d);
     if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
     hit->t = s;
     hit->depth = 0.0f;

@@ -83,14 +83,11 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
                        float t_max, bool confirm, coll_prim_hit_t *hit);
 
 /**
- * coll_capsule_triangle_sweep for a caller that already holds a contact at t_max (a
- * candidate among several): a contact after t = 0 no sooner than t_max is no hit (it
- * could not be better). Contacts at t = 0 (overlaps, touches) are reported as before.
+ * coll_capsule_triangle_sweep on a prepared triangle (p: its prep, filled when not ready;
+ * NULL: none kept), for a caller that may already hold a contact at t_max (held): then a
+ * contact after t = 0 no sooner than t_max is no hit (it could not be better). Contacts at
+ * t = 0 (overlaps, touches) are reported as before.
  */
-bool coll_prim_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                                float t_max, coll_prim_hit_t *hit);
-
-/** coll_prim_tri_sweep_ex / coll_prim_tri_sweep_before (held) on a prepared triangle. */
 bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                               coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
 

@@ -395,9 +395,7 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
-    bool got = gt ? coll_tri_sweep_prep(seg, q->r, &q->disp, shape, &gt->prep, sb->best, sb->have, &ph)
-           : sb->have ? coll_tri_sweep_before(seg, q->r, &q->disp, shape, sb->best, &ph)
-                      : coll_tri_sweep(seg, q->r, &q->disp, shape, sb->best, &ph);
+    bool got = coll_tri_sweep_prep(seg, q->r, &q->disp, shape, gt ? &gt->prep : NULL, sb->best, sb->have, &ph);
     if (!got || !sweep_better(&ph, sb)) return false;
     fm_vec3_add(&ph.point, &ph.point, w0);
     best_take(sb, &ph, inst, NULL, t);
@@ -630,14 +628,24 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
 
 /* The query box lo..hi (relative to the query's own origin at rel from the gather's) lies
  * inside the gathered box: every triangle that can touch the query was gathered. */
+/* The query box lo..hi (relative to the query origin at rel from the gather's) lies inside
+ * the gathered box. */
+CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
+{
+    for (int a = 0; a < 3; a++)
+        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
+    return true;
+}
+
+/* gather_inside for a query answered here or on the scene, counted as one or the other
+ * (an overflowed gather answers nothing: not counted). */
 CAND_INLINE bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
 {
     if (!g->valid) return false;
-    for (int a = 0; a < 3; a++)
-        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) {
-            STATS_ADD(g->scene, gather_misses);
-            return false;
-        }
+    if (!gather_inside(g, rel, lo, hi)) {
+        STATS_ADD(g->scene, gather_misses);
+        return false;
+    }
     STATS_ADD(g->scene, gather_queries);
     return true;
 }
@@ -693,15 +701,6 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
     }
     if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
     return ray_result(&rb, &origin, hit);
-}
-
-/* The query box lo..hi (relative to the query origin at rel from the gather's) lies inside
- * the gathered box (gather_covers without its counters). */
-CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
-{
-    for (int a = 0; a < 3; a++)
-        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
-    return true;
 }
 
 /* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;

@@ -45,6 +45,15 @@ static inline fm_vec3_t v3_unit_or(fm_vec3_t a, fm_vec3_t fallback)
     if (!(l2 > V3_TINY_LEN2) || !f_finite(l2)) return fallback;
     return v3_scale(a, 1.0f / sqrtf(l2));
 }
+/** v3_unit_or(a, v3_unit_or(-d, +y)): a normal, or away from d when a has no direction,
+ *  with the fallback worked out only when it is used (as an argument it would cost a
+ *  square root and a division on every call). */
+static inline fm_vec3_t v3_unit_or_against(fm_vec3_t a, fm_vec3_t d)
+{
+    float l2 = v3_len2(a);
+    if (!(l2 > V3_TINY_LEN2) || !f_finite(l2)) return v3_unit_or(v3_neg(d), v3(0.0f, 1.0f, 0.0f));
+    return v3_scale(a, 1.0f / sqrtf(l2));
+}
 /** Unit vector along a, or the zero vector when a has no direction. */
 static inline fm_vec3_t v3_norm(fm_vec3_t a) { return v3_unit_or(a, v3(0.0f, 0.0f, 0.0f)); }
 
