@@ -347,6 +347,15 @@ static void test_crack_under_leaning_face(void)
 
 /* ---- 2a''. a crack under a tilted up ---- */
 
+/* Adds n triangles given as 9 floats each (a real level's triangles near a soak failure). */
+static void geo_tris(const float (*tris)[9], size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        const float *t = tris[i];
+        cb_geo_tri(cb_vec(t[0], t[1], t[2]), cb_vec(t[3], t[4], t[5]), cb_vec(t[6], t[7], t[8]));
+    }
+}
+
 /* Soak s2 l356 (generator 2), the pieces within 1.1 m of the spot (coordinates rounded to
  * 0.1 mm): tiles 0.27 m high with cracks between them, up tilted 4 degrees by the game
  * (s2 l117, l375 alike). The foot ray, along up, went down through a crack into a tile's
@@ -416,10 +425,7 @@ static void test_crack_under_tilted_up(void)
 {
     cb_world_reset();
     cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
-    for (size_t i = 0; i < sizeof tilted_crack_tris / sizeof tilted_crack_tris[0]; i++) {
-        const float *t = tilted_crack_tris[i];
-        cb_geo_tri(cb_vec(t[0], t[1], t[2]), cb_vec(t[3], t[4], t[5]), cb_vec(t[6], t[7], t[8]));
-    }
+    geo_tris(tilted_crack_tris, sizeof tilted_crack_tris / sizeof tilted_crack_tris[0]);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     pos = cb_vec(21.3997f, 1.685292f, -2.181013f); /* the soak body's state (owner = capsule centre) */
     char_body_init(&body, &pos);
@@ -1617,10 +1623,7 @@ static const float oa_dm1_block_tris[][9] = {
 static void test_oa_dm1_ball_on_block_edge_falls(void)
 {
     cb_world_reset();
-    for (size_t i = 0; i < sizeof oa_dm1_block_tris / sizeof oa_dm1_block_tris[0]; i++) {
-        const float *t = oa_dm1_block_tris[i];
-        cb_geo_tri(cb_vec(t[0], t[1], t[2]), cb_vec(t[3], t[4], t[5]), cb_vec(t[6], t[7], t[8]));
-    }
+    geo_tris(oa_dm1_block_tris, sizeof oa_dm1_block_tris / sizeof oa_dm1_block_tris[0]);
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     pos = cb_vec(0x1.ba5a1ep+4f, 0x1.ecb02ap-2f, -0x1.5e843cp+4f); /* the soak body's state (owner = foot) */
     char_body_init(&body, &pos);
