@@ -492,6 +492,101 @@ static void test_oracle_footing_resting_on_a_steep_valley_slope(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, V(0, -0.05f, 0), z, z, true, false, false));
 }
 
+/* Level triangles given as 9 doubles each (a soak or real level's triangles near a
+ * failure), all in layer 1. */
+static void level_tris(const double (*t)[9], size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        soak_wtri_t *w = &lvl.wtris[i];
+        for (int v = 0; v < 3; v++)
+            for (int j = 0; j < 3; j++) w->v[v][j] = t[i][3 * v + j];
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = (uint32_t)n;
+    lvl.npieces = 0;
+}
+
+/* Soak s3 l369 (generator 2): the triangles within 2 cm of the body (tiles 0.28-0.30 m
+ * high, up tilted 10 degrees by the game). The bottom ball leans on the straight border of
+ * the tile field (the foot 1 mm inside it, the ball centre 1 cm outside it, 0.23 m below
+ * the tile tops, in the step zone): 9 tile triangles it overlaps, whose closest points lie
+ * along the border exactly 180 degrees apart. The ledge test (contacts_on_one_ledge) took
+ * at most 8 contacts' vertices and gave up on the 9th: the border was taken for a crack
+ * (13.98 mm). Every contact's vertices now: all on one side of the line, a ledge. The same
+ * field with a tile across the border beside the foot (a crack 4 cm wide) still fails. */
+static const double s3_l369_tris[][9] = {
+    {20.198875, 0.000000, 5.405640, 20.198875, 0.278689, 5.405640, 20.739996, 0.278689, 5.316151},
+    {20.198875, 0.000000, 5.405640, 20.739996, 0.278689, 5.316151, 20.739996, 0.000000, 5.316151},
+    {20.198875, 0.278689, 5.405640, 20.829485, 0.278689, 5.857271, 20.739996, 0.278689, 5.316151},
+    {20.739996, 0.000000, 5.316151, 20.739996, 0.278689, 5.316151, 20.829485, 0.278689, 5.857271},
+    {20.739996, 0.000000, 5.316151, 20.739996, 0.280754, 5.316151, 21.281116, 0.280754, 5.226662},
+    {20.739996, 0.000000, 5.316151, 21.281116, 0.280754, 5.226662, 21.281116, 0.000000, 5.226662},
+    {20.829485, 0.000000, 5.857271, 21.370605, 0.000000, 5.767782, 21.370605, 0.280754, 5.767782},
+    {20.829485, 0.000000, 5.857271, 21.370605, 0.280754, 5.767782, 20.829485, 0.280754, 5.857271},
+    {20.739996, 0.280754, 5.316151, 20.829485, 0.280754, 5.857271, 21.370605, 0.280754, 5.767782},
+    {20.739996, 0.280754, 5.316151, 21.370605, 0.280754, 5.767782, 21.281116, 0.280754, 5.226662},
+    {20.739996, 0.000000, 5.316151, 20.829485, 0.280754, 5.857271, 20.739996, 0.280754, 5.316151},
+    {21.281116, 0.000000, 5.226662, 21.281116, 0.280754, 5.226662, 21.370605, 0.280754, 5.767782},
+    {21.281116, 0.000000, 5.226662, 21.370605, 0.280754, 5.767782, 21.370605, 0.000000, 5.767782},
+    {21.281116, 0.000000, 5.226662, 21.281116, 0.296677, 5.226662, 21.822237, 0.296677, 5.137172},
+    {21.281116, 0.000000, 5.226662, 21.822237, 0.296677, 5.137172, 21.822237, 0.000000, 5.137172},
+    {21.370605, 0.000000, 5.767782, 21.911726, 0.296677, 5.678293, 21.370605, 0.296677, 5.767782},
+    {21.281116, 0.296677, 5.226662, 21.370605, 0.296677, 5.767782, 21.911726, 0.296677, 5.678293},
+    {21.281116, 0.296677, 5.226662, 21.911726, 0.296677, 5.678293, 21.822237, 0.296677, 5.137172},
+    {21.281116, 0.000000, 5.226662, 21.370605, 0.000000, 5.767782, 21.370605, 0.296677, 5.767782},
+    {21.281116, 0.000000, 5.226662, 21.370605, 0.296677, 5.767782, 21.281116, 0.296677, 5.226662},
+    {21.822237, 0.000000, 5.137172, 21.822237, 0.296677, 5.137172, 21.911726, 0.296677, 5.678293},
+    {21.822237, 0.000000, 5.137172, 21.822237, 0.278689, 5.137172, 22.363357, 0.278689, 5.047683},
+    {21.822237, 0.278689, 5.137172, 21.911726, 0.278689, 5.678293, 22.452846, 0.278689, 5.588804},
+    {21.822237, 0.278689, 5.137172, 22.452846, 0.278689, 5.588804, 22.363357, 0.278689, 5.047683},
+    {21.822237, 0.000000, 5.137172, 21.911726, 0.278689, 5.678293, 21.822237, 0.278689, 5.137172},
+    {20.829485, 0.000000, 5.857271, 20.829485, 0.281273, 5.857271, 21.370605, 0.281273, 5.767782},
+    {20.829485, 0.000000, 5.857271, 21.370605, 0.281273, 5.767782, 21.370605, 0.000000, 5.767782},
+    {20.829485, 0.281273, 5.857271, 21.460095, 0.281273, 6.308903, 21.370605, 0.281273, 5.767782},
+    {21.370605, 0.000000, 5.767782, 21.370605, 0.281273, 5.767782, 21.460095, 0.281273, 6.308903},
+    {21.370605, 0.000000, 5.767782, 21.370605, 0.278689, 5.767782, 21.911726, 0.278689, 5.678293},
+    {21.370605, 0.278689, 5.767782, 21.460095, 0.278689, 6.308903, 22.001215, 0.278689, 6.219413},
+    {21.370605, 0.278689, 5.767782, 22.001215, 0.278689, 6.219413, 21.911726, 0.278689, 5.678293},
+    {21.370605, 0.000000, 5.767782, 21.460095, 0.278689, 6.308903, 21.370605, 0.278689, 5.767782}
+};
+
+static void test_oracle_footing_ledge_of_nine_contacts(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    char_body_settings_t *s = &osim.body.settings;
+    s->radius = 0x1.d4ea6p-1f;
+    s->height = 0x1.506acep+1f;
+    s->step_height = 0x1.41057ep-2f;
+    s->floor_snap_distance = 0x1.78d8a2p-1f;
+    s->floor_max_angle = 0x1.50fe3p-1f;
+    s->up = V(0x1.51443p-3f, 0x1.f8992ap-1f, -0x1.460db4p-5f);
+    s->center_offset = V(0.0f, 0x1.506acep+0f, 0.0f);
+    level_tris(s3_l369_tris, sizeof s3_l369_tris / sizeof s3_l369_tris[0]);
+    const fm_vec3_t p = V(0x1.54b16p+4f, 0x1.2a855p-5f, 0x1.4d62a2p+2f), z = V(0, 0, 0);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p, p, z, z, true, true, false));
+    /* a tile top across the border, 4 cm from it (outside the field): a crack under the ball */
+    const double d[2] = {0.0895 / 0.5484, 0.5411 / 0.5484}; /* the border's normal, out of the field (x, z) */
+    const double o0[3] = {20.7400 - 0.04 * d[0], 0.2808, 5.3162 - 0.04 * d[1]};
+    const double o1[3] = {21.8222 - 0.04 * d[0], 0.2808, 5.1372 - 0.04 * d[1]};
+    const double across[2][9] = {
+        {o0[0], o0[1], o0[2], o1[0], o1[1], o1[2], o1[0] - 0.5 * d[0], o1[1], o1[2] - 0.5 * d[1]},
+        {o0[0], o0[1], o0[2], o1[0] - 0.5 * d[0], o1[1], o1[2] - 0.5 * d[1], o0[0] - 0.5 * d[0], o0[1], o0[2] - 0.5 * d[1]}};
+    size_t n = sizeof s3_l369_tris / sizeof s3_l369_tris[0];
+    level_tris(s3_l369_tris, n);
+    for (int k = 0; k < 2; k++) {
+        soak_wtri_t *w = &lvl.wtris[n + (size_t)k];
+        for (int v = 0; v < 3; v++)
+            for (int j = 0; j < 3; j++) w->v[v][j] = across[k][3 * v + j];
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = (uint32_t)(n + 2);
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, s, p) > 0.05);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(p, p, z, z, true, true, false));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -808,6 +903,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
     RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
+    RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

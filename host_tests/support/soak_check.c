@@ -377,7 +377,7 @@ double soak_footing_widest = 0; /* their widest angular gap across up, rad */
 static bool contacts_on_one_ledge(const soak_level_t *lvl, const double e1[3], const double e2[3],
                                   const double bc[3], const int32_t *ctri, const int *ord, int n)
 {
-    enum { MAXV = 3 * 8 };
+    enum { MAXV = 3 * 64 }; /* every contact (MAXC): 9 around s3 l369 */
     double a[MAXV];
     int na = 0;
     if (3 * n > MAXV) return false;
