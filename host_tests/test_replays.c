@@ -587,6 +587,82 @@ static void test_oracle_footing_ledge_of_nine_contacts(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(p, p, z, z, true, true, false));
 }
 
+/* oa_dm5 (real map, soak-real seed 1 levels 3 and 5): the map's walkable triangles within
+ * 5 cm of the body. A flat floor (y -1.536, x <= 19.2) ends in a 72 mm face over the
+ * foot of a 30 degree slope rising along x (18343); a 30 degree slope rising along -z
+ * (18363, a long sliver) runs on below the floor. The foot stands on 18363 (on its
+ * plane), 2 and 8 cm past the floor's edge; the full ball overlaps 18363 by the slope
+ * rule (r / cos - r, 69 and 71 mm along up) and, less, the floor's edge (26 and 4 mm) and
+ * 18343 (36 and 57 mm), on opposite sides. Paired, the two failed the body as a crack
+ * (25.85 and 4.08 mm). The ball raised onto 18363 clears both: the surface under the foot
+ * out-holds them, they are no sides of a gap. Still failing: 3 mm under 18363; 18363
+ * removed (the ball hangs between the floor's edge and 18343); 18363 replaced by a flat
+ * floor at the foot (which holds the ball no higher than where it touches). */
+static const double oa_dm5_edge_tris[][9] = {
+    {20.224001, -1.024000, -8.960000, 19.200001, -1.608000, -7.936000, 19.200001, -1.608000, -1.280000}, /* 18343 */
+    {19.200001, -1.608000, -7.936000, 19.200001, -1.536000, -8.064000, 19.200001, -1.608000, -1.280000}, /* the face */
+    {19.200001, -1.536000, -8.064000, 19.200001, -1.536000, -1.280000, 19.200001, -1.608000, -1.280000},
+    {19.200001, -1.536000, -1.280000, 19.200001, -1.536000, -8.064000, 17.920000, -1.536000, -1.280000}, /* the floor */
+    {17.920000, -1.536000, -1.280000, 19.200001, -1.536000, -8.064000, 17.920000, -1.536000, -8.064000},
+    {19.200001, -1.608000, -7.936000, 20.224001, -1.024000, -8.960000, 15.104000, -1.792000, -7.616000} /* 18363 */
+};
+
+static void test_oracle_footing_out_held_by_the_slope_under_the_foot(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    char_body_settings_t *s = &osim.body.settings;
+    const size_t n = sizeof oa_dm5_edge_tris / sizeof oa_dm5_edge_tris[0];
+    fm_vec3_t z = V(0, 0, 0);
+    /* level 5's body and its foot (owner at the capsule's centre) */
+    s->radius = 0x1.d5fe0ep-2f;
+    s->height = 0x1.cab758p+0f;
+    s->step_height = 0x1.318a6p-2f;
+    s->floor_snap_distance = 0x1.8ec3fcp-2f;
+    s->floor_max_angle = 0x1.b22e9p-1f;
+    s->center_offset = V(0.0f, 0x1.cab758p-1f, 0.0f);
+    level_tris(oa_dm5_edge_tris, n);
+    const fm_vec3_t p5 = V(0x1.33883ep+4f, -0x1.8ff424p+0f, -0x1.008436p+3f);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p5));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p5, p5, z, z, true, false, false));
+    /* 3 mm under 18363: fails (the surface under the foot 3 mm above it, and nothing
+     * out-held there: the crack, 3 mm deeper, 28.85 mm) */
+    const fm_vec3_t q5 = V(p5.x, p5.y - 0.003f, p5.z);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.02885, soak_check_footing(&lvl, s, q5));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(q5, q5, z, z, true, false, false));
+    /* 18363 gone: the ball hangs between the floor's edge and 18343, a crack */
+    level_tris(oa_dm5_edge_tris, n - 1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.02585, soak_check_footing(&lvl, s, p5));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(p5, p5, z, z, true, false, false));
+    /* a flat floor at the foot instead: it holds the ball no higher, the crack counts */
+    const double yf = (double)p5.y - 0x1.cab758p-1;
+    const double flat[2][9] = {{19.201, yf, -8.5, 19.7, yf, -8.5, 19.7, yf, -7.5},
+                               {19.201, yf, -8.5, 19.7, yf, -7.5, 19.201, yf, -7.5}};
+    level_tris(oa_dm5_edge_tris, n - 1);
+    for (int k = 0; k < 2; k++) {
+        soak_wtri_t *w = &lvl.wtris[n - 1 + (size_t)k];
+        for (int v = 0; v < 3; v++)
+            for (int j = 0; j < 3; j++) w->v[v][j] = flat[k][3 * v + j];
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+    lvl.nwtris = (uint32_t)(n + 1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.02585, soak_check_footing(&lvl, s, p5));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(p5, p5, z, z, true, false, false));
+    /* level 3's body, 8 cm past the floor's edge */
+    s->radius = 0x1.e22f4ep-2f;
+    s->height = 0x1.b10dcp+0f;
+    s->step_height = 0x1.7fec32p-2f;
+    s->floor_snap_distance = 0x1.b3f188p-2f;
+    s->floor_max_angle = 0x1.9ae178p-1f;
+    s->center_offset = V(0.0f, 0.0f, 0.0f);
+    level_tris(oa_dm5_edge_tris, n);
+    const fm_vec3_t p3 = V(0x1.3481eep+4f, -0x1.672034p-1f, -0x1.015cd2p+3f);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p3));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p3, p3, z, z, true, false, false));
+    level_tris(oa_dm5_edge_tris, n - 1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00408, soak_check_footing(&lvl, s, p3));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -904,6 +980,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);
+    RUN_TEST(test_oracle_footing_out_held_by_the_slope_under_the_foot);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

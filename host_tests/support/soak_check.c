@@ -361,6 +361,23 @@ static double pt_tri_dist(const double p[3], const soak_wtri_t *w)
     return dist3(c, p);
 }
 
+/* How far the ball (centre bc, radius r) must be raised along up to clear triangle w:
+ * 0 when it does not overlap it, -1 when no raise up to top clears it (bisection, 40
+ * steps, in [0, top]). */
+static double raise_to_clear(const double bc[3], const double up[3], double r, const soak_wtri_t *w, double top)
+{
+    double lo = 0, hi = top, p[3];
+    if (pt_tri_dist(bc, w) >= r) return 0;
+    for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * hi;
+    if (pt_tri_dist(p, w) < r) return -1;
+    for (int it = 0; it < 40; it++) {
+        double mid = 0.5 * (lo + hi);
+        for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * mid;
+        if (pt_tri_dist(p, w) >= r) hi = mid; else lo = mid;
+    }
+    return hi;
+}
+
 int32_t soak_footing_tri = -1; /* the triangle of the last soak_check_footing result (diagnosis) */
 int32_t soak_footing_tri2 = -1; /* the other triangle of its crack pair, or -1: under the foot */
 int soak_footing_ncontacts = 0; /* contacts around the foot of the crack case, 0: under the foot */
@@ -412,6 +429,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    (higher than the step zone it would be inside the sweep capsule: penetration) */
     bool found = false;
     double z1 = -1e300, ex1 = 0;
+    int32_t under = -1; /* the triangle of z1: the surface under the foot */
     /* planes of the walkable triangles the foot stands on or over (crossed by that line
      * at most SOAK_FOOT_TOL above the foot, or below it), each once: case 2 below does
      * not take them for a side of a gap */
@@ -430,7 +448,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (!(t >= -below && t <= step + SOAK_FOOT_TOL)) continue;
         double x[3] = {f[0] + up[0] * t, f[1] + up[1] * t, f[2] + up[2] * t};
         if (pt_tri_dist(x, w) > 1e-9) continue;
-        if (!found || t > z1) z1 = t;
+        if (!found || t > z1) { z1 = t; under = (int32_t)i; }
         /* at it or above it (t <= SOAK_FOOT_TOL): the foot is over this floor, not over a
          * gap, however high it is held above it (the sweep capsule's bottom ball resting on
          * a slope too steep for the capsule's bottom, r / cos > r + step: s3 l15, l146; the
@@ -459,6 +477,20 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      *    the ball, stands on it) and the other slope by less; paired, the two failed a
      *    body standing on the surface under its foot (seed 1 levels 8, 22, 26). */
     double bc[3] = {f[0] + up[0] * r, f[1] + up[1] * r, f[2] + up[2] * r};
+    /* The surface under the foot holds the ball up to where the ball raised along up
+     * clears it (on a slope the full ball overlaps it by the seed's slope rule, r / cos - r
+     * along up). A contact the ball raised that far clears is out-held: lower than the
+     * surface the foot stands on holds the ball, it is no side of a gap (oa_dm5: a flat
+     * floor's edge and a 30 degree slope beside the foot, both in the step zone, the foot
+     * on a 30 degree slope across them; paired, they failed it as a crack by 4.1 and 25.9
+     * mm). Only where the foot is on or above that surface (case 1 fails it otherwise); on
+     * a flat floor the ball touches it at most, and nothing is out-held. */
+    const double top = step + r + 0.01;
+    double hold = 0;
+    if (under >= 0 && z1 <= SOAK_FOOT_TOL) {
+        hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
+        if (hold < 0) hold = 0;
+    }
     enum { MAXC = 64 };
     double cu[MAXC][3], cex[MAXC];
     int32_t ctri[MAXC];
@@ -482,14 +514,9 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double du = dot3(d, up), dh[3] = {d[0] - up[0] * du, d[1] - up[1] * du, d[2] - up[2] * du};
         double l = sqrt(dot3(dh, dh));
         if (l < 1e-6) continue; /* right under the ball centre: case 1's business */
-        double lo = 0, hi = step + r + 0.01, p[3];
-        for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * hi;
-        if (pt_tri_dist(p, w) < r) continue; /* not cleared by any raise in range */
-        for (int it = 0; it < 40; it++) {
-            double mid = 0.5 * (lo + hi);
-            for (int k = 0; k < 3; k++) p[k] = bc[k] + up[k] * mid;
-            if (pt_tri_dist(p, w) >= r) hi = mid; else lo = mid;
-        }
+        double hi = raise_to_clear(bc, up, r, w, top);
+        if (hi < 0) continue;      /* not cleared by any raise in range */
+        if (hi <= hold) continue;  /* out-held by the surface under the foot */
         for (int k = 0; k < 3; k++) cu[nc][k] = dh[k] / l;
         cex[nc] = hi - allow;
         ctri[nc] = (int32_t)i;
