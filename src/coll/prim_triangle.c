@@ -256,17 +256,19 @@ static inline void tri_setup_keep(tri_t *t, const fm_vec3_t tri[3], coll_tri_pre
 }
 
 /** Point q (on or near the plane) inside the closed triangle. */
-static bool tri_contains(const tri_t *t, fm_vec3_t q)
+static bool tri_contains(const tri_t *t, const fm_vec3_t *pq)
 {
+    const fm_vec3_t q = *pq;
     for (int i = 0; i < 3; i++)
         if (v3_dot(v3_cross(t->e[i], v3_sub(q, t->v[i])), t->nraw) < 0.0f) return false;
     return true;
 }
 
 /** Squared distance of segment a..b to the triangle with closest points. */
-static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt,
-                                int *edge, float *eu, float *ev)
+static float seg_tri_closest_ex(const tri_t *t, const fm_vec3_t *pa, const fm_vec3_t *pb, fm_vec3_t *ps,
+                                fm_vec3_t *pt, int *edge, float *eu, float *ev)
 {
+    const fm_vec3_t a = *pa, b = *pb;
     const bool point = a.x == b.x && a.y == b.y && a.z == b.z; /* a sphere's centre */
     float best = 3.0e38f;
     *edge = -1;
@@ -277,16 +279,16 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
             float den = ha - hb;
             fm_vec3_t x = den != 0.0f ? v3_madd(a, v3_sub(b, a), ha / den) : a;
             x = v3_madd(x, t->n, -v3_dot(t->n, v3_sub(x, t->v[0])));
-            if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
+            if (tri_contains(t, &x)) { *ps = x; *pt = x; return 0.0f; }
         }
         fm_vec3_t q = v3_madd(a, t->n, -ha);
-        bool ina = tri_contains(t, q);
+        bool ina = tri_contains(t, &q);
         if (ina) { best = ha * ha; *ps = a; *pt = q; }
         if (point) {
             if (ina) return best; /* a point over the face: nothing is closer */
         } else {
             q = v3_madd(b, t->n, -hb);
-            bool inb = tri_contains(t, q);
+            bool inb = tri_contains(t, &q);
             if (inb && hb * hb < best) { best = hb * hb; *ps = b; *pt = q; }
             /* Both ends over the face (and on one side of it): so is the whole segment, and
              * its distance, the height, is least at an end; no edge is closer. */
@@ -314,7 +316,7 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     return best;
 }
 
-static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+static float seg_tri_closest(const tri_t *t, const fm_vec3_t *a, const fm_vec3_t *b, fm_vec3_t *ps, fm_vec3_t *pt)
 {
     int edge;
     float u, v;
@@ -346,7 +348,7 @@ float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b
 {
     tri_t t;
     tri_setup(&t, tri);
-    return seg_tri_closest(&t, a, b, ps, pt);
+    return seg_tri_closest(&t, &a, &b, ps, pt);
 }
 
 /** Overlap result from the closest points at distance sqrt(d2) < r. */
@@ -445,7 +447,7 @@ static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, f
     float tt, sig;
     if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
     fm_vec3_t q = v3_madd(v3_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
-    if (!tri_contains(t, q)) return;
+    if (!tri_contains(t, &q)) return;
     take(best, tt, v3_scale(t->n, sig), q);
 }
 
@@ -482,14 +484,15 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
-static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack);
-static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max)
+static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
+static bool sweep_separated(const sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
 {
     return sweep_separated_k(c, u, rc, t_max, 1e-5f);
 }
 
-static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack)
+static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
+    const fm_vec3_t u = *pu;
     float uu = v3_len2(u);
     if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
     const tri_t *t = &c->tri;
@@ -553,8 +556,9 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp) ||
-        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp)) return false;
+    /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
+    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
     if (!prim_sane3(v3_scale(*disp, t_max))) return false;
 
     sweep_ctx_t c;
@@ -578,7 +582,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     fm_vec3_t ps, pt;
-    float d2 = seg_tri_closest(&c.tri, c.a, c.b, &ps, &pt);
+    float d2 = seg_tri_closest(&c.tri, &c.a, &c.b, &ps, &pt);
     float rin = r - tol;
     if (d2 < rin * rin) {
         overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
@@ -600,7 +604,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     c.mag += v3_abs_sum(c.tri.v[0]);
     c.mag += v3_abs_sum(c.tri.v[1]);
     c.mag += v3_abs_sum(c.tri.v[2]);
-    if (confirm ? sweep_separated_k(&c, v3_sub(ps, pt), rin, t_max, 1e-6f) : sweep_separated(&c, v3_sub(ps, pt), r, t_max))
+    fm_vec3_t sep = v3_sub(ps, pt);
+    if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
         return false;
 
     feat_hit_t best;
@@ -626,7 +631,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         fm_vec3_t ha = v3_add(c.a, off), hb = v3_add(c.b, off);
         int edge;
         float eu, ev;
-        float d2h = seg_tri_closest_ex(&c.tri, ha, hb, &ps, &pt, &edge, &eu, &ev);
+        float d2h = seg_tri_closest_ex(&c.tri, &ha, &hb, &ps, &pt, &edge, &eu, &ev);
         /* Near a flat minimum rounding can pick a candidate pair slightly off the true one
          * (e.g. a vertex instead of a point just past it on the next edge); alternating
          * projections (segment point nearest the triangle point, and back) settle it. */
@@ -635,7 +640,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
             fm_vec3_t qs, qt, dummy;
             coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
-            float q2 = seg_tri_closest(&c.tri, qs, qs, &dummy, &qt);
+            float q2 = seg_tri_closest(&c.tri, &qs, &qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
             edge = -1;
@@ -650,12 +655,14 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     /* Count the contact only when the motion goes deeper than the touch tolerance: first
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
-        if (sweep_separated_k(&c, hit->normal, rin, t_max, 1e-6f)) return false;
+        if (sweep_separated_k(&c, &hit->normal, rin, t_max, 1e-6f)) return false;
         fm_vec3_t off = v3_scale(c.d, t_max);
-        float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
+        fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+        float d2e = seg_tri_closest(&c.tri, &ea, &eb, &ps, &pt);
         if (!(d2e < rin * rin)) {
             /* clear of rin along the closest pair's direction at the end: never deeper */
-            if (sweep_separated(&c, v3_sub(ps, pt), rin, t_max)) return false;
+            sep = v3_sub(ps, pt);
+            if (sweep_separated(&c, &sep, rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
@@ -686,12 +693,12 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) ||
-        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1])) return false;
+    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
     tri_t t;
     tri_setup_keep(&t, tri, prep);
     fm_vec3_t ps, pt;
-    float d2 = seg_tri_closest(&t, seg[0], seg[1], &ps, &pt);
+    float d2 = seg_tri_closest(&t, &seg[0], &seg[1], &ps, &pt);
     float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     if (!(d2 < rin * rin)) return false;
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
