@@ -202,25 +202,31 @@ typedef struct {
 /* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
  * *apex: the vertex shared by the two shortest edges, *nn: |nraw|^2, *lmax: the longest
  * edge squared. */
-static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
+/* The raw normal from the edges e[i] = v[i+1] - v[i]: the two shortest crossed (for a
+ * needle that keeps the rounding error small); *apex: the vertex they share; *lmax: the
+ * longest edge squared. */
+PRIM_INLINE fm_vec3_t raw_normal(const fm_vec3_t e[3], int *apex, float *lmax)
 {
-    for (int i = 0; i < 3; i++) t->v[i] = tri[i];
-    for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
-    /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
-    float l0 = v3_len2(t->e[0]), l1 = v3_len2(t->e[1]), l2 = v3_len2(t->e[2]);
+    float l0 = v3_len2(e[0]), l1 = v3_len2(e[1]), l2 = v3_len2(e[2]);
     int ia, ib;
     if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; *apex = 2; }
     else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; *apex = 0; }
     else                           { ia = 0; ib = 1; *apex = 1; }
-    t->nraw = v3_cross(t->e[ia], t->e[ib]);
-    float nn = v3_len2(t->nraw);
+    fm_vec3_t nraw = v3_cross(e[ia], e[ib]);
+    float nn = v3_len2(nraw);
     /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
-    if (nn < 1e-4f * v3_len2(t->e[ia]) * v3_len2(t->e[ib])) {
-        t->nraw = cross_accurate(t->e[ia], t->e[ib]);
-        nn = v3_len2(t->nraw);
-    }
-    *nn_out = nn;
+    if (nn < 1e-4f * v3_len2(e[ia]) * v3_len2(e[ib]))
+        nraw = cross_accurate(e[ia], e[ib]);
     *lmax = f_max(l0, f_max(l1, l2));
+    return nraw;
+}
+
+static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
+{
+    for (int i = 0; i < 3; i++) t->v[i] = tri[i];
+    for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
+    t->nraw = raw_normal(t->e, apex, lmax);
+    *nn_out = v3_len2(t->nraw);
 }
 
 static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
@@ -753,19 +759,20 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     if (det == 0.0f || !f_finite(det)) return false;
     (void)sz;
     /* The distance from the plane through the vertex shared by the two shortest edges:
-     * better conditioned than the sheared-z interpolation for slivers. */
-    tri_t t; /* the raw normal only: its unit normal (a sqrt and a division) is not used */
+     * better conditioned than the sheared-z interpolation for slivers. The raw normal only
+     * (tri_setup_raw's expressions, inline: bit-identical); its unit normal is not used. */
+    fm_vec3_t e[3];
+    for (int i = 0; i < 3; i++) e[i] = v3_sub(tri[(i + 1) % 3], tri[i]);
     int apex;
-    float nn, lmax;
-    tri_setup_raw(&t, tri, &apex, &nn, &lmax);
-    (void)nn;
-    (void)lmax;
-    float dn = v3_dot(t.nraw, *d);
+    float lmax_unused;
+    fm_vec3_t nraw = raw_normal(e, &apex, &lmax_unused);
+    (void)lmax_unused;
+    float dn = v3_dot(nraw, *d);
     if (dn == 0.0f) return false;
-    float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;
+    float s = v3_dot(nraw, v3_sub(tri[apex], *o)) / dn;
     if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
 
-    fm_vec3_t n = v3_unit_or_against(t.nraw, *d);
+    fm_vec3_t n = v3_unit_or_against(nraw, *d);
     if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
     hit->t = s;
     hit->depth = 0.0f;
