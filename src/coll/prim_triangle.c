@@ -44,6 +44,9 @@ PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, floa
     if (cc <= 0.0f) return ROUND_INSIDE;
     float b = v3_dot(m, d);
     if (b >= 0.0f) return ROUND_MISS;
+    /* The entry comes after cc / (-2b) (the root's denominator is below -2b): past s_max
+     * with a margin far above the rounding of *s, so a miss either way (bit-identical). */
+    if (cc > -2.002f * b * s_max) return ROUND_MISS;
     float a = v3_dot(d, d);
     /* b^2 - a*cc cancels badly for a far origin: use a*(r^2 - dmin^2), dmin from the
      * closest point of the line to the centre. */
@@ -271,16 +274,18 @@ static bool tri_contains(const tri_t *t, const fm_vec3_t *pq)
 }
 
 /** Squared distance of segment a..b to the triangle with closest points. */
-static float seg_tri_closest_ex(const tri_t *t, const fm_vec3_t *pa, const fm_vec3_t *pb, fm_vec3_t *ps,
-                                fm_vec3_t *pt, int *edge, float *eu, float *ev)
+/* hab: the heights of a and b over the face (the expressions below), when the caller has
+ * them already; NULL: computed here. */
+static float seg_tri_closest_ex(const tri_t *t, const fm_vec3_t *pa, const fm_vec3_t *pb, const float *hab,
+                                fm_vec3_t *ps, fm_vec3_t *pt, int *edge, float *eu, float *ev)
 {
     const fm_vec3_t a = *pa, b = *pb;
     const bool point = a.x == b.x && a.y == b.y && a.z == b.z; /* a sphere's centre */
     float best = 3.0e38f;
     *edge = -1;
     if (t->has_face) {
-        float ha = v3_dot(t->n, v3_sub(a, t->v[0]));
-        float hb = v3_dot(t->n, v3_sub(b, t->v[0]));
+        float ha = hab ? hab[0] : v3_dot(t->n, v3_sub(a, t->v[0]));
+        float hb = hab ? hab[1] : v3_dot(t->n, v3_sub(b, t->v[0]));
         if ((ha <= 0.0f && hb >= 0.0f) || (ha >= 0.0f && hb <= 0.0f)) {
             float den = ha - hb;
             fm_vec3_t x = den != 0.0f ? v3_madd(a, v3_sub(b, a), ha / den) : a;
@@ -326,7 +331,7 @@ static float seg_tri_closest(const tri_t *t, const fm_vec3_t *a, const fm_vec3_t
 {
     int edge;
     float u, v;
-    return seg_tri_closest_ex(t, a, b, ps, pt, &edge, &u, &v);
+    return seg_tri_closest_ex(t, a, b, NULL, ps, pt, &edge, &u, &v);
 }
 
 /**
@@ -412,6 +417,7 @@ typedef struct {
     fm_vec3_t a, b, s, d;
     float ss;
     float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
+    float h[2], dn; /* has_face: heights of a and b over the face, and d along its normal */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
 
@@ -445,11 +451,10 @@ static inline bool plane_approach(float h, float dn, float r, float t_max, const
 }
 
 /** Endpoint p moving by d against the offset face on its side. */
-static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, feat_hit_t *best)
+static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float h, float r, float t_max, feat_hit_t *best)
 {
     const tri_t *t = &c->tri;
-    float h = v3_dot(t->n, v3_sub(p, t->v[0]));
-    float dn = v3_dot(t->n, c->d);
+    float dn = c->dn;
     float tt, sig;
     if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
     fm_vec3_t q = v3_madd(v3_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
@@ -522,7 +527,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
     for (int k = 0; k < nend; k++) {
         if (t->has_face) {
-            face_test(c, ends[k], r, t_max, best);
+            face_test(c, ends[k], c->h[k], r, t_max, best);
             if (any && best->hit) return true;
         }
         for (int i = 0; i < 3; i++) {
@@ -578,9 +583,10 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     /* Cull: both endpoints beyond the same offset plane over the whole motion. */
     if (c.tri.has_face) {
-        float ha = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
-        float hb = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
-        float dd = moving ? v3_dot(c.tri.n, c.d) * t_max : 0.0f;
+        float ha = c.h[0] = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
+        float hb = c.h[1] = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
+        c.dn = v3_dot(c.tri.n, c.d);
+        float dd = moving ? c.dn * t_max : 0.0f;
         float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
         float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
@@ -588,7 +594,9 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     fm_vec3_t ps, pt;
-    float d2 = seg_tri_closest(&c.tri, &c.a, &c.b, &ps, &pt);
+    int edge0;
+    float eu0, ev0;
+    float d2 = seg_tri_closest_ex(&c.tri, &c.a, &c.b, c.tri.has_face ? c.h : NULL, &ps, &pt, &edge0, &eu0, &ev0);
     float rin = r - tol;
     if (d2 < rin * rin) {
         overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
@@ -637,7 +645,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         fm_vec3_t ha = v3_add(c.a, off), hb = v3_add(c.b, off);
         int edge;
         float eu, ev;
-        float d2h = seg_tri_closest_ex(&c.tri, &ha, &hb, &ps, &pt, &edge, &eu, &ev);
+        float d2h = seg_tri_closest_ex(&c.tri, &ha, &hb, NULL, &ps, &pt, &edge, &eu, &ev);
         /* Near a flat minimum rounding can pick a candidate pair slightly off the true one
          * (e.g. a vertex instead of a point just past it on the next edge); alternating
          * projections (segment point nearest the triangle point, and back) settle it. */
