@@ -455,7 +455,7 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
-    support_t w = {0};
+    support_t w; /* written by ball_held when it returns true: read only then */
     if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
         *s = w;
 }
@@ -526,7 +526,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     float above = c->radius + c->step;            /* ray origin above the foot */
     const float contact_eps = c->contact_eps, step_eps = cb_len_tol(c, CB_STEP_EPS);
     float reach = was_grounded ? c->snap : contact_eps;
-    support_t s = {0};
+    support_t s; /* only what is read is written: the rest when found */
+    s.found = false;
     /* the foot ray's floor, where the crack rule held the ball between an edge and it */
     support_t floor_s;
     bool edge_and_floor = false;
@@ -570,7 +571,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * finds through the gap, however it came there (stepping down into
                      * it, landing in it, walking along the floor into it); a stair's next
                      * tread stays a step down. */
-                    support_t w = {0};
+                    support_t w;
                     fm_vec3_t far;
                     coll_sweep_hit_t edge;
                     float edge_len;
@@ -640,7 +641,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * the same test); with no floor in reach it falls on towards the one below.
                  * Over a real gap the step is still undone. */
                 *pos = before;
-                s = edge_and_floor ? floor_s : (support_t){0};
+                if (edge_and_floor) s = floor_s;
+                else s.found = false;
                 fits = !s.found || stand_on(c, pos, s.gap);
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
