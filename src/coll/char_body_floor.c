@@ -49,8 +49,9 @@ bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
 fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     char_body_t *b = c->body;
-    /* Swept, so a platform cannot carry the body through a wall. */
-    coll_cb_slide(c, pos, delta, NULL, false);
+    /* Swept, so a platform cannot carry the body through a wall. A floor that did not move
+     * (a static level's: delta 0, or rounding) moves nothing: the slide would stop at once. */
+    if (v3_len(delta) > c->tiny) coll_cb_slide(c, pos, delta, NULL, false);
     /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
      * velocity over the step (at mid-step); extrapolated by half a step from the previous
      * chord, a turning platform's tangent at take-off is right to second order (a jump off
