@@ -548,6 +548,7 @@ __attribute__((always_inline))
 #endif
 static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap)
 {
+    if (gap == 0.0f) return true; /* already on it (the move by 0 would not move it) */
     if (gap > 0.0f) {
         snap_down(c, pos, gap);
         return true;
