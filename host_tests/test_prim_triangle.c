@@ -7,6 +7,7 @@
 #include "alloc_guard.h"
 #include "prim_ref.h"
 #include "prim.h"
+#include "prim_util.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -811,6 +812,60 @@ static void test_prepared_triangle_is_bit_identical(void)
     (void)n_prepared;
 }
 
+/* ray_sphere's early rejection (an entry after s_max found before the square root) must
+ * agree bit for bit with the full root: the full test here (the code before it), run on
+ * random rays whose s_max is put exactly at, just before and just after the entry, near
+ * and far from the origin. */
+static bool ray_sphere_full(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, float s_max, float *s_out)
+{
+    fm_vec3_t m = V(o.x - c.x, o.y - c.y, o.z - c.z);
+    float cc = m.x * m.x + m.y * m.y + m.z * m.z - r * r;
+    if (cc <= 0.0f) { *s_out = 0.0f; return true; }
+    float b = m.x * d.x + m.y * d.y + m.z * d.z;
+    if (b >= 0.0f) return false;
+    float a = d.x * d.x + d.y * d.y + d.z * d.z;
+    float k = -b / a;
+    fm_vec3_t w = V(m.x + d.x * k, m.y + d.y * k, m.z + d.z * k);
+    float disc = a * (r * r - (w.x * w.x + w.y * w.y + w.z * w.z));
+    if (!(disc >= 0.0f)) return false;
+    *s_out = cc / (-b + sqrtf(disc));
+    return *s_out <= s_max;
+}
+
+static void test_ray_sphere_early_reject_is_exact(void)
+{
+    int n_hits = 0, n_edge_miss = 0;
+    for (int i = 0; i < 200000; i++) {
+        float scale = (i & 1) ? 1.0f : 1000.0f;
+        fm_vec3_t c = V(rnd_range(-scale, scale), rnd_range(-scale, scale), rnd_range(-scale, scale));
+        float r = rnd_range(0.01f, 2.0f);
+        /* aimed near the sphere: grazing and central entries */
+        fm_vec3_t aim = V(c.x + rnd_range(-1.2f, 1.2f) * r, c.y + rnd_range(-1.2f, 1.2f) * r, c.z + rnd_range(-1.2f, 1.2f) * r);
+        fm_vec3_t o = V(aim.x + rnd_range(-5, 5), aim.y + rnd_range(-5, 5), aim.z + rnd_range(-5, 5));
+        float len = rnd_range(0.2f, 3.0f);
+        fm_vec3_t d = V((aim.x - o.x) * len, (aim.y - o.y) * len, (aim.z - o.z) * len);
+        float s_ref;
+        if (!ray_sphere_full(o, d, c, r, 3.0e38f, &s_ref) || s_ref == 0.0f) continue;
+        float cuts[5] = { s_ref, nextafterf(s_ref, 0.0f), nextafterf(s_ref, 1e30f), s_ref * 0.999f, s_ref * 0.5f };
+        for (int k = 0; k < 5; k++) {
+            float sr = 0.0f;
+            bool want = ray_sphere_full(o, d, c, r, cuts[k], &sr);
+            prim_ray_t h;
+            bool got = coll_prim_ray_sphere(o, d, c, r, cuts[k], &h);
+            TEST_ASSERT_EQUAL_INT(want, got);
+            if (want) {
+                uint32_t bw, bg;
+                memcpy(&bw, &sr, 4);
+                memcpy(&bg, &h.s, 4);
+                TEST_ASSERT_EQUAL_UINT32(bw, bg);
+                n_hits++;
+            }
+            else n_edge_miss++;
+        }
+    }
+    TEST_ASSERT_TRUE(n_hits > 10000 && n_edge_miss > 10000);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -833,5 +888,6 @@ int main(void)
     RUN_TEST(test_random_sweeps_match_reference);
     RUN_TEST(test_random_sweeps_far_from_origin);
     RUN_TEST(test_random_touching_sweeps);
+    RUN_TEST(test_ray_sphere_early_reject_is_exact);
     return UNITY_END();
 }

@@ -357,6 +357,10 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     c.max_speed = max_speed;
     c.ev = NULL;
     c.gather = NULL;
+    cb_mem_t mem;
+    mem.down.valid = false;
+    mem.ray_valid = false;
+    c.mem = &mem;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */
     uint8_t own_mask = body->collider ? body->collider->write_mask : 0;

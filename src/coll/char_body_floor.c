@@ -49,8 +49,9 @@ bool coll_cb_carry_delta(const cb_ctx_t *c, fm_vec3_t *delta)
 fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     char_body_t *b = c->body;
-    /* Swept, so a platform cannot carry the body through a wall. */
-    coll_cb_slide(c, pos, delta, NULL, false);
+    /* Swept, so a platform cannot carry the body through a wall. A floor that did not move
+     * (a static level's: delta 0, or rounding) moves nothing: the slide would stop at once. */
+    if (v3_len(delta) > c->tiny) coll_cb_slide(c, pos, delta, NULL, false);
     /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
      * velocity over the step (at mid-step); extrapolated by half a step from the previous
      * chord, a turning platform's tangent at take-off is right to second order (a jump off
@@ -61,6 +62,39 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     b->carry_velocity = chord;
     b->flags |= CB_FLAG_CARRIED;
     return v3_finite(v) ? v : v3(0.0f, 0.0f, 0.0f);
+}
+
+bool cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit)
+{
+    bool found;
+    if (cb_down_known(c, pos, len, &found, hit)) return found;
+    found = cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), hit);
+    cb_down_t *d = &c->mem->down;
+    d->valid = true;
+    d->pos = pos;
+    d->len = len;
+    d->hit = found && isfinite(hit->t);
+    d->dist = d->hit ? (hit->t > 0.0f ? hit->t : 0.0f) * len : 0.0f;
+    if (d->hit) d->h = *hit;
+    return found;
+}
+
+void cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by)
+{
+    cb_down_t *d = &c->mem->down;
+    d->pos = pos;
+    d->len += by;
+    d->dist += by;
+    if (!(d->len >= 0.0f)) d->valid = false;
+}
+
+/** The crack rule's ball (radius r) dropped from b0, the sweep capsule's bottom ball at
+ *  pos, by len along -up: answered from the step's down sweep there when it is known. */
+static inline bool ball_drop(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t b0, float len, coll_sweep_hit_t *hit)
+{
+    bool found;
+    if (cb_down_known(c, pos, len, &found, hit)) return found;
+    return cb_sweep(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), hit);
 }
 
 /** What holds the body up at the end of a step. */
@@ -157,7 +191,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         h1 = *first;
         h1.t = first->t * first_len / len;
         if (!(h1.t <= 1.0f)) return false;
-    } else if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -len), &h1)) {
+    } else if (!ball_drop(c, pos, b0, len, &h1)) {
         return false;
     }
     if (!isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point)) return false;
@@ -306,7 +340,7 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     /* descent along up at which the ball would touch the floor's plane, less the margin */
     float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
     if (!(s > c->tiny)) return false;
-    if (!cb_sweep(c, b0, r, 0.0f, v3_scale(up, -s), edge)) return true;
+    if (!ball_drop(c, pos, b0, s, edge)) return true;
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
     return false;
@@ -361,7 +395,11 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
         float len = v3_len(left);
         if (!(len > c->tiny)) return;
         coll_sweep_hit_t hit;
-        if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit) ||
+        /* (the first: known where the stair step came down to) */
+        bool found;
+        if (!(it == 0 && cb_down_known(c, *pos, dist, &found, &hit)))
+            found = cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, left, &hit);
+        if (!found ||
             !isfinite(hit.t) || !v3_finite(hit.normal)) {
             *pos = v3_add(*pos, left);
             return;
@@ -455,7 +493,7 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
-    support_t w = {0};
+    support_t w; /* written by ball_held when it returns true: read only then */
     if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
         *s = w;
 }
@@ -510,6 +548,7 @@ __attribute__((always_inline))
 #endif
 static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap)
 {
+    if (gap == 0.0f) return true; /* already on it (the move by 0 would not move it) */
     if (gap > 0.0f) {
         snap_down(c, pos, gap);
         return true;
@@ -526,7 +565,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     float above = c->radius + c->step;            /* ray origin above the foot */
     const float contact_eps = c->contact_eps, step_eps = cb_len_tol(c, CB_STEP_EPS);
     float reach = was_grounded ? c->snap : contact_eps;
-    support_t s = {0};
+    support_t s; /* only what is read is written: the rest when found */
+    s.found = false;
     /* the foot ray's floor, where the crack rule held the ball between an edge and it */
     support_t floor_s;
     bool edge_and_floor = false;
@@ -541,7 +581,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
         float depth = c->snap;
         if (c->radius > (c->radius + c->step + c->snap - contact_eps) * b->cos_floor_max_angle)
             depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
-        bool found = cb_ray(c, origin, v3_scale(up, -1.0f), above + depth, &hit) &&
+        bool found = cb_foot_ray(c, origin, above + depth, &hit, false) &&
                      v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
             float gap = hit.distance - above; /* > 0: floor below the foot; < 0: above it (a step) */
@@ -570,7 +610,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * finds through the gap, however it came there (stepping down into
                      * it, landing in it, walking along the floor into it); a stair's next
                      * tread stays a step down. */
-                    support_t w = {0};
+                    support_t w;
                     fm_vec3_t far;
                     coll_sweep_hit_t edge;
                     float edge_len;
@@ -640,7 +680,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * the same test); with no floor in reach it falls on towards the one below.
                  * Over a real gap the step is still undone. */
                 *pos = before;
-                s = edge_and_floor ? floor_s : (support_t){0};
+                if (edge_and_floor) s = floor_s;
+                else s.found = false;
                 fits = !s.found || stand_on(c, pos, s.gap);
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);

@@ -57,6 +57,32 @@ enum {
 #define CB_MAX_CONTACTS 4
 
 
+/** The stair step's down sweep, remembered (cb_sweep_down): the sweep capsule at owner
+ *  position `pos` going down along -up by `len`, `dist` along it to the first contact `h`
+ *  (when `hit`). Moved along up since (cb_down_moved: unswept, the way it came), pos, len
+ *  and dist say so. Moving along its axis from a clear start the capsule's first contact
+ *  is its bottom ball's: a later down sweep of either from the same place reaching no
+ *  farther is answered from it (cb_down_known). */
+typedef struct {
+    fm_vec3_t pos;
+    float len;
+    float dist;
+    bool valid;
+    bool hit;
+    coll_sweep_hit_t h;
+} cb_down_t;
+
+/** The step's memory of its queries (cb_ctx_t.mem, always present): the stair step's down
+ *  sweep and its foot ray (the probe's, when the body stays there). */
+typedef struct {
+    cb_down_t down;
+    bool ray_valid;
+    bool ray_found;
+    fm_vec3_t ray_origin;
+    float ray_len;
+    coll_ray_hit_t ray_hit;
+} cb_mem_t;
+
 /** What one step works with: the scene, the body's cached geometry and the current up. */
 typedef struct {
     const coll_scene_t *scene;
@@ -77,6 +103,7 @@ typedef struct {
     float max_speed;     ///< CB_MAX_SPEED in the body's unit: no motion across up is faster
     char_body_events_t *ev; ///< events of the main slide and probe; NULL for the carry's slide
     coll_gather_t *gather; ///< the step's candidate triangles (their prep filled by the queries), or NULL
+    cb_mem_t *mem;         ///< the step's query memory (never NULL)
 } cb_ctx_t;
 
 /** A tolerance given in metres (CB_*), in the body's length unit (the ones used on every
@@ -105,6 +132,48 @@ static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_con
                                  c->body->settings.coll_types, out, max_out);
 }
 
+/** The ray along -up from `origin` by max_dist (the foot ray of the stair step and of the
+ *  probe): answered from the step's memory when it is the very ray remembered there;
+ *  `remember`: it is remembered. */
+static inline bool cb_foot_ray(const cb_ctx_t *c, fm_vec3_t origin, float max_dist, coll_ray_hit_t *hit,
+                               bool remember)
+{
+    cb_mem_t *m = c->mem;
+    if (m->ray_valid && m->ray_len == max_dist && m->ray_origin.x == origin.x && m->ray_origin.y == origin.y &&
+        m->ray_origin.z == origin.z) {
+        if (m->ray_found) *hit = m->ray_hit;
+        return m->ray_found;
+    }
+    bool found = cb_ray(c, origin, v3_scale(c->up, -1.0f), max_dist, hit);
+    if (remember) {
+        m->ray_valid = true;
+        m->ray_found = found;
+        m->ray_origin = origin;
+        m->ray_len = max_dist;
+        if (found) m->ray_hit = *hit;
+    }
+    return found;
+}
+
+/** Answers the down sweep of the sweep capsule, or of its bottom ball, at owner position
+ *  pos by len along -up from the remembered stair step's (cb_down_t): true when known
+ *  (then *found, and *hit when found). A contact at the very start is not answered. */
+static inline bool cb_down_known(const cb_ctx_t *c, fm_vec3_t pos, float len, bool *found, coll_sweep_hit_t *hit)
+{
+    const cb_down_t *d = &c->mem->down;
+    if (!d->valid || d->pos.x != pos.x || d->pos.y != pos.y || d->pos.z != pos.z) return false;
+    if (d->hit && d->dist <= len) {
+        if (!(d->dist > 0.0f)) return false;
+        *hit = d->h;
+        hit->t = d->dist / len;
+        *found = true;
+        return true;
+    }
+    if (!(len <= d->len)) return false; /* reaches farther than the remembered sweep */
+    *found = false;
+    return true;
+}
+
 /** Full capsule centre of an owner position. */
 static inline fm_vec3_t cb_center(const cb_ctx_t *c, fm_vec3_t pos)
 {
@@ -121,6 +190,13 @@ static inline fm_vec3_t cb_sweep_center(const cb_ctx_t *c, fm_vec3_t pos)
     return v3_madd(cb_center(c, pos), c->up, c->sweep_lift);
 }
 
+
+/** The sweep capsule's down sweep at owner position pos by len along -up (known, or swept),
+ *  remembered in the step's memory (cb_down_t). */
+bool cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit);
+/** The remembered down sweep's place moved by `by` along up (> 0: up) to pos, unswept, along
+ *  the way it came: its first contact is that much farther (or nearer). */
+void cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by);
 
 /** Moves by disp with up to max_slides sweep-and-slide iterations, clipping *vel (may be NULL)
  *  by the same planes. grounded: walls only (hits above the step zone act as vertical). */

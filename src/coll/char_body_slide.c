@@ -165,12 +165,15 @@ static float slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_
 }
 
 /** Height along up of the walkable floor under point p (searched from `above` over it down
- *  to `below` under it), relative to ref; false when there is none. */
-static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float below, fm_vec3_t ref, float *h)
+ *  to `below` under it), relative to ref; false when there is none. foot: the ray is
+ *  remembered (cb_foot_ray). */
+static bool floor_height(const cb_ctx_t *c, fm_vec3_t p, float above, float below, fm_vec3_t ref, float *h,
+                         bool foot)
 {
     const char_body_t *b = c->body;
     coll_ray_hit_t rh;
-    if (!cb_ray(c, v3_madd(p, c->up, above), v3_scale(c->up, -1.0f), above + below, &rh) ||
+    fm_vec3_t o = v3_madd(p, c->up, above);
+    if (!(foot ? cb_foot_ray(c, o, above + below, &rh, true) : cb_ray(c, o, v3_scale(c->up, -1.0f), above + below, &rh)) ||
         v3_dot(rh.normal, c->up) < b->cos_floor_max_angle)
         return false;
     *h = v3_dot(v3_sub(rh.point, ref), c->up);
@@ -203,22 +206,25 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     const float above = c->radius + c->step, eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot0 = cb_foot(c, *pos);
     float base;
-    if (!floor_height(c, foot0, above, c->snap, foot0, &base)) return false;
+    if (!floor_height(c, foot0, above, c->snap, foot0, &base, false)) return false;
     fm_vec3_t p = *pos;
     float lift = c->step * coll_cb_move_swept(c, &p, v3_scale(c->up, c->step));
     if (!(lift > cb_len_tol(c, 1e-4f))) return false;
     float f = coll_cb_move_swept(c, &p, h);
     if (!(f * hl > cb_len_tol(c, 1e-4f))) return false;
     /* down by the lift, keeping the contact that stops it */
-    fm_vec3_t down = v3_scale(c->up, -lift);
     coll_sweep_hit_t dh;
-    bool hung = cb_sweep(c, cb_sweep_center(c, p), c->radius, c->sweep_ihh, down, &dh) && isfinite(dh.t);
+    bool hung = cb_sweep_down(c, p, lift, &dh) && isfinite(dh.t);
     float travel = hung ? lift * (dh.t > 0.0f ? dh.t : 0.0f) - c->skin : lift;
-    if (travel > 0.0f) p = v3_madd(p, c->up, -travel);
+    if (travel > 0.0f) {
+        p = v3_madd(p, c->up, -travel);
+        cb_down_moved(c, p, -travel); /* the probe's ball drops from here: what it meets is known */
+    }
     fm_vec3_t foot = cb_foot(c, p);
     float rise = v3_dot(v3_sub(foot, foot0), c->up) - base;
     float floor_h;
-    if (!floor_height(c, foot, above, c->snap, foot0, &floor_h)) return false;
+    /* (the probe's foot ray, when the body stays here) */
+    if (!floor_height(c, foot, above, c->snap, foot0, &floor_h, true)) return false;
     floor_h -= base;
     if (floor_h > c->step + eps || rise > c->step + eps) return false;
     if (rise > floor_h + c->skin + eps) {
@@ -227,7 +233,7 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
         fm_vec3_t probe = v3_madd(foot, ahead, 0.75f);
         float tread;
         if (!hung || v3_len(ahead) > c->radius + eps ||
-            !floor_height(c, probe, above + rise, c->snap, foot0, &tread))
+            !floor_height(c, probe, above + rise, c->snap, foot0, &tread, false))
             return false;
         tread -= base;
         if (!(tread > eps) || tread > c->step + eps) return false;
@@ -236,7 +242,10 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
          * down sweep met nothing on it (nothing closer than the touch tolerance: it would
          * have stopped there), so going back up it meets nothing either. */
         fm_vec3_t d = v3_scale(c->up, floor_h - rise);
-        if (travel > 0.0f && floor_h - rise <= travel) p = v3_add(p, d);
+        if (travel > 0.0f && floor_h - rise <= travel) {
+            p = v3_add(p, d);
+            cb_down_moved(c, p, floor_h - rise);
+        }
         else if (coll_cb_move_swept(c, &p, d) < 1.0f) return false;
     }
     if (c->ev) c->ev->step += v3_dot(v3_sub(p, *pos), c->up);
@@ -532,7 +541,7 @@ static bool sinks_foot(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to)
     if (!(v3_dot(v3_sub(from, to), c->up) > c->contact_eps)) return false;
     fm_vec3_t foot = cb_foot(c, to);
     float h;
-    return floor_height(c, foot, c->step + c->radius, 0.0f, foot, &h) && h > c->contact_eps;
+    return floor_height(c, foot, c->step + c->radius, 0.0f, foot, &h, false) && h > c->contact_eps;
 }
 
 /**
@@ -613,7 +622,7 @@ static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot = cb_foot(c, *p);
     float rise;
-    if (!floor_height(c, foot, c->radius + c->step, c->snap, foot, &rise)) return false;
+    if (!floor_height(c, foot, c->radius + c->step, c->snap, foot, &rise, false)) return false;
     float gap = -rise;
     if (gap < -step_eps) {
         fm_vec3_t q = *p;

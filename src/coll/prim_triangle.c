@@ -44,6 +44,9 @@ PRIM_INLINE int round_entry(fm_vec3_t m, fm_vec3_t d, float r, float s_max, floa
     if (cc <= 0.0f) return ROUND_INSIDE;
     float b = v3_dot(m, d);
     if (b >= 0.0f) return ROUND_MISS;
+    /* The entry comes after cc / (-2b) (the root's denominator is below -2b): past s_max
+     * with a margin far above the rounding of *s, so a miss either way (bit-identical). */
+    if (cc > -2.002f * b * s_max) return ROUND_MISS;
     float a = v3_dot(d, d);
     /* b^2 - a*cc cancels badly for a far origin: use a*(r^2 - dmin^2), dmin from the
      * closest point of the line to the centre. */
@@ -202,25 +205,31 @@ typedef struct {
 /* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
  * *apex: the vertex shared by the two shortest edges, *nn: |nraw|^2, *lmax: the longest
  * edge squared. */
-static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
+/* The raw normal from the edges e[i] = v[i+1] - v[i]: the two shortest crossed (for a
+ * needle that keeps the rounding error small); *apex: the vertex they share; *lmax: the
+ * longest edge squared. */
+PRIM_INLINE fm_vec3_t raw_normal(const fm_vec3_t e[3], int *apex, float *lmax)
 {
-    for (int i = 0; i < 3; i++) t->v[i] = tri[i];
-    for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
-    /* Cross the two shortest edges: for a needle that keeps the rounding error small. */
-    float l0 = v3_len2(t->e[0]), l1 = v3_len2(t->e[1]), l2 = v3_len2(t->e[2]);
+    float l0 = v3_len2(e[0]), l1 = v3_len2(e[1]), l2 = v3_len2(e[2]);
     int ia, ib;
     if (l0 >= l1 && l0 >= l2)      { ia = 1; ib = 2; *apex = 2; }
     else if (l1 >= l0 && l1 >= l2) { ia = 2; ib = 0; *apex = 0; }
     else                           { ia = 0; ib = 1; *apex = 1; }
-    t->nraw = v3_cross(t->e[ia], t->e[ib]);
-    float nn = v3_len2(t->nraw);
+    fm_vec3_t nraw = v3_cross(e[ia], e[ib]);
+    float nn = v3_len2(nraw);
     /* Flat sliver (the short edges nearly parallel): redo the products exactly. */
-    if (nn < 1e-4f * v3_len2(t->e[ia]) * v3_len2(t->e[ib])) {
-        t->nraw = cross_accurate(t->e[ia], t->e[ib]);
-        nn = v3_len2(t->nraw);
-    }
-    *nn_out = nn;
+    if (nn < 1e-4f * v3_len2(e[ia]) * v3_len2(e[ib]))
+        nraw = cross_accurate(e[ia], e[ib]);
     *lmax = f_max(l0, f_max(l1, l2));
+    return nraw;
+}
+
+static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, float *nn_out, float *lmax)
+{
+    for (int i = 0; i < 3; i++) t->v[i] = tri[i];
+    for (int i = 0; i < 3; i++) t->e[i] = v3_sub(t->v[(i + 1) % 3], t->v[i]);
+    t->nraw = raw_normal(t->e, apex, lmax);
+    *nn_out = v3_len2(t->nraw);
 }
 
 static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
@@ -256,37 +265,41 @@ static inline void tri_setup_keep(tri_t *t, const fm_vec3_t tri[3], coll_tri_pre
 }
 
 /** Point q (on or near the plane) inside the closed triangle. */
-static bool tri_contains(const tri_t *t, fm_vec3_t q)
+static bool tri_contains(const tri_t *t, const fm_vec3_t *pq)
 {
+    const fm_vec3_t q = *pq;
     for (int i = 0; i < 3; i++)
         if (v3_dot(v3_cross(t->e[i], v3_sub(q, t->v[i])), t->nraw) < 0.0f) return false;
     return true;
 }
 
 /** Squared distance of segment a..b to the triangle with closest points. */
-static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt,
-                                int *edge, float *eu, float *ev)
+/* hab: the heights of a and b over the face (the expressions below), when the caller has
+ * them already; NULL: computed here. */
+static float seg_tri_closest_ex(const tri_t *t, const fm_vec3_t *pa, const fm_vec3_t *pb, const float *hab,
+                                fm_vec3_t *ps, fm_vec3_t *pt, int *edge, float *eu, float *ev)
 {
+    const fm_vec3_t a = *pa, b = *pb;
     const bool point = a.x == b.x && a.y == b.y && a.z == b.z; /* a sphere's centre */
     float best = 3.0e38f;
     *edge = -1;
     if (t->has_face) {
-        float ha = v3_dot(t->n, v3_sub(a, t->v[0]));
-        float hb = v3_dot(t->n, v3_sub(b, t->v[0]));
+        float ha = hab ? hab[0] : v3_dot(t->n, v3_sub(a, t->v[0]));
+        float hb = hab ? hab[1] : v3_dot(t->n, v3_sub(b, t->v[0]));
         if ((ha <= 0.0f && hb >= 0.0f) || (ha >= 0.0f && hb <= 0.0f)) {
             float den = ha - hb;
             fm_vec3_t x = den != 0.0f ? v3_madd(a, v3_sub(b, a), ha / den) : a;
             x = v3_madd(x, t->n, -v3_dot(t->n, v3_sub(x, t->v[0])));
-            if (tri_contains(t, x)) { *ps = x; *pt = x; return 0.0f; }
+            if (tri_contains(t, &x)) { *ps = x; *pt = x; return 0.0f; }
         }
         fm_vec3_t q = v3_madd(a, t->n, -ha);
-        bool ina = tri_contains(t, q);
+        bool ina = tri_contains(t, &q);
         if (ina) { best = ha * ha; *ps = a; *pt = q; }
         if (point) {
             if (ina) return best; /* a point over the face: nothing is closer */
         } else {
             q = v3_madd(b, t->n, -hb);
-            bool inb = tri_contains(t, q);
+            bool inb = tri_contains(t, &q);
             if (inb && hb * hb < best) { best = hb * hb; *ps = b; *pt = q; }
             /* Both ends over the face (and on one side of it): so is the whole segment, and
              * its distance, the height, is least at an end; no edge is closer. */
@@ -314,11 +327,11 @@ static float seg_tri_closest_ex(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec
     return best;
 }
 
-static float seg_tri_closest(const tri_t *t, fm_vec3_t a, fm_vec3_t b, fm_vec3_t *ps, fm_vec3_t *pt)
+static float seg_tri_closest(const tri_t *t, const fm_vec3_t *a, const fm_vec3_t *b, fm_vec3_t *ps, fm_vec3_t *pt)
 {
     int edge;
     float u, v;
-    return seg_tri_closest_ex(t, a, b, ps, pt, &edge, &u, &v);
+    return seg_tri_closest_ex(t, a, b, NULL, ps, pt, &edge, &u, &v);
 }
 
 /**
@@ -346,7 +359,7 @@ float coll_prim_seg_tri_closest(const fm_vec3_t tri[3], fm_vec3_t a, fm_vec3_t b
 {
     tri_t t;
     tri_setup(&t, tri);
-    return seg_tri_closest(&t, a, b, ps, pt);
+    return seg_tri_closest(&t, &a, &b, ps, pt);
 }
 
 /** Overlap result from the closest points at distance sqrt(d2) < r. */
@@ -404,6 +417,7 @@ typedef struct {
     fm_vec3_t a, b, s, d;
     float ss;
     float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
+    float h[2], dn; /* has_face: heights of a and b over the face, and d along its normal */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
 
@@ -437,15 +451,14 @@ static inline bool plane_approach(float h, float dn, float r, float t_max, const
 }
 
 /** Endpoint p moving by d against the offset face on its side. */
-static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float r, float t_max, feat_hit_t *best)
+static void face_test(const sweep_ctx_t *c, fm_vec3_t p, float h, float r, float t_max, feat_hit_t *best)
 {
     const tri_t *t = &c->tri;
-    float h = v3_dot(t->n, v3_sub(p, t->v[0]));
-    float dn = v3_dot(t->n, c->d);
+    float dn = c->dn;
     float tt, sig;
     if (!plane_approach(h, dn, r, t_max, best, &tt, &sig)) return;
     fm_vec3_t q = v3_madd(v3_madd(p, c->d, tt), t->n, -(h + tt * dn)); /* onto the plane */
-    if (!tri_contains(t, q)) return;
+    if (!tri_contains(t, &q)) return;
     take(best, tt, v3_scale(t->n, sig), q);
 }
 
@@ -482,14 +495,15 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
-static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack);
-static bool sweep_separated(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max)
+static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
+static bool sweep_separated(const sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
 {
     return sweep_separated_k(c, u, rc, t_max, 1e-5f);
 }
 
-static bool sweep_separated_k(const sweep_ctx_t *c, fm_vec3_t u, float rc, float t_max, float slack)
+static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
+    const fm_vec3_t u = *pu;
     float uu = v3_len2(u);
     if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
     const tri_t *t = &c->tri;
@@ -513,7 +527,7 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     prim_ray_t h = { 0.0f, { { 0.0f, 0.0f, 0.0f } } }; /* (set by every test that returns true) */
     for (int k = 0; k < nend; k++) {
         if (t->has_face) {
-            face_test(c, ends[k], r, t_max, best);
+            face_test(c, ends[k], c->h[k], r, t_max, best);
             if (any && best->hit) return true;
         }
         for (int i = 0; i < 3; i++) {
@@ -553,8 +567,9 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 {
     if (!seg || !disp || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp) ||
-        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp)) return false;
+    /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
+    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
     if (!prim_sane3(v3_scale(*disp, t_max))) return false;
 
     sweep_ctx_t c;
@@ -568,9 +583,10 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     /* Cull: both endpoints beyond the same offset plane over the whole motion. */
     if (c.tri.has_face) {
-        float ha = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
-        float hb = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
-        float dd = moving ? v3_dot(c.tri.n, c.d) * t_max : 0.0f;
+        float ha = c.h[0] = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
+        float hb = c.h[1] = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
+        c.dn = v3_dot(c.tri.n, c.d);
+        float dd = moving ? c.dn * t_max : 0.0f;
         float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
         float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
@@ -578,7 +594,9 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     fm_vec3_t ps, pt;
-    float d2 = seg_tri_closest(&c.tri, c.a, c.b, &ps, &pt);
+    int edge0;
+    float eu0, ev0;
+    float d2 = seg_tri_closest_ex(&c.tri, &c.a, &c.b, c.tri.has_face ? c.h : NULL, &ps, &pt, &edge0, &eu0, &ev0);
     float rin = r - tol;
     if (d2 < rin * rin) {
         overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
@@ -600,7 +618,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     c.mag += v3_abs_sum(c.tri.v[0]);
     c.mag += v3_abs_sum(c.tri.v[1]);
     c.mag += v3_abs_sum(c.tri.v[2]);
-    if (confirm ? sweep_separated_k(&c, v3_sub(ps, pt), rin, t_max, 1e-6f) : sweep_separated(&c, v3_sub(ps, pt), r, t_max))
+    fm_vec3_t sep = v3_sub(ps, pt);
+    if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
         return false;
 
     feat_hit_t best;
@@ -626,7 +645,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         fm_vec3_t ha = v3_add(c.a, off), hb = v3_add(c.b, off);
         int edge;
         float eu, ev;
-        float d2h = seg_tri_closest_ex(&c.tri, ha, hb, &ps, &pt, &edge, &eu, &ev);
+        float d2h = seg_tri_closest_ex(&c.tri, &ha, &hb, NULL, &ps, &pt, &edge, &eu, &ev);
         /* Near a flat minimum rounding can pick a candidate pair slightly off the true one
          * (e.g. a vertex instead of a point just past it on the next edge); alternating
          * projections (segment point nearest the triangle point, and back) settle it. */
@@ -635,7 +654,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
             fm_vec3_t qs, qt, dummy;
             coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
-            float q2 = seg_tri_closest(&c.tri, qs, qs, &dummy, &qt);
+            float q2 = seg_tri_closest(&c.tri, &qs, &qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
             edge = -1;
@@ -650,12 +669,14 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     /* Count the contact only when the motion goes deeper than the touch tolerance: first
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
-        if (sweep_separated_k(&c, hit->normal, rin, t_max, 1e-6f)) return false;
+        if (sweep_separated_k(&c, &hit->normal, rin, t_max, 1e-6f)) return false;
         fm_vec3_t off = v3_scale(c.d, t_max);
-        float d2e = seg_tri_closest(&c.tri, v3_add(c.a, off), v3_add(c.b, off), &ps, &pt);
+        fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+        float d2e = seg_tri_closest(&c.tri, &ea, &eb, &ps, &pt);
         if (!(d2e < rin * rin)) {
             /* clear of rin along the closest pair's direction at the end: never deeper */
-            if (sweep_separated(&c, v3_sub(ps, pt), rin, t_max)) return false;
+            sep = v3_sub(ps, pt);
+            if (sweep_separated(&c, &sep, rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
@@ -686,12 +707,12 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_sane(r)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) ||
-        !prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1])) return false;
+    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
     tri_t t;
     tri_setup_keep(&t, tri, prep);
     fm_vec3_t ps, pt;
-    float d2 = seg_tri_closest(&t, seg[0], seg[1], &ps, &pt);
+    float d2 = seg_tri_closest(&t, &seg[0], &seg[1], &ps, &pt);
     float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     if (!(d2 < rin * rin)) return false;
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
@@ -746,19 +767,20 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     if (det == 0.0f || !f_finite(det)) return false;
     (void)sz;
     /* The distance from the plane through the vertex shared by the two shortest edges:
-     * better conditioned than the sheared-z interpolation for slivers. */
-    tri_t t; /* the raw normal only: its unit normal (a sqrt and a division) is not used */
+     * better conditioned than the sheared-z interpolation for slivers. The raw normal only
+     * (tri_setup_raw's expressions, inline: bit-identical); its unit normal is not used. */
+    fm_vec3_t e[3];
+    for (int i = 0; i < 3; i++) e[i] = v3_sub(tri[(i + 1) % 3], tri[i]);
     int apex;
-    float nn, lmax;
-    tri_setup_raw(&t, tri, &apex, &nn, &lmax);
-    (void)nn;
-    (void)lmax;
-    float dn = v3_dot(t.nraw, *d);
+    float lmax_unused;
+    fm_vec3_t nraw = raw_normal(e, &apex, &lmax_unused);
+    (void)lmax_unused;
+    float dn = v3_dot(nraw, *d);
     if (dn == 0.0f) return false;
-    float s = v3_dot(t.nraw, v3_sub(tri[apex], *o)) / dn;
+    float s = v3_dot(nraw, v3_sub(tri[apex], *o)) / dn;
     if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
 
-    fm_vec3_t n = v3_unit_or_against(t.nraw, *d);
+    fm_vec3_t n = v3_unit_or_against(nraw, *d);
     if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
     hit->t = s;
     hit->depth = 0.0f;
