@@ -577,8 +577,11 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w, &far) && w.gap < gap - step_eps) {
-                        /* the ball between an edge and the very floor under the foot */
-                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps) {
+                        /* the ball between an edge and the very floor under the foot:
+                         * either of its contacts on it (the first, or the roll's end;
+                         * only the roll's end counted, soak s3 l124) */
+                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps ||
+                            fabsf(v3_dot(v3_sub(w.point, hit.point), hit.normal)) <= contact_eps) {
                             floor_s = s;
                             edge_and_floor = true;
                         }
