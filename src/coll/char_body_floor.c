@@ -343,11 +343,28 @@ static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
  * against the input across up. Sliding off is motion (the velocity says so), so it is no
  * faster than the speed limit with the step's motion so far (b->velocity): a step of 1 ns
  * does not slide 9 cm off a nosing (soak s2 l381), it stays on it until the next step.
+ * Nor does it slide below the floor it snaps to (normal n): the slide stops where the foot
+ * meets that floor's plane (slide_off_above).
  */
-static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
+/**
+ * How far along `left` a slide off an edge may go before the foot meets the plane of the
+ * floor the snap is for (normal n, through the foot's target `dist` below it along up):
+ * sliding off across up over a sloping floor, the rest of the snap's descent went below
+ * that floor where it rises (soak s3 l91: r 0.13, the foot 17 mm into a 32 degree slope).
+ * A fraction of `left` in [0, 1].
+ */
+static inline float slide_off_above(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t target, fm_vec3_t n, fm_vec3_t left)
+{
+    float into = -v3_dot(left, n), above = v3_dot(v3_sub(cb_foot(c, pos), target), n);
+    if (!(into > above)) return 1.0f;
+    return above > 0.0f ? above / into : 0.0f;
+}
+
+static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n)
 {
     const char_body_t *b = c->body;
     fm_vec3_t left = v3_scale(c->up, -dist);
+    const fm_vec3_t target = v3_add(cb_foot(c, *pos), left);
     float budget = -1.0f; /* across up, for sliding off: computed at the first slide off */
     for (int it = 0; it < 3; it++) {
         if (it > 0) {
@@ -357,6 +374,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
                 if (!(budget > c->tiny)) return;
                 left = v3_scale(left, budget / across);
             }
+            left = v3_scale(left, slide_off_above(c, *pos, target, n, left));
         }
         float len = v3_len(left);
         if (!(len > c->tiny)) return;
@@ -508,10 +526,10 @@ static bool floor_below(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap)
+static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap, fm_vec3_t n)
 {
     if (gap > 0.0f) {
-        snap_down(c, pos, gap);
+        snap_down(c, pos, gap, n);
         return true;
     }
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
@@ -634,7 +652,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
              * edge may stop it short. A lift the capsule has no room for (a ledge or an
              * overhang above) means the body cannot stand here at all. */
             fm_vec3_t before = *pos;
-            fits = stand_on(c, pos, s.gap);
+            fits = stand_on(c, pos, s.gap, s.normal);
             if (!fits && (edges_over_floor || edge_and_floor)) {
                 /* No room to be lifted onto the crack rule's edges: they do not hold it.
                  * Where the ball was held between an edge and the floor under the foot
@@ -644,7 +662,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * Over a real gap the step is still undone. */
                 *pos = before;
                 s = edge_and_floor ? floor_s : (support_t){0};
-                fits = !s.found || stand_on(c, pos, s.gap);
+                fits = !s.found || stand_on(c, pos, s.gap, s.normal);
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
