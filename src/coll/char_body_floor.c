@@ -176,6 +176,81 @@ static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_swe
     return true;
 }
 
+/** Contacts ball_in_hole looks at (the deepest kept). */
+#define CB_HOLE_CONTACTS 16
+
+/**
+ * The crack rule's ball held in a hole between three or more pieces (tile corners around a
+ * gap, blocks of different heights): its roll from the first contact meets nothing, or
+ * nothing it can stand on, but the ball (centre bc, resting on that contact, side: the
+ * contact's direction across up, from it towards the centre) rests on edges all around it:
+ * three or more contacts within a tenth of a radius whose directions across up leave no gap
+ * of 180 degrees or more. It cannot roll out without climbing: a hole, not a ledge (soak s3
+ * l94, l283, s2 l273, oa_dm5 l29). A stair's nosing under the ball as the foot steps off it
+ * is the same first contact, so the gathered triangles tell it from a hole before any
+ * query: a hole has a piece beyond the centre, within reach of the ball (a nosing has the
+ * next tread a rise below).
+ */
+static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const coll_ray_hit_t *under)
+{
+    const fm_vec3_t up = c->up;
+    const float reach = c->radius;
+    const coll_gather_t *g = c->gather;
+    if (g && g->valid) {
+        const fm_vec3_t o = v3_sub(bc, g->origin);
+        bool beyond = false;
+        for (uint16_t i = 0; i < g->ntris && !beyond; i++) {
+            const coll_gather_tri_t *t = &g->tris[i];
+            /* its box reaches beyond the centre, and within reach of it */
+            fm_vec3_t far = v3(side.x > 0.0f ? t->hi.x : t->lo.x, side.y > 0.0f ? t->hi.y : t->lo.y,
+                               side.z > 0.0f ? t->hi.z : t->lo.z);
+            if (!(v3_dot(v3_sub(far, o), side) > 0.0f)) continue;
+            fm_vec3_t q = v3(f_min(f_max(o.x, t->lo.x), t->hi.x), f_min(f_max(o.y, t->lo.y), t->hi.y),
+                             f_min(f_max(o.z, t->lo.z), t->hi.z));
+            if (!(v3_len2(v3_sub(q, o)) <= reach * reach)) continue;
+            /* and is no part of the floor the foot ray found (the next tread down under a
+             * ball over a nosing): a triangle in its plane */
+            beyond = true;
+            if (under) {
+                fm_vec3_t n = v3_cross(t->e1, t->e2);
+                float nn = v3_len(n);
+                beyond = !(fabsf(v3_dot(n, under->normal)) > 0.999f * nn &&
+                           fabsf(v3_dot(v3_sub(v3_add(t->w0, g->origin), under->point), under->normal)) <= c->contact_eps);
+            }
+        }
+        if (!beyond) return false;
+    }
+    coll_contact_t ct[CB_HOLE_CONTACTS];
+    uint32_t n;
+    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, up, reach, 0.0f, ct, CB_HOLE_CONTACTS);
+    else n = coll_capsule_overlaps(c->scene, bc, up, reach, 0.0f, c->body->settings.read_mask,
+                                   c->body->settings.coll_types, ct, CB_HOLE_CONTACTS);
+    if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
+    fm_vec3_t dir[CB_HOLE_CONTACTS];
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f)) continue; /* not under the ball */
+        /* the plane the foot is over is no side of a hole (the next tread down, and its
+         * triangles' edges, under a ball lowered between two nosings) */
+        if (under && fabsf(v3_dot(v3_sub(ct[i].point, under->point), under->normal)) <= c->contact_eps) continue;
+        fm_vec3_t d = v3_reject(ct[i].normal, up);
+        if (!(v3_len2(d) > 1e-6f)) continue; /* a face right under the centre: no side */
+        dir[m++] = v3_norm(d);
+    }
+    if (m < 3) return false;
+    /* a gap of 180 degrees or more: all the others on one side of one of them */
+    for (uint32_t i = 0; i < m; i++) {
+        bool left = true, right = true;
+        for (uint32_t j = 0; j < m && (left || right); j++) {
+            float s = v3_dot(v3_cross(dir[i], dir[j]), up);
+            if (s < 0.0f) left = false;
+            if (s > 0.0f) right = false;
+        }
+        if (left || right) return false;
+    }
+    return true;
+}
+
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
                       const coll_sweep_hit_t *first, float first_len, support_t *out, fm_vec3_t *far_out)
 {
@@ -269,9 +344,10 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
             }
         }
-        if (!met || !isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
-            return false; /* rolls off (a ledge), or into a ceiling */
-        if (descent > 0.5f * r) return false;
+        if (!met) goto hole; /* rolls off (a ledge), unless the ball is in a hole */
+        if (!isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
+            return false; /* rolls into a ceiling */
+        if (descent > 0.5f * r) goto hole;
         far = h2.point;
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
@@ -295,16 +371,23 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * stands on the floor, it is not lifted into the corner) */
         const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r &&
                             !steep_face(c, &h1) && !steep_face(c, &h2);
-        if (over_floor && ((!narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) ||
-                           -contact > floor_gap - c->contact_eps))
-            return false;
+        if (over_floor && -contact > floor_gap - c->contact_eps) return false;
+        if (over_floor && !narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) goto hole;
         if (wedge) {
             normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
             if (v3_dot(normal, up) < b->cos_floor_max_angle) normal = up;
         } else if (onto_floor && (descent <= 0.1f * r || (over_floor && across_foot))) {
             normal = h2.normal; /* rolled across a narrow crack onto the floor beyond it */
         } else {
-            return false;
+            goto hole;
+        }
+        if (0) {
+        hole: /* the roll found nothing to hold the ball: held only in a hole (ball_in_hole) */
+            if (!ball_in_hole(c, v3_madd(b1, up, -0.5f * r), v3_norm(v3_reject(h1.normal, up)), under)) return false;
+            contact = c1;
+            far = h1.point;
+            normal = up;
+            if (over_floor && -contact > floor_gap - c->contact_eps) return false;
         }
     }
     if (-contact > reach) return false;
@@ -377,11 +460,28 @@ static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
  * against the input across up. Sliding off is motion (the velocity says so), so it is no
  * faster than the speed limit with the step's motion so far (b->velocity): a step of 1 ns
  * does not slide 9 cm off a nosing (soak s2 l381), it stays on it until the next step.
+ * Nor does it slide below the floor it snaps to (normal n): the slide stops where the foot
+ * meets that floor's plane (slide_off_above).
  */
-static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
+/**
+ * How far along `left` a slide off an edge may go before the foot meets the plane of the
+ * floor the snap is for (normal n, through the foot's target `dist` below it along up):
+ * sliding off across up over a sloping floor, the rest of the snap's descent went below
+ * that floor where it rises (soak s3 l91: r 0.13, the foot 17 mm into a 32 degree slope).
+ * A fraction of `left` in [0, 1].
+ */
+static inline float slide_off_above(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t target, fm_vec3_t n, fm_vec3_t left)
+{
+    float into = -v3_dot(left, n), above = v3_dot(v3_sub(cb_foot(c, pos), target), n);
+    if (!(into > above)) return 1.0f;
+    return above > 0.0f ? above / into : 0.0f;
+}
+
+static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n)
 {
     const char_body_t *b = c->body;
     fm_vec3_t left = v3_scale(c->up, -dist);
+    const fm_vec3_t target = v3_add(cb_foot(c, *pos), left);
     float budget = -1.0f; /* across up, for sliding off: computed at the first slide off */
     for (int it = 0; it < 3; it++) {
         if (it > 0) {
@@ -391,6 +491,7 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist)
                 if (!(budget > c->tiny)) return;
                 left = v3_scale(left, budget / across);
             }
+            left = v3_scale(left, slide_off_above(c, *pos, target, n, left));
         }
         float len = v3_len(left);
         if (!(len > c->tiny)) return;
@@ -546,11 +647,11 @@ static bool floor_below(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap)
+static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap, fm_vec3_t n)
 {
     if (gap == 0.0f) return true; /* already on it (the move by 0 would not move it) */
     if (gap > 0.0f) {
-        snap_down(c, pos, gap);
+        snap_down(c, pos, gap, n);
         return true;
     }
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
@@ -617,8 +718,11 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w, &far) && w.gap < gap - step_eps) {
-                        /* the ball between an edge and the very floor under the foot */
-                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps) {
+                        /* the ball between an edge and the very floor under the foot:
+                         * either of its contacts on it (the first, or the roll's end;
+                         * only the roll's end counted, soak s3 l124) */
+                        if (fabsf(v3_dot(v3_sub(far, hit.point), hit.normal)) <= contact_eps ||
+                            fabsf(v3_dot(v3_sub(w.point, hit.point), hit.normal)) <= contact_eps) {
                             floor_s = s;
                             edge_and_floor = true;
                         }
@@ -671,7 +775,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
              * edge may stop it short. A lift the capsule has no room for (a ledge or an
              * overhang above) means the body cannot stand here at all. */
             fm_vec3_t before = *pos;
-            fits = stand_on(c, pos, s.gap);
+            fits = stand_on(c, pos, s.gap, s.normal);
             if (!fits && (edges_over_floor || edge_and_floor)) {
                 /* No room to be lifted onto the crack rule's edges: they do not hold it.
                  * Where the ball was held between an edge and the floor under the foot
@@ -682,7 +786,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 *pos = before;
                 if (edge_and_floor) s = floor_s;
                 else s.found = false;
-                fits = !s.found || stand_on(c, pos, s.gap);
+                fits = !s.found || stand_on(c, pos, s.gap, s.normal);
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
