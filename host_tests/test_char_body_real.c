@@ -454,6 +454,62 @@ static void test_crack_under_tilted_up(void)
     TEST_ASSERT_TRUE(lowest >= 0.25f);
 }
 
+/* ---- 2a'''. a hole among four tile corners ---- */
+
+/* Four 1 m tiles of different heights (within a step) on a floor, their corners around a
+ * square hole of side w at the origin, narrower than the capsule's bottom ball. Resting
+ * over the hole the ball touches three or four tile corners all around it: it is held
+ * there (ball_in_hole), sunk below the lowest of them by at most the sag over the hole's
+ * diagonal. Before, where the crack rule's roll from the first corner went along a crack
+ * between two other tiles and met nothing, the body stood on the floor in the hole, its
+ * foot 0.1 m below the tile tops (soak s3 l283, s2 l273, l94: holes between pieces). */
+static float f_min_t(float a, float b) { return a < b ? a : b; }
+
+static float hole_lowest_foot(const float tops[4], float w, float r, fm_vec3_t at, fm_vec3_t input)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    for (int k = 0; k < 4; k++) {
+        float sx = (k & 1) ? 1.0f : -1.0f, sz = (k & 2) ? 1.0f : -1.0f;
+        cb_geo_box(cb_vec(sx * (0.5f * w + 0.5f), 0.5f * tops[k], sz * (0.5f * w + 0.5f)),
+                   cb_vec(0.5f, 0.5f * tops[k], 0.5f), 0.0f);
+    }
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    body_with_radius(at, r, 2.0f);
+    body.input_velocity = input;
+    float lowest = 1e9f;
+    for (int f = 0; f < 40; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        bool over = fabsf(pos.x) < 0.5f * w && fabsf(pos.z) < 0.5f * w;
+        if (f > 0 && over && char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    return lowest;
+}
+
+static void test_hole_among_four_tile_corners(void)
+{
+    static const float tops[3][4] = {{0.10f, 0.103f, 0.12f, 0.11f}, {0.10f, 0.14f, 0.12f, 0.16f},
+                                     {0.16f, 0.10f, 0.13f, 0.10f}};
+    const float w = 0.3f, r = 0.5f, sag = crack_sag(r, 1.41421356f * w);
+    float worst = 1e9f;
+    int fails = 0;
+    for (int t = 0; t < 3; t++) {
+        float low = tops[t][0];
+        for (int k = 1; k < 4; k++) low = f_min_t(low, tops[t][k]);
+        for (int d = 0; d < 16; d++)
+            for (int j = 0; j < 5; j++) {
+                float a = (float)d * 22.5f * DEG + 0.1f, ca = cosf(a), sa = sinf(a), o = 0.05f * (float)(j - 2);
+                fm_vec3_t at = cb_vec(-1.0f * ca - o * sa, 0.2f, -1.0f * sa + o * ca);
+                float lowest = hole_lowest_foot(tops[t], w, r, at, cb_vec(2.0f * ca, 0.0f, 2.0f * sa));
+                if (lowest < 1e8f && lowest - (low - sag) < worst) worst = lowest - (low - sag);
+                if (lowest < low - sag - 0.001f) { fails++; printf("hole t %d d %d j %d lowest %.4f\n", t, d, j, (double)lowest); }
+            }
+    }
+    cb_report("hole among four tile corners: lowest grounded foot over the hole - (lowest top - sag)", worst, "m");
+    TEST_ASSERT_EQUAL_INT(0, fails);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -1681,6 +1737,7 @@ int main(void)
     RUN_TEST(test_crack_beside_wall);
     RUN_TEST(test_crack_under_leaning_face);
     RUN_TEST(test_crack_under_tilted_up);
+    RUN_TEST(test_hole_among_four_tile_corners);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
