@@ -456,6 +456,62 @@ static void test_crack_under_tilted_up(void)
     TEST_ASSERT_TRUE(lowest >= 0.25f);
 }
 
+/* ---- 2a'''. a hole among four tile corners ---- */
+
+/* Four 1 m tiles of different heights (within a step) on a floor, their corners around a
+ * square hole of side w at the origin, narrower than the capsule's bottom ball. Resting
+ * over the hole the ball touches three or four tile corners all around it: it is held
+ * there (ball_in_hole), sunk below the lowest of them by at most the sag over the hole's
+ * diagonal. Before, where the crack rule's roll from the first corner went along a crack
+ * between two other tiles and met nothing, the body stood on the floor in the hole, its
+ * foot 0.1 m below the tile tops (soak s3 l283, s2 l273, l94: holes between pieces). */
+static float f_min_t(float a, float b) { return a < b ? a : b; }
+
+static float hole_lowest_foot(const float tops[4], float w, float r, fm_vec3_t at, fm_vec3_t input)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(20.0f, 0.5f, 20.0f), 0.0f);
+    for (int k = 0; k < 4; k++) {
+        float sx = (k & 1) ? 1.0f : -1.0f, sz = (k & 2) ? 1.0f : -1.0f;
+        cb_geo_box(cb_vec(sx * (0.5f * w + 0.5f), 0.5f * tops[k], sz * (0.5f * w + 0.5f)),
+                   cb_vec(0.5f, 0.5f * tops[k], 0.5f), 0.0f);
+    }
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    body_with_radius(at, r, 2.0f);
+    body.input_velocity = input;
+    float lowest = 1e9f;
+    for (int f = 0; f < 40; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(cb_body_finite(&body));
+        bool over = fabsf(pos.x) < 0.5f * w && fabsf(pos.z) < 0.5f * w;
+        if (f > 0 && over && char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    return lowest;
+}
+
+static void test_hole_among_four_tile_corners(void)
+{
+    static const float tops[3][4] = {{0.10f, 0.103f, 0.12f, 0.11f}, {0.10f, 0.14f, 0.12f, 0.16f},
+                                     {0.16f, 0.10f, 0.13f, 0.10f}};
+    const float w = 0.3f, r = 0.5f, sag = crack_sag(r, 1.41421356f * w);
+    float worst = 1e9f;
+    int fails = 0;
+    for (int t = 0; t < 3; t++) {
+        float low = tops[t][0];
+        for (int k = 1; k < 4; k++) low = f_min_t(low, tops[t][k]);
+        for (int d = 0; d < 16; d++)
+            for (int j = 0; j < 5; j++) {
+                float a = (float)d * 22.5f * DEG + 0.1f, ca = cosf(a), sa = sinf(a), o = 0.05f * (float)(j - 2);
+                fm_vec3_t at = cb_vec(-1.0f * ca - o * sa, 0.2f, -1.0f * sa + o * ca);
+                float lowest = hole_lowest_foot(tops[t], w, r, at, cb_vec(2.0f * ca, 0.0f, 2.0f * sa));
+                if (lowest < 1e8f && lowest - (low - sag) < worst) worst = lowest - (low - sag);
+                if (lowest < low - sag - 0.001f) { fails++; printf("hole t %d d %d j %d lowest %.4f\n", t, d, j, (double)lowest); }
+            }
+    }
+    cb_report("hole among four tile corners: lowest grounded foot over the hole - (lowest top - sag)", worst, "m");
+    TEST_ASSERT_EQUAL_INT(0, fails);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -1652,6 +1708,80 @@ static void test_oa_dm1_ball_on_block_edge_falls(void)
     TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.384f, pos.y); /* on the floor, not the block */
 }
 
+/* ---- real map oa_dm5: a hole among floor pieces over a floor 128 mm lower ---- */
+
+/* OpenArena oa_dm5 (collbake, make real-levels), the 33 triangles within 1 m of the capsule's
+ * bottom ball centre, exact: floor pieces at -1.024 around a hole over a floor at -1.152.
+ * The body (make soak-real, seed 1, l29; r 0.354) lands over the hole: the crack rule's roll
+ * from the first edge met nothing, and it stood on the floor in the hole, 16 mm below the
+ * pieces around it (the oracle: 4 contacts around the foot, widest gap 147 degrees). The
+ * ball rests on edges all around it: held in the hole (ball_in_hole). */
+static const float oa_dm5_hole_tris[][9] = {
+    {24.8320007f, -1.15199995f, -1.53600001f, 24.8320007f, -1.15199995f, -7.67999983f, 22.7840004f, -1.15199995f, -1.53600001f},
+    {24.8320007f, -1.15199995f, -7.67999983f, 22.7840004f, -1.15199995f, -7.67999983f, 22.7840004f, -1.15199995f, -1.53600001f},
+    {23.8080006f, -1.02400005f, -3.58400011f, 23.8080006f, -1.02400005f, -2.55999994f, 24.8320007f, -1.02400005f, -2.55999994f},
+    {22.7840004f, -1.02400005f, -3.58400011f, 23.8080006f, -1.02400005f, -2.55999994f, 23.8080006f, -1.02400005f, -3.58400011f},
+    {22.7840004f, -1.02400005f, -3.58400011f, 22.7840004f, -1.02400005f, -2.55999994f, 23.8080006f, -1.02400005f, -2.55999994f},
+    {22.5919991f, -1.02400005f, -4.48000002f, 22.7840004f, -1.02400005f, -2.55999994f, 22.7840004f, -1.02400005f, -3.58400011f},
+    {22.5919991f, -1.02400005f, -4.48000002f, 22.7840004f, -1.02400005f, -1.53600001f, 22.7840004f, -1.02400005f, -2.55999994f},
+    {22.5919991f, -1.02400005f, -4.48000002f, 22.0160007f, -1.02400005f, -7.67999983f, 22.0160007f, -1.02400005f, -1.53600001f},
+    {22.5919991f, -1.02400005f, -4.48000002f, 22.0160007f, -1.02400005f, -1.53600001f, 22.7840004f, -1.02400005f, -1.53600001f},
+    {24.8320007f, -1.02400005f, -2.17600012f, 24.8320007f, -1.02400005f, -2.55999994f, 23.8080006f, -1.02400005f, -2.55999994f},
+    {24.8320007f, -1.02400005f, -2.17600012f, 23.8080006f, -1.02400005f, -2.55999994f, 23.8080006f, -1.02400005f, -2.43199992f},
+    {24.8320007f, -1.02400005f, -2.17600012f, 23.8080006f, -1.02400005f, -2.43199992f, 24.0639992f, -1.02400005f, -2.3039999f},
+    {23.7520008f, -1.02400005f, -1.95599997f, 23.8080006f, -1.02400005f, -2.07999992f, 23.1359997f, -1.02400005f, -2.49600005f},
+    {23.5879993f, -1.02400005f, -1.86000001f, 23.7520008f, -1.02400005f, -1.95599997f, 23.1359997f, -1.02400005f, -2.49600005f},
+    {24.0639992f, -1.15199995f, -2.3039999f, 24.0639992f, -1.02400005f, -2.3039999f, 23.8080006f, -1.15199995f, -2.43199992f},
+    {24.0639992f, -1.02400005f, -2.3039999f, 23.8080006f, -1.02400005f, -2.43199992f, 23.8080006f, -1.15199995f, -2.43199992f},
+    {23.8080006f, -1.02400005f, -2.07999992f, 23.8080006f, -1.15199995f, -2.07999992f, 23.1359997f, -1.15199995f, -2.49600005f},
+    {23.1359997f, -1.02400005f, -2.49600005f, 23.8080006f, -1.02400005f, -2.07999992f, 23.1359997f, -1.15199995f, -2.49600005f},
+    {23.5879993f, -1.15199995f, -1.86000001f, 23.5879993f, -1.02400005f, -1.86000001f, 23.1359997f, -1.15199995f, -2.49600005f},
+    {23.5879993f, -1.02400005f, -1.86000001f, 23.1359997f, -1.02400005f, -2.49600005f, 23.1359997f, -1.15199995f, -2.49600005f},
+    {24.8320007f, -1.15199995f, -2.55999994f, 24.8320007f, -1.02400005f, -2.55999994f, 23.8080006f, -1.02400005f, -2.55999994f},
+    {24.8320007f, -1.15199995f, -2.55999994f, 23.8080006f, -1.02400005f, -2.55999994f, 22.7840004f, -1.02400005f, -2.55999994f},
+    {22.7840004f, -1.15199995f, -2.55999994f, 24.8320007f, -1.15199995f, -2.55999994f, 22.7840004f, -1.02400005f, -2.55999994f},
+    {23.8080006f, -1.02400005f, -2.55999994f, 23.8080006f, -1.15199995f, -2.55999994f, 23.8080006f, -1.15199995f, -2.43199992f},
+    {23.8080006f, -1.02400005f, -2.43199992f, 23.8080006f, -1.02400005f, -2.55999994f, 23.8080006f, -1.15199995f, -2.43199992f},
+    {23.8080006f, -1.02400005f, -2.07999992f, 23.7520008f, -1.02400005f, -1.95599997f, 23.7520008f, -1.15199995f, -1.95599997f},
+    {23.8080006f, -1.15199995f, -2.07999992f, 23.8080006f, -1.02400005f, -2.07999992f, 23.7520008f, -1.15199995f, -1.95599997f},
+    {23.7520008f, -1.02400005f, -1.95599997f, 23.5879993f, -1.02400005f, -1.86000001f, 23.5879993f, -1.15199995f, -1.86000001f},
+    {23.7520008f, -1.15199995f, -1.95599997f, 23.7520008f, -1.02400005f, -1.95599997f, 23.5879993f, -1.15199995f, -1.86000001f},
+    {22.7840004f, -1.05599999f, -4.48000002f, 22.7840004f, -1.02400005f, -3.58400011f, 22.7840004f, -1.02400005f, -2.55999994f},
+    {22.7840004f, -1.05599999f, -4.48000002f, 22.7840004f, -1.02400005f, -2.55999994f, 22.7840004f, -1.02400005f, -1.53600001f},
+    {22.7840004f, -1.05599999f, -4.48000002f, 22.7840004f, -1.15199995f, -1.53600001f, 22.7840004f, -1.15199995f, -7.67999983f},
+    {22.7840004f, -1.05599999f, -4.48000002f, 22.7840004f, -1.02400005f, -1.53600001f, 22.7840004f, -1.15199995f, -1.53600001f}
+};
+
+static void test_oa_dm5_hole_among_floor_pieces(void)
+{
+    cb_world_reset();
+    geo_tris(oa_dm5_hole_tris, sizeof oa_dm5_hole_tris / sizeof oa_dm5_hole_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0x1.710998p+4f, -0x1.23617cp+0f, -0x1.467e2p+1f); /* the soak body's state (owner = foot) */
+    char_body_init(&body, &pos);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = 0x1.6a29cp-2f;
+    s.height = 0x1.e80becp+0f;
+    s.step_height = 0x1.5e3fa2p-2f;
+    s.floor_snap_distance = 0x1.d68a84p-2f;
+    s.floor_max_angle = 0x1.844eb2p-1f;
+    s.gravity = 0x1.51cbbap+4f;
+    s.max_fall_speed = 0x1.b8p+5f;
+    s.max_slides = 2;
+    s.center_offset = cb_vec(0.0f, 0x1.e80becp-1f, 0.0f);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(-0x1.7acfb4p-1f, -0x1.3b46bp+1f, -0x1.c04148p-3f));
+    body.input_velocity = cb_vec(-0x1.7acfb4p-1f, 0.0f, -0x1.c04148p-3f);
+    float lowest = 1e9f;
+    for (int f = 0; f < 2; f++) {
+        CB_STEP(&body, 0x1.111112p-6f);
+        if (char_body_is_on_floor(&body) && pos.y < lowest) lowest = pos.y;
+    }
+    cb_report("hole among floor pieces (oa_dm5 l29): lowest grounded foot (pieces at -1.024)", lowest, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(lowest >= -1.024f - 0.005f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -1683,6 +1813,8 @@ int main(void)
     RUN_TEST(test_crack_beside_wall);
     RUN_TEST(test_crack_under_leaning_face);
     RUN_TEST(test_crack_under_tilted_up);
+    RUN_TEST(test_hole_among_four_tile_corners);
+    RUN_TEST(test_oa_dm5_hole_among_floor_pieces);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

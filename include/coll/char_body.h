@@ -18,7 +18,12 @@
  *   other side of a gap (a wedge) or a walkable floor within half a radius of descent, the
  *   body is supported and stands at the height of the lower contact -- a crack (a gap
  *   narrower than about 1.7 radii between floor pieces, a slot at the bottom of a valley or
- *   between a ledge and a wall). Otherwise it is a ledge and the body falls. Over a floor
+ *   between a ledge and a wall). Where the roll finds nothing to hold it but the ball,
+ *   lowered by half a radius, rests on three or more edges whose directions around it
+ *   leave no gap of 180 degrees or more (the plane the foot is over not counted), it is in
+ *   a hole between pieces and is held at its first contact. Otherwise it is a ledge and
+ *   the body falls. Where the crack's edges have no room for the lift and either contact
+ *   lies on the floor under the foot, that floor holds the body instead. Over a floor
  *   within reach the same ball holds the body above it where the gap is between surfaces
  *   at one level, or between surfaces on opposite sides of the foot at any levels (blocks
  *   of different heights): never on a stair's nosings, whose roll ends on the tread below.
