@@ -597,7 +597,9 @@ static void test_oracle_footing_ledge_of_nine_contacts(void)
  * (25.85 and 4.08 mm). The ball raised onto 18363 clears both: the surface under the foot
  * out-holds them, they are no sides of a gap. Still failing: 3 mm under 18363; 18363
  * removed (the ball hangs between the floor's edge and 18343); 18363 replaced by a flat
- * floor at the foot (which holds the ball no higher than where it touches). */
+ * floor at the foot (which holds the ball no higher than where it touches); a crack in a
+ * ramp whose floor is the ramp lowered, the foot on that floor (the uphill side needs a
+ * larger raise than the floor under the foot: it holds the ball, nothing is out-held). */
 static const double oa_dm5_edge_tris[][9] = {
     {20.224001, -1.024000, -8.960000, 19.200001, -1.608000, -7.936000, 19.200001, -1.608000, -1.280000}, /* 18343 */
     {19.200001, -1.608000, -7.936000, 19.200001, -1.536000, -8.064000, 19.200001, -1.608000, -1.280000}, /* the face */
@@ -661,6 +663,25 @@ static void test_oracle_footing_out_held_by_the_slope_under_the_foot(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(p3, p3, z, z, true, false, false));
     level_tris(oa_dm5_edge_tris, n - 1);
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00408, soak_check_footing(&lvl, s, p3));
+    /* a 5 cm crack 30 mm deep in a 30 degree ramp, its floor the ramp's plane lowered, the
+     * foot on that floor (r 0.5): the ball raised onto the floor under the foot clears the
+     * crack's downhill edge, not its uphill side, which holds the ball above that floor.
+     * Out-holding the downhill edge alone passed it (the uphill side left one-sided); it
+     * fails by 14.94 mm, as on main */
+    oracle_setup(SOAK_FAIL_FOOTING);
+    s = &osim.body.settings;
+    const double ta = tan(30.0 * 3.14159265358979323846 / 180.0), h = 0.025, dp = 0.03;
+    const double ramp[6][9] = {
+        {-3, -3 * ta, -3, -h, -h * ta, -3, -h, -h * ta, 3}, {-3, -3 * ta, -3, -h, -h * ta, 3, -3, -3 * ta, 3},
+        {h, h * ta, -3, 3, 3 * ta, -3, 3, 3 * ta, 3}, {h, h * ta, -3, 3, 3 * ta, 3, h, h * ta, 3},
+        {-1, -ta - dp, -3, 1, ta - dp, -3, 1, ta - dp, 3}, {-1, -ta - dp, -3, 1, ta - dp, 3, -1, -ta - dp, 3}};
+    level_tris(ramp, 6);
+    const fm_vec3_t pc = V(0.0f, (float)-dp, 0.0f);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.01494, soak_check_footing(&lvl, s, pc));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(pc, pc, z, z, true, false, false));
+    /* on the ramp's surface beside the crack (its downhill tile): passes */
+    const fm_vec3_t pr = V(-0.1f, (float)(-0.1 * ta), 0.0f);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, pr));
 }
 
 static void test_oracle_footing(void)

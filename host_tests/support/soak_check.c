@@ -479,14 +479,19 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
     double bc[3] = {f[0] + up[0] * r, f[1] + up[1] * r, f[2] + up[2] * r};
     /* The surface under the foot holds the ball up to where the ball raised along up
      * clears it (on a slope the full ball overlaps it by the seed's slope rule, r / cos - r
-     * along up). A contact the ball raised that far clears is out-held: lower than the
-     * surface the foot stands on holds the ball, it is no side of a gap (oa_dm5: a flat
-     * floor's edge and a 30 degree slope beside the foot, both in the step zone, the foot
-     * on a 30 degree slope across them; paired, they failed it as a crack by 4.1 and 25.9
-     * mm). Only where the foot is on or above that surface (case 1 fails it otherwise); on
-     * a flat floor the ball touches it at most, and nothing is out-held. */
+     * along up). When that raise clears every walkable contact too, the surface under the
+     * foot out-holds them all: the ball raised onto it rests on it alone, lower than it
+     * the contacts hold nothing, and none is a side of a gap (oa_dm5: a flat floor's edge
+     * and a 30 degree slope beside the foot, both in the step zone, the foot on a 30
+     * degree slope across them; paired, they failed it as a crack by 4.1 and 25.9 mm). Not
+     * when one contact needs more (a crack in a ramp whose floor is the ramp's plane
+     * lowered: the uphill side holds the ball above that floor; out-holding only the
+     * contacts it clears would leave the uphill side alone, one-sided, and pass a foot
+     * sunk into the crack). Only where the foot is on or above that surface (case 1 fails
+     * it otherwise); on a flat floor the ball touches it at most (hold 0), and nothing is
+     * out-held. */
     const double top = step + r + 0.01;
-    double hold = 0;
+    double hold = 0, held = 0; /* held: the largest raise a contact needs (top: none clears it) */
     if (under >= 0 && z1 <= SOAK_FOOT_TOL) {
         hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
         if (hold < 0) hold = 0;
@@ -515,14 +520,15 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double l = sqrt(dot3(dh, dh));
         if (l < 1e-6) continue; /* right under the ball centre: case 1's business */
         double hi = raise_to_clear(bc, up, r, w, top);
-        if (hi < 0) continue;      /* not cleared by any raise in range */
-        if (hi <= hold) continue;  /* out-held by the surface under the foot */
+        if (hi < 0) { held = top; continue; } /* not cleared by any raise in range */
+        if (hi > held) held = hi;
         for (int k = 0; k < 3; k++) cu[nc][k] = dh[k] / l;
         cex[nc] = hi - allow;
         ctri[nc] = (int32_t)i;
         nc++;
     }
     double worst = ex1 > 0 ? ex1 : 0;
+    if (held <= hold) nc = 0; /* all out-held by the surface under the foot */
     /* The contacts hold the ball (a crack, a slot, a hole) only where they surround the
      * foot across up: no half-plane of directions is free of them (no angular gap between
      * them wider than 180 degrees, SOAK_CRACK_OPEN of rounding allowed), so the ball
