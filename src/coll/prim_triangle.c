@@ -582,6 +582,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     bool moving = v3_dot(c.d, c.d) * t_max * t_max > 1e-24f;
 
     /* Cull: both endpoints beyond the same offset plane over the whole motion. */
+    bool far = false;
     if (c.tri.has_face) {
         float ha = c.h[0] = v3_dot(c.tri.n, v3_sub(c.a, c.tri.v[0]));
         float hb = c.h[1] = v3_dot(c.tri.n, v3_sub(c.b, c.tri.v[0]));
@@ -590,19 +591,28 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
         float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
+        /* Far: the start beyond the offset plane, with room for the closest pair's rounding
+         * (its distance is at least the height). Then there is neither an overlap nor a
+         * contact at t = 0, and the start's closest pair serves only the cull below: a
+         * cheaper set of axes stands in for its direction. */
+        float rf = r * 1.0001f + 1e-6f;
+        far = moving && (f_min(ha, hb) > rf || f_max(ha, hb) < -rf);
     }
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
-    fm_vec3_t ps, pt;
-    int edge0;
-    float eu0, ev0;
-    float d2 = seg_tri_closest_ex(&c.tri, &c.a, &c.b, c.tri.has_face ? c.h : NULL, &ps, &pt, &edge0, &eu0, &ev0);
+    fm_vec3_t ps = { { 0.0f, 0.0f, 0.0f } }, pt = ps;
+    float d2 = 0.0f;
     float rin = r - tol;
-    if (d2 < rin * rin) {
-        overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
-        return true;
+    if (!far) {
+        int edge0;
+        float eu0, ev0;
+        d2 = seg_tri_closest_ex(&c.tri, &c.a, &c.b, c.tri.has_face ? c.h : NULL, &ps, &pt, &edge0, &eu0, &ev0);
+        if (d2 < rin * rin) {
+            overlap_result(&c.tri, c.a, c.b, r, d2, ps, pt, hit);
+            return true;
+        }
+        if (!moving) return false;
     }
-    if (!moving) return false;
 
     /* Cull on the closest pair's direction at the start: the swept capsule stays clear of
      * the triangle along it (most candidates near stairs and corners that the plane cull
@@ -618,12 +628,37 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     c.mag += v3_abs_sum(c.tri.v[0]);
     c.mag += v3_abs_sum(c.tri.v[1]);
     c.mag += v3_abs_sum(c.tri.v[2]);
-    fm_vec3_t sep = v3_sub(ps, pt);
-    if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
-        return false;
+    fm_vec3_t sep;
+    if (far) {
+        /* One axis in place of the closest pair's direction: from the nearest point of
+         * the triangle's boundary to the end nearer the plane (for a point beside the
+         * face that is its closest pair; over the face the pair's direction is the normal,
+         * which the plane cull has tried; for a segment it is near the pair's). Any
+         * axis is a valid separating-axis test, so the cull stays conservative; it only
+         * catches less where the segment's other points matter (the feature sweep then
+         * decides). Measured (x86): stairs_real -1.6 %, crack -1.4 %, Jolt -1.8 %,
+         * V-corner +1.0 %; the three edge lines' axes tried each: V-corner and crack lost. */
+        fm_vec3_t p = fabsf(c.h[0]) <= fabsf(c.h[1]) ? c.a : c.b;
+        float bestl = 3.0e38f;
+        sep = v3(0.0f, 0.0f, 0.0f);
+        for (int i = 0; i < 3; i++) {
+            fm_vec3_t w = v3_sub(p, c.tri.v[i]);
+            float ee = v3_len2(c.tri.e[i]);
+            if (!(ee > 0.0f)) continue;
+            fm_vec3_t u = v3_madd(w, c.tri.e[i], -f_clamp01(v3_dot(w, c.tri.e[i]) / ee));
+            float l = v3_len2(u);
+            if (l < bestl) { bestl = l; sep = u; }
+        }
+        if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
+            return false;
+    } else {
+        sep = v3_sub(ps, pt);
+        if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
+            return false;
+    }
 
     feat_hit_t best;
-    if (d2 <= r * r) {
+    if (!far && d2 <= r * r) {
         best.hit = true;
         best.t = 0.0f;
         best.n = v3_unit_or(v3_sub(ps, pt), c.tri.has_face ? c.tri.n : v3(0.0f, 1.0f, 0.0f));
@@ -637,6 +672,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     hit->depth = 0.0f;
     hit->normal = best.n;
     hit->point = best.p;
+    if (far && !(best.t > 0.0f)) d2 = seg_tri_closest(&c.tri, &c.a, &c.b, &ps, &pt); /* (rounding only) */
     float hd = sqrtf(d2);
     if (best.t > 0.0f) {
         /* The pieces meet tangentially, so which one won is decided by rounding near a
@@ -675,8 +711,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         float d2e = seg_tri_closest(&c.tri, &ea, &eb, &ps, &pt);
         if (!(d2e < rin * rin)) {
             /* clear of rin along the closest pair's direction at the end: never deeper */
-            sep = v3_sub(ps, pt);
-            if (sweep_separated(&c, &sep, rin, t_max)) return false;
+            fm_vec3_t sep2 = v3_sub(ps, pt);
+            if (sweep_separated(&c, &sep2, rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
