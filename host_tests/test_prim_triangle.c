@@ -962,6 +962,71 @@ static void test_far_start_edge_axis_cull_cases(void)
     TEST_ASSERT_TRUE(st.hits > n_cases / 10 && st.n - st.hits > n_cases / 10);
 }
 
+/* The static overlap's cull on the axis from the triangle's nearest boundary point to the
+ * segment's end nearer the plane: agreement with the double-precision distance, on capsules
+ * placed beside an edge or a vertex at distances around rin (random triangles, random
+ * capsule directions), and on degenerate triangles. */
+static void test_overlap_boundary_axis_cull(void)
+{
+    int n = 0, n_over = 0, n_amb = 0;
+    for (int i = 0; i < 40000; i++) {
+        prim_ref_v3 rt[3];
+        random_triangle(rt, pow(10, rnd_range(-1, 1)));
+        if (i % 50 == 0) rt[2] = prim_ref_add(rt[0], prim_ref_scale(prim_ref_sub(rt[1], rt[0]), rnd())); /* collinear */
+        double r = exp(rnd_range(log(0.05), log(3.0)));
+        double tol = fmin(1e-4, r / 4), rin = r - tol;
+        /* a point of the boundary (an edge point or a vertex), pushed out by about rin */
+        int k = (int)(rnd() * 3);
+        double u = rnd() < 0.3 ? 0 : rnd();
+        prim_ref_v3 bp = prim_ref_add(rt[k], prim_ref_scale(prim_ref_sub(rt[(k + 1) % 3], rt[k]), u));
+        double dist = rin * (1 + (rnd() < 0.5 ? 1 : -1) * pow(10, rnd_range(-5.5, -1)));
+        /* pushed outward: the edge's in-plane outward normal and the face normal mixed */
+        prim_ref_v3 e = prim_ref_sub(rt[(k + 1) % 3], rt[k]);
+        prim_ref_v3 fn = prim_ref_cross(prim_ref_sub(rt[1], rt[0]), prim_ref_sub(rt[2], rt[0]));
+        if (!(prim_ref_len(fn) > 1e-12)) fn = prim_ref_cross(e, rnd_unit());
+        prim_ref_v3 out = prim_ref_cross(e, fn);
+        if (prim_ref_dot(out, prim_ref_sub(rt[(k + 2) % 3], rt[k])) > 0) out = prim_ref_scale(out, -1);
+        out = prim_ref_scale(out, 1 / prim_ref_len(out));
+        fn = prim_ref_scale(fn, (rnd() < 0.5 ? 1 : -1) / prim_ref_len(fn));
+        double mix = rnd_range(0, 1.5);
+        prim_ref_v3 dir = prim_ref_add(out, prim_ref_scale(fn, mix));
+        dir = prim_ref_scale(dir, 1 / prim_ref_len(dir));
+        prim_ref_v3 near = prim_ref_add(bp, prim_ref_scale(dir, dist));
+        prim_ref_v3 ax = rnd_unit();
+        if (prim_ref_dot(ax, dir) < 0 && rnd() < 0.8) ax = prim_ref_scale(ax, -1); /* mostly away */
+        double hh = rnd() < 0.2 ? 0 : rnd_range(0, 2);
+        fm_vec3_t seg[2], tri[3];
+        fm_vec3_t c0 = F(near);
+        for (int m = 0; m < 3; m++) { fm_vec3_t w = F(rt[m]); tri[m] = V(w.x - c0.x, w.y - c0.y, w.z - c0.z); }
+        /* the segment starts at that point and runs away or along (its other end anywhere) */
+        seg[0] = V(0, 0, 0);
+        seg[1] = F(prim_ref_scale(ax, hh));
+        prim_ref_captri_t ctx;
+        ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = prim_ref_v(0, 0, 0);
+        for (int m = 0; m < 3; m++) ctx.tri[m] = R(tri[m]);
+        double f0 = prim_ref_captri_fn(&ctx, 0, NULL);
+        double scale = 1;
+        for (int m = 0; m < 3; m++) scale = fmax(scale, fmax(fabs(tri[m].x), fmax(fabs(tri[m].y), fabs(tri[m].z))));
+        scale = fmax(scale, fmax(hh, r));
+        float fr = (float)r;
+        double frin = (double)fr - fmin(1e-4, (double)fr / 4);
+        if (fabs(f0 - frin) < 3e-6 * scale) { n_amb++; continue; }
+        coll_prim_hit_t h;
+        bool got = coll_capsule_triangle_overlap(seg, fr, tri, &h);
+        bool want = f0 < frin;
+        if (got != want) {
+            char msg[300];
+            snprintf(msg, sizeof msg, "overlap %d, want %d: distance %.9g rin %.9g", got, want, f0, frin);
+            dump_case(seg, fr, V(0, 0, 0), tri);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        n++;
+        n_over += got;
+    }
+    printf("overlap boundary-axis cases: %d (%d overlapping), %d ambiguous\n", n, n_over, n_amb);
+    TEST_ASSERT_TRUE(n_over > n / 10 && n - n_over > n / 10 && n_amb < n / 4);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -986,5 +1051,6 @@ int main(void)
     RUN_TEST(test_random_touching_sweeps);
     RUN_TEST(test_ray_sphere_early_reject_is_exact);
     RUN_TEST(test_far_start_edge_axis_cull_cases);
+    RUN_TEST(test_overlap_boundary_axis_cull);
     return UNITY_END();
 }

@@ -749,9 +749,38 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
     if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
     tri_t t;
     tri_setup_keep(&t, tri, prep);
+    float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    /* Cull on the sweep's boundary axis (tri_sweep): from the nearest point of the
+     * triangle's boundary to the end nearer the plane; the segment clear of the triangle by
+     * more than rin along it (sweep_separated's allowance) has no overlap. The query's plane
+     * cull has dropped most candidates beyond the plane; this one drops the neighbours
+     * beside the capsule before their closest pair (about 600 x86). Measured (x86):
+     * stairs_real -2.0 %, stairs -0.3 %, V-corner +1.1 % (walls the capsule touches). */
+    if (t.has_face) {
+        float hab[2] = { v3_dot(t.n, v3_sub(seg[0], t.v[0])), v3_dot(t.n, v3_sub(seg[1], t.v[0])) };
+        fm_vec3_t p = fabsf(hab[0]) <= fabsf(hab[1]) ? seg[0] : seg[1];
+        float bestl = 3.0e38f;
+        fm_vec3_t u = v3(0.0f, 0.0f, 0.0f);
+        for (int i = 0; i < 3; i++) {
+            fm_vec3_t w = v3_sub(p, t.v[i]);
+            float ee = v3_len2(t.e[i]);
+            if (!(ee > 0.0f)) continue;
+            fm_vec3_t ui = v3_madd(w, t.e[i], -f_clamp01(v3_dot(w, t.e[i]) / ee));
+            float l = v3_len2(ui);
+            if (l < bestl) { bestl = l; u = ui; }
+        }
+        float uu = v3_len2(u);
+        if (uu > V3_TINY_LEN2 && f_finite(uu)) {
+            float sep = f_min(v3_dot(u, seg[0]), v3_dot(u, seg[1])) -
+                        f_max(v3_dot(u, t.v[0]), f_max(v3_dot(u, t.v[1]), v3_dot(u, t.v[2])));
+            float mag = v3_abs_sum(seg[0]) + v3_abs_sum(seg[1]) + v3_abs_sum(t.v[0]) + v3_abs_sum(t.v[1]) + v3_abs_sum(t.v[2]);
+            sep -= 1e-5f * v3_abs_sum(u) * mag;
+            float rr = rin * 1.0001f + 1e-7f;
+            if (sep > 0.0f && sep * sep > rr * rr * uu) return false;
+        }
+    }
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&t, &seg[0], &seg[1], &ps, &pt);
-    float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     if (!(d2 < rin * rin)) return false;
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
     return true;
