@@ -406,6 +406,8 @@ typedef struct {
     double max_dt_rel, max_dt_m, max_dt_rel_graze_perp, max_dn_face, max_dn_feat, max_depth_err, max_fdev;
 } sweep_stats_t;
 
+static void check_sweep_case(sweep_stats_t *st, const fm_vec3_t seg[2], float fr, fm_vec3_t fd, const fm_vec3_t tri[3]);
+
 static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touching)
 {
     prim_ref_v3 rt[3];
@@ -470,7 +472,12 @@ static void random_sweep_once(sweep_stats_t *st, double offset_scale, bool touch
     seg[0] = V(-fax.x, -fax.y, -fax.z);
     seg[1] = fax;
     fd = F(d);
-    float fr = (float)r;
+    check_sweep_case(st, seg, (float)r, fd, tri);
+}
+
+/* One float sweep against the double-precision reference (hit or miss, time, normal). */
+static void check_sweep_case(sweep_stats_t *st, const fm_vec3_t seg[2], float fr, fm_vec3_t fd, const fm_vec3_t tri[3])
+{
     /* the reference sees exactly the float inputs */
     prim_ref_captri_t ctx;
     ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = R(fd);
@@ -866,6 +873,160 @@ static void test_ray_sphere_early_reject_is_exact(void)
     TEST_ASSERT_TRUE(n_hits > 10000 && n_edge_miss > 10000);
 }
 
+/* The start beyond the face's offset plane skips the start's closest pair and culls on the
+ * directions from the edge lines to the end nearer the plane: its edge cases against the
+ * double-precision reference. A sphere or capsule above a triangle (a grazing pass beside
+ * an edge line, down onto it, along it), its end at about r over the plane (the boundary
+ * of that path), near and far from the origin, and degenerate triangles (no face: the path
+ * is never taken). */
+static void test_far_start_edge_axis_cull_cases(void)
+{
+    sweep_stats_t st = { 0 };
+    const float r = 0.5f;
+    /* lat: how far beside r from the edge line (< 0: within r); the first two: over the
+     * face, beside a vertex. hgt: the near end's height over or under the plane. */
+    const float lat[] = { 0, 0, -0.2f, -0.01f, -1e-3f, -1e-4f, -1e-5f, 0.0f, 1e-5f, 1e-4f, 1e-3f, 0.2f };
+    const float hgt[] = { 0.4995f, 0.4997f, 0.4999f, 0.49995f, 0.5f, 0.50005f, 0.5001f, 0.5002f, 0.501f, 0.7f, 1.5f };
+    const int n_lat = (int)(sizeof lat / sizeof lat[0]), n_hgt = (int)(sizeof hgt / sizeof hgt[0]);
+    const float offs[] = { 0.0f, 300.0f };
+    const fm_vec3_t dirs[] = { { { 0, -2, 0 } }, { { 0.3f, -2, 0 } }, { { 0, -2, 0.5f } }, { { 0, -2, -0.5f } },
+                               { { 1.5f, -0.4f, 0 } }, { { 0, -0.5f, 1.5f } }, { { 0, 0.5f, 0 } } };
+    int n_cases = 0;
+    for (int shape = 0; shape < 4; shape++)
+    for (int o = 0; o < 2; o++)
+    for (int li = 0; li < n_lat; li++)
+    for (int hi = 0; hi < n_hgt; hi++)
+    for (int di = 0; di < 7; di++)
+    for (int side = 0; side < 2; side++) {
+        float ox = offs[o];
+        /* the triangle y = 0, x, z >= 0, x + z <= 2 (shape 3: tilted about x) */
+        fm_vec3_t tri[3] = { V(0, 0, 0), V(2, 0, 0), V(0, 0, 2) };
+        if (shape == 3) { tri[2] = V(0, 0.6f, 2); }
+        /* the world is offset by ox; the sweep's inputs are relative to the capsule centre */
+        float h = side ? hgt[hi] : -hgt[hi];
+        fm_vec3_t c = V(1.0f, h, -(r + lat[li]));          /* beside the edge z = 0 */
+        if (li == 0) c = V(0.5f, h, 0.5f);                 /* over the face */
+        if (li == 1) c = V(-0.3f, h, -0.3f);               /* beside the vertex 0 */
+        float hh = shape == 0 ? 0.0f : 0.4f;               /* shape 0: a sphere */
+        fm_vec3_t ax = shape == 2 ? V(1, 0, 0) : V(0, 1, 0); /* shape 2: lying along the edge */
+        fm_vec3_t seg[2], rt[3];
+        /* the end nearer the plane at height h (an upright capsule reaches down by hh) */
+        fm_vec3_t cc = V(c.x, side ? c.y + (shape == 2 ? 0.0f : hh) : c.y - (shape == 2 ? 0.0f : hh), c.z);
+        for (int k = 0; k < 3; k++) rt[k] = V(tri[k].x + ox - (cc.x + ox), tri[k].y - cc.y, tri[k].z - cc.z);
+        seg[0] = V(-ax.x * hh, -ax.y * hh, -ax.z * hh);
+        seg[1] = V(ax.x * hh, ax.y * hh, ax.z * hh);
+        fm_vec3_t d = dirs[di];
+        if (!side) d.y = -d.y;
+        check_sweep_case(&st, seg, r, d, rt);
+        n_cases++;
+    }
+    /* straight toward the edge line (along the cull's own axis), stopping at about r: the
+     * end exactly at, just inside and just outside the touching distance */
+    const float stops[] = { 0.49f, 0.495f, 0.4999f, 0.49995f, 0.5f, 0.50005f, 0.5001f, 0.51f };
+    for (int shape = 0; shape < 4; shape++)
+    for (int o = 0; o < 2; o++)
+    for (int hi = 0; hi < n_hgt; hi++)
+    for (int li = 2; li < n_lat; li++)
+    for (int si = 0; si < 8; si++) {
+        if (!(hgt[hi] > r)) continue;
+        float ox = offs[o];
+        fm_vec3_t tri[3] = { V(0, 0, 0), V(2, 0, 0), V(0, 0, 2) };
+        if (shape == 3) tri[2] = V(0, 0.6f, 2);
+        float hh = shape == 0 ? 0.0f : 0.4f;
+        fm_vec3_t ax = shape == 2 ? V(1, 0, 0) : V(0, 1, 0);
+        fm_vec3_t p = V(1.0f, hgt[hi], -(r + lat[li] + 0.3f));  /* the near end, beside the edge z = 0 */
+        fm_vec3_t cen = shape == 2 ? p : V(p.x, p.y + hh, p.z);
+        double ux = 0.0, uy = -(double)p.y, uz = -(double)p.z; /* to (1, 0, 0) */
+        double L = sqrt(uy * uy + uz * uz);
+        double k = (L - stops[si]) / L;
+        fm_vec3_t d = V((float)(ux * k), (float)(uy * k), (float)(uz * k));
+        fm_vec3_t seg[2] = { V(-ax.x * hh, -ax.y * hh, -ax.z * hh), V(ax.x * hh, ax.y * hh, ax.z * hh) }, rt[3];
+        for (int m = 0; m < 3; m++) rt[m] = V(tri[m].x + ox - (cen.x + ox), tri[m].y - cen.y, tri[m].z - cen.z);
+        check_sweep_case(&st, seg, r, d, rt);
+        n_cases++;
+    }
+    /* degenerate triangles: collinear, a point, a sliver (its face kept or not by the setup) */
+    const fm_vec3_t degs[3][3] = { { { { 0, 0, 0 } }, { { 1, 0, 0 } }, { { 2, 0, 0 } } },
+                                   { { { 1, 0, 0 } }, { { 1, 0, 0 } }, { { 1, 0, 0 } } },
+                                   { { { 0, 0, 0 } }, { { 2, 0, 0 } }, { { 1, 0, 1e-6f } } } };
+    for (int g = 0; g < 3; g++)
+    for (int li = 2; li < n_lat; li++)
+    for (int di = 0; di < 7; di++) {
+        fm_vec3_t cc = V(1.0f, 0.7f, -(r + lat[li]));
+        fm_vec3_t rt[3], seg[2] = { V(0, 0, 0), V(0, 0.4f, 0) };
+        for (int k = 0; k < 3; k++) rt[k] = V(degs[g][k].x - cc.x, degs[g][k].y - cc.y, degs[g][k].z - cc.z);
+        check_sweep_case(&st, seg, r, dirs[di], rt);
+        n_cases++;
+    }
+    report_sweep("far start, edge-axis cull cases", &st);
+    TEST_ASSERT_TRUE(st.hits > n_cases / 10 && st.n - st.hits > n_cases / 10);
+}
+
+/* The static overlap's cull on the axis from the triangle's nearest boundary point to the
+ * segment's end nearer the plane: agreement with the double-precision distance, on capsules
+ * placed beside an edge or a vertex at distances around rin (random triangles, random
+ * capsule directions), and on degenerate triangles. */
+static void test_overlap_boundary_axis_cull(void)
+{
+    int n = 0, n_over = 0, n_amb = 0;
+    for (int i = 0; i < 40000; i++) {
+        prim_ref_v3 rt[3];
+        random_triangle(rt, pow(10, rnd_range(-1, 1)));
+        if (i % 50 == 0) rt[2] = prim_ref_add(rt[0], prim_ref_scale(prim_ref_sub(rt[1], rt[0]), rnd())); /* collinear */
+        double r = exp(rnd_range(log(0.05), log(3.0)));
+        double tol = fmin(1e-4, r / 4), rin = r - tol;
+        /* a point of the boundary (an edge point or a vertex), pushed out by about rin */
+        int k = (int)(rnd() * 3);
+        double u = rnd() < 0.3 ? 0 : rnd();
+        prim_ref_v3 bp = prim_ref_add(rt[k], prim_ref_scale(prim_ref_sub(rt[(k + 1) % 3], rt[k]), u));
+        double dist = rin * (1 + (rnd() < 0.5 ? 1 : -1) * pow(10, rnd_range(-5.5, -1)));
+        /* pushed outward: the edge's in-plane outward normal and the face normal mixed */
+        prim_ref_v3 e = prim_ref_sub(rt[(k + 1) % 3], rt[k]);
+        prim_ref_v3 fn = prim_ref_cross(prim_ref_sub(rt[1], rt[0]), prim_ref_sub(rt[2], rt[0]));
+        if (!(prim_ref_len(fn) > 1e-12)) fn = prim_ref_cross(e, rnd_unit());
+        prim_ref_v3 out = prim_ref_cross(e, fn);
+        if (prim_ref_dot(out, prim_ref_sub(rt[(k + 2) % 3], rt[k])) > 0) out = prim_ref_scale(out, -1);
+        out = prim_ref_scale(out, 1 / prim_ref_len(out));
+        fn = prim_ref_scale(fn, (rnd() < 0.5 ? 1 : -1) / prim_ref_len(fn));
+        double mix = rnd_range(0, 1.5);
+        prim_ref_v3 dir = prim_ref_add(out, prim_ref_scale(fn, mix));
+        dir = prim_ref_scale(dir, 1 / prim_ref_len(dir));
+        prim_ref_v3 near = prim_ref_add(bp, prim_ref_scale(dir, dist));
+        prim_ref_v3 ax = rnd_unit();
+        if (prim_ref_dot(ax, dir) < 0 && rnd() < 0.8) ax = prim_ref_scale(ax, -1); /* mostly away */
+        double hh = rnd() < 0.2 ? 0 : rnd_range(0, 2);
+        fm_vec3_t seg[2], tri[3];
+        fm_vec3_t c0 = F(near);
+        for (int m = 0; m < 3; m++) { fm_vec3_t w = F(rt[m]); tri[m] = V(w.x - c0.x, w.y - c0.y, w.z - c0.z); }
+        /* the segment starts at that point and runs away or along (its other end anywhere) */
+        seg[0] = V(0, 0, 0);
+        seg[1] = F(prim_ref_scale(ax, hh));
+        prim_ref_captri_t ctx;
+        ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = prim_ref_v(0, 0, 0);
+        for (int m = 0; m < 3; m++) ctx.tri[m] = R(tri[m]);
+        double f0 = prim_ref_captri_fn(&ctx, 0, NULL);
+        double scale = 1;
+        for (int m = 0; m < 3; m++) scale = fmax(scale, fmax(fabs(tri[m].x), fmax(fabs(tri[m].y), fabs(tri[m].z))));
+        scale = fmax(scale, fmax(hh, r));
+        float fr = (float)r;
+        double frin = (double)fr - fmin(1e-4, (double)fr / 4);
+        if (fabs(f0 - frin) < 3e-6 * scale) { n_amb++; continue; }
+        coll_prim_hit_t h;
+        bool got = coll_capsule_triangle_overlap(seg, fr, tri, &h);
+        bool want = f0 < frin;
+        if (got != want) {
+            char msg[300];
+            snprintf(msg, sizeof msg, "overlap %d, want %d: distance %.9g rin %.9g", got, want, f0, frin);
+            dump_case(seg, fr, V(0, 0, 0), tri);
+            TEST_FAIL_MESSAGE(msg);
+        }
+        n++;
+        n_over += got;
+    }
+    printf("overlap boundary-axis cases: %d (%d overlapping), %d ambiguous\n", n, n_over, n_amb);
+    TEST_ASSERT_TRUE(n_over > n / 10 && n - n_over > n / 10 && n_amb < n / 4);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -889,5 +1050,7 @@ int main(void)
     RUN_TEST(test_random_sweeps_far_from_origin);
     RUN_TEST(test_random_touching_sweeps);
     RUN_TEST(test_ray_sphere_early_reject_is_exact);
+    RUN_TEST(test_far_start_edge_axis_cull_cases);
+    RUN_TEST(test_overlap_boundary_axis_cull);
     return UNITY_END();
 }
