@@ -512,6 +512,79 @@ static void test_hole_among_four_tile_corners(void)
     TEST_ASSERT_EQUAL_INT(0, fails);
 }
 
+/* Soak s2 l273 (generator 2), the level's triangles gathered at the failing step (0.1 mm):
+ * three tiles 0.141, 0.227 and 0.207 m high, turned 30-40 degrees, on a floor, their corners
+ * around the mouth of a hole 0.27-0.43 m from the foot (the widest gap between their
+ * contacts with the capsule's bottom ball, r 0.962, 171 degrees). The body walks into the
+ * mouth; its ball cannot reach the floor there (it must be raised 40.76 mm to clear the
+ * 0.141 tile's corner). The first edge the ball meets is the 0.227 tile's, a tenth of a
+ * radius across up from its centre; the crack rule's cheap look (level_beyond: a ray a
+ * radius beyond that edge) met the floor through the mouth, so nothing was asked and the
+ * foot stood on the floor (piece_beyond). */
+static const float hole_mouth_tris[][9] = {
+    {16.0000f, 0.0000f, -8.0000f, 24.0000f, 0.0000f, 0.0000f, 24.0000f, 0.0000f, -8.0000f},
+    {16.0000f, 0.0000f, -8.0000f, 16.0000f, 0.0000f, 0.0000f, 24.0000f, 0.0000f, 0.0000f},
+    {17.8182f, 0.0000f, -0.5533f, 16.5868f, 0.0000f, -1.9510f, 17.9845f, 0.0000f, -3.1823f},
+    {17.8182f, 0.0000f, -0.5533f, 17.9845f, 0.0000f, -3.1823f, 19.2159f, 0.0000f, -1.7846f},
+    {17.8182f, 0.1410f, -0.5533f, 19.2159f, 0.1410f, -1.7846f, 17.9845f, 0.1410f, -3.1823f},
+    {17.8182f, 0.1410f, -0.5533f, 17.9845f, 0.1410f, -3.1823f, 16.5868f, 0.1410f, -1.9510f},
+    {16.5868f, 0.0000f, -1.9510f, 16.5868f, 0.1410f, -1.9510f, 17.9845f, 0.1410f, -3.1823f},
+    {16.5868f, 0.0000f, -1.9510f, 17.9845f, 0.1410f, -3.1823f, 17.9845f, 0.0000f, -3.1823f},
+    {19.2159f, 0.0000f, -1.7846f, 17.9845f, 0.0000f, -3.1823f, 17.9845f, 0.1410f, -3.1823f},
+    {19.2159f, 0.0000f, -1.7846f, 17.9845f, 0.1410f, -3.1823f, 19.2159f, 0.1410f, -1.7846f},
+    {15.7319f, 0.0000f, -3.2079f, 16.5291f, 0.0000f, -4.6622f, 17.9834f, 0.0000f, -3.8650f},
+    {15.7319f, 0.0000f, -3.2079f, 17.9834f, 0.0000f, -3.8650f, 17.1862f, 0.0000f, -2.4107f},
+    {15.7319f, 0.2269f, -3.2079f, 17.1862f, 0.2269f, -2.4107f, 17.9834f, 0.2269f, -3.8650f},
+    {15.7319f, 0.2269f, -3.2079f, 17.9834f, 0.2269f, -3.8650f, 16.5291f, 0.2269f, -4.6622f},
+    {16.5291f, 0.0000f, -4.6622f, 16.5291f, 0.2269f, -4.6622f, 17.9834f, 0.2269f, -3.8650f},
+    {16.5291f, 0.0000f, -4.6622f, 17.9834f, 0.2269f, -3.8650f, 17.9834f, 0.0000f, -3.8650f},
+    {16.5372f, 0.0000f, -4.6771f, 17.3344f, 0.0000f, -6.1313f, 18.7887f, 0.0000f, -5.3342f},
+    {16.5372f, 0.0000f, -4.6771f, 18.7887f, 0.0000f, -5.3342f, 17.9915f, 0.0000f, -3.8799f},
+    {16.5372f, 0.2071f, -4.6771f, 17.9915f, 0.2071f, -3.8799f, 18.7887f, 0.2071f, -5.3342f},
+    {16.5372f, 0.2071f, -4.6771f, 18.7887f, 0.2071f, -5.3342f, 17.3344f, 0.2071f, -6.1313f},
+    {16.5372f, 0.0000f, -4.6771f, 17.9915f, 0.0000f, -3.8799f, 17.9915f, 0.2071f, -3.8799f},
+    {16.5372f, 0.0000f, -4.6771f, 17.9915f, 0.2071f, -3.8799f, 16.5372f, 0.2071f, -4.6771f},
+    {17.1862f, 0.0000f, -2.4107f, 17.9834f, 0.0000f, -3.8650f, 17.9834f, 0.2269f, -3.8650f},
+    {17.1862f, 0.0000f, -2.4107f, 17.9834f, 0.2269f, -3.8650f, 17.1862f, 0.2269f, -2.4107f},
+    {17.9915f, 0.0000f, -3.8799f, 18.7887f, 0.0000f, -5.3342f, 18.7887f, 0.2071f, -5.3342f},
+    {17.9915f, 0.0000f, -3.8799f, 18.7887f, 0.2071f, -5.3342f, 17.9915f, 0.2071f, -3.8799f},
+};
+
+static void test_hole_mouth_between_three_tiles(void)
+{
+    float worst = 1e9f;
+    for (int j = 0; j < 5; j++) {
+        cb_world_reset();
+        geo_tris(hole_mouth_tris, sizeof hole_mouth_tris / sizeof hole_mouth_tris[0]);
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        /* the replay's body (offset 0: the owner is the capsule's centre) and its start,
+         * moved across the way it walks by up to 2 cm */
+        const float o = 0.01f * (float)(j - 2);
+        pos = cb_vec(0x1.22801p+4f + 0.65f * o, 0x1.c41fccp+0f, -0x1.e332acp+1f + 0.76f * o);
+        char_body_init(&body, &pos);
+        char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+        s.radius = 0x1.ec91a4p-1f;
+        s.height = 0x1.c41fccp+1f;
+        s.step_height = 0x1.5b65b8p-1f;
+        s.floor_snap_distance = 0x1.12708cp+0f;
+        s.floor_max_angle = 0x1.dbc8eap-1f;
+        s.gravity = 0x1.a6fbc2p+4f;
+        s.max_fall_speed = 0x1.bbf8eap+5f;
+        s.max_slides = 4;
+        char_body_configure(&body, &s);
+        char_body_teleport(&body, pos, true);
+        const fm_vec3_t v = cb_vec(-0x1.7331c2p+1f, 0.0f, 0x1.3deb28p+1f);
+        char_body_set_velocity(&body, v);
+        body.input_velocity = v;
+        for (int f = 0; f < 2; f++) CB_STEP(&body, 0x1.111112p-5f);
+        const float foot = pos.y - 0.5f * s.height;
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        if (foot < worst) worst = foot;
+    }
+    cb_report("hole mouth between three tiles: lowest foot after walking in (must clear 0.0408)", worst, "m");
+    TEST_ASSERT_TRUE(worst >= 0.0408f - 0.001f);
+}
+
 /* ---- 2b. a groove narrower than the capsule between two low blocks ---- */
 
 /* Two blocks 15 cm high (within step_height 0.25) on a floor, x >= 0, with a 10 cm groove
@@ -1814,6 +1887,7 @@ int main(void)
     RUN_TEST(test_crack_under_leaning_face);
     RUN_TEST(test_crack_under_tilted_up);
     RUN_TEST(test_hole_among_four_tile_corners);
+    RUN_TEST(test_hole_mouth_between_three_tiles);
     RUN_TEST(test_oa_dm5_hole_among_floor_pieces);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);

@@ -251,8 +251,11 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
     return true;
 }
 
+/* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
+ * (piece_beyond let a body standing on the floor under its foot through). */
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
-                      const coll_sweep_hit_t *first, float first_len, support_t *out, fm_vec3_t *far_out)
+                      const coll_sweep_hit_t *first, float first_len, bool hole_only, support_t *out,
+                      fm_vec3_t *far_out)
 {
     const bool over_floor = floor_gap < 1e29f;
     const char_body_t *b = c->body;
@@ -292,6 +295,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fm_vec3_t downhill = v3_norm(tangent);
         /* lifted off the first contact by more than the queries' touch tolerance */
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
+        if (hole_only) goto hole; /* no groove's side (level_beyond): no roll */
         coll_sweep_hit_t h2;
         fm_vec3_t across = v3_norm(v3_reject(downhill, up));
         /* Resting on an edge almost under its centre the tangent barely descends: rolled
@@ -426,6 +430,60 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     if (!ball_drop(c, pos, b0, s, edge)) return true;
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
+    return false;
+}
+
+/**
+ * level_beyond's ray met the floor at the foot's level (or lower) a radius beyond the edge,
+ * so the edge is no groove's side; but the ball may still sit in a hole whose other pieces
+ * are not straight across from the edge: tile corners of different heights beside the
+ * ball on either side, the floor between them (soak s2 l273: the edge a tenth of a radius
+ * across up from the ball's centre, contact normal 0.994 along up; the ray went out of the
+ * hole's open mouth, 171 degrees wide). A walkable gathered triangle whose box rises above
+ * the foot and the floor under it, reaches beyond the full ball's centre (away from the
+ * edge) and comes within a radius of it may be such a piece: then the hole rule
+ * (ball_in_hole) alone decides (ball_held's hole_only: no roll, so no groove or wedge hold
+ * the old gate did not allow). A stair's nosing ahead has nothing above the foot behind it
+ * (the tread the foot is on and the lower ones): no query, one pass over the step's
+ * gathered boxes. Looked at only for an edge almost under the ball's centre (contact normal
+ * over 0.99 along up, within a seventh of a radius across up): that pass costs 30-40
+ * instructions a triangle, and every stair nosing ahead is such an edge for a few steps as
+ * the foot walks up to it (0.65-0.97 along up on the bench's stairs, 16 and 26 steps a
+ * course; over 0.99 3 and 1). Without a valid gather, no (as before).
+ */
+static bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, const coll_ray_hit_t *under)
+{
+    const coll_gather_t *g = c->gather;
+    const fm_vec3_t up = c->up;
+    if (!g || !g->valid || !(v3_dot(edge->normal, up) > 0.99f)) return false;
+    const fm_vec3_t side = v3_norm(v3_reject(edge->normal, up)); /* from the edge towards the ball */
+    const float r = c->radius;
+    const fm_vec3_t f = v3_sub(cb_foot(c, pos), g->origin), o = v3_madd(f, up, r);
+    const float lift = f_max(v3_dot(f, up), v3_dot(v3_sub(under->point, g->origin), up)) + c->contact_eps;
+    const float reach = v3_dot(o, side);
+    /* a box's highest point along up, farthest along side: hi where positive, lo where not */
+    const fm_vec3_t up_hi = v3(f_max(up.x, 0.0f), f_max(up.y, 0.0f), f_max(up.z, 0.0f)), up_lo = v3_sub(up, up_hi);
+    const fm_vec3_t side_hi = v3(f_max(side.x, 0.0f), f_max(side.y, 0.0f), f_max(side.z, 0.0f)),
+                    side_lo = v3_sub(side, side_hi);
+    for (uint16_t i = 0; i < g->ntris; i++) {
+        const coll_gather_tri_t *t = &g->tris[i];
+        /* its box rises above the foot and the floor under it */
+        if (!(v3_dot(t->hi, up_hi) + v3_dot(t->lo, up_lo) > lift)) continue;
+        /* reaches beyond the centre, away from the edge */
+        if (!(v3_dot(t->hi, side_hi) + v3_dot(t->lo, side_lo) > reach)) continue;
+        /* within reach of the full ball */
+        fm_vec3_t q = v3(f_min(f_max(o.x, t->lo.x), t->hi.x), f_min(f_max(o.y, t->lo.y), t->hi.y),
+                         f_min(f_max(o.z, t->lo.z), t->hi.z));
+        if (!(v3_len2(v3_sub(q, o)) < r * r)) continue;
+        /* walkable (either face): a piece's top, not a wall beside the body; and not in the
+         * plane of the floor under the foot (the tread a lift steps onto) */
+        fm_vec3_t n = v3_cross(t->e1, t->e2);
+        float nn = v3_len(n);
+        if (fabsf(v3_dot(n, up)) >= c->body->cos_floor_max_angle * nn &&
+            !(fabsf(v3_dot(n, under->normal)) > 0.999f * nn &&
+              fabsf(v3_dot(v3_sub(t->w0, v3_sub(under->point, g->origin)), under->normal)) <= c->contact_eps))
+            return true;
+    }
     return false;
 }
 
@@ -595,7 +653,7 @@ static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, cons
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
     support_t w; /* written by ball_held when it returns true: read only then */
-    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, false, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
         *s = w;
 }
 
@@ -715,9 +773,12 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     fm_vec3_t far;
                     coll_sweep_hit_t edge;
                     float edge_len;
+                    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
-                        (gap > contact_eps || level_beyond(c, *pos, &edge)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, &w, &far) && w.gap < gap - step_eps) {
+                        (gap > contact_eps || level_beyond(c, *pos, &edge) ||
+                         (hole_only = piece_beyond(c, *pos, &edge, &hit))) &&
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, &w, &far) &&
+                        w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
                          * only the roll's end counted, soak s3 l124) */
@@ -765,7 +826,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
         /* held by the crack rule alone, over a floor the foot ray found out of reach below */
         bool edges_over_floor = false;
         if (!s.found) {
-            ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, &s, NULL);
+            ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, &s, NULL);
             edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
