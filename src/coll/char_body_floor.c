@@ -434,9 +434,18 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
     if (!(s > c->tiny)) return false;
     /* The ball ends two skins (along up: 2 skin nu along the normal) over the floor's plane
-     * and starts higher: what lies within half that over the plane it never reaches. */
-    const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu };
-    if (!ball_drop_above(c, pos, b0, s, &above, edge)) return true;
+     * and starts higher: what lies within half that over the plane it never reaches (the
+     * sloping floor's tilted neighbours, tested exactly otherwise). Over a level floor (a
+     * grid-aligned level's) the plain sweep: its neighbours are level or upright, out of the
+     * ball's box or above the plane, and the plane only costs there. The same answer. */
+    bool met;
+    if (nu < 1.0f) {
+        const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu };
+        met = ball_drop_above(c, pos, b0, s, &above, edge);
+    } else {
+        met = ball_drop(c, pos, b0, s, edge);
+    }
+    if (!met) return true;
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
     return false;
