@@ -97,6 +97,16 @@ static inline bool ball_drop(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t b0, flo
     return cb_sweep(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), hit);
 }
 
+/** ball_drop for a drop that stays above a plane (above: the first look's, over the foot
+ *  ray's floor): the same answer, without the exact tests of the triangles under it. */
+static inline bool ball_drop_above(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t b0, float len,
+                                   const coll_gather_above_t *above, coll_sweep_hit_t *hit)
+{
+    bool found;
+    if (cb_down_known(c, pos, len, &found, hit)) return found;
+    return cb_sweep_above(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), above, hit);
+}
+
 /** What holds the body up at the end of a step. */
 typedef struct {
     bool found;
@@ -427,7 +437,19 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     /* descent along up at which the ball would touch the floor's plane, less the margin */
     float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
     if (!(s > c->tiny)) return false;
-    if (!ball_drop(c, pos, b0, s, edge)) return true;
+    /* The ball ends two skins (along up: 2 skin nu along the normal) over the floor's plane
+     * and starts higher: what lies within half that over the plane it never reaches (the
+     * sloping floor's tilted neighbours, tested exactly otherwise). Over a level floor (a
+     * grid-aligned level's) the plain sweep: its neighbours are level or upright, out of the
+     * ball's box or above the plane, and the plane only costs there. The same answer. */
+    bool met;
+    if (nu < 1.0f) {
+        const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu };
+        met = ball_drop_above(c, pos, b0, s, &above, edge);
+    } else {
+        met = ball_drop(c, pos, b0, s, edge);
+    }
+    if (!met) return true;
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
     return false;

@@ -125,6 +125,15 @@ static inline bool cb_sweep(const cb_ctx_t *c, fm_vec3_t center, float radius, f
     return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
                               c->body->settings.coll_types, hit);
 }
+/* cb_sweep for a sweep the caller knows stays above a plane (coll_gather_above_t): on the
+ * gather, the triangles lying under it are not tested; the answer is cb_sweep's. */
+static inline bool cb_sweep_above(const cb_ctx_t *c, fm_vec3_t center, float radius, float ihh, fm_vec3_t disp,
+                                  const coll_gather_above_t *above, coll_sweep_hit_t *hit)
+{
+    if (c->gather) return coll_gather_capsule_sweep_above(c->gather, center, c->up, radius, ihh, disp, above, hit);
+    return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
+                              c->body->settings.coll_types, hit);
+}
 static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_contact_t *out, uint32_t max_out)
 {
     if (c->gather) return coll_gather_capsule_overlaps(c->gather, center, c->up, c->radius, c->sweep_ihh, out, max_out);

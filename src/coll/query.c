@@ -706,10 +706,12 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
 /* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;
  * lo..hi: its box swept to sb's limit) into sb. */
 CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
-                                   fm_vec3_t lo, fm_vec3_t hi, best_hit_t *sb)
+                                   fm_vec3_t lo, fm_vec3_t hi, const coll_gather_above_t *above,
+                                   const fm_vec3_t *center, best_hit_t *sb)
 {
-    fm_vec3_t glo, ghi;
+    fm_vec3_t glo, ghi, ap;
     gather_box(rel, &lo, &hi, &glo, &ghi);
+    if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
@@ -719,6 +721,18 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
          * as tight as its plane */
         coll_gather_tri_t *gt = &g->tris[k];
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
+        if (above && tilted) {
+            /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
+             * margin from the swept capsule, so the exact test, which reports contacts within
+             * the radius only, would find nothing. On the tilted candidates only, as the plane
+             * cull below (a floor flat along an axis under the sweep is out of its box
+             * already): the neighbours of a sloping floor's triangle under the crack rule's
+             * ball, which that cull keeps (the ball crosses their planes' extensions). */
+            const fm_vec3_t *n = &above->n;
+            float h0 = (w0.x - ap.x) * n->x + (w0.y - ap.y) * n->y + (w0.z - ap.z) * n->z;
+            float h1 = h0 + fm_vec3_dot(&shape[1], n), h2 = h0 + fm_vec3_dot(&shape[2], n);
+            if (h0 <= above->margin && h1 <= above->margin && h2 <= above->margin) continue;
+        }
         if (sweep_tri(q, gt->inst, gt->tri, &w0, shape, &u, tilted, gt, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
@@ -768,7 +782,7 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
             best_init(&sb, covered);
             fm_vec3_t lo, hi;
             swept_box(q, covered, &lo, &hi);
-            gather_sweep_scan(g, q, rel, lo, hi, &sb);
+            gather_sweep_scan(g, q, rel, lo, hi, NULL, NULL, &sb);
             if (sb.have) {
                 STATS_ADD(g->scene, gather_queries);
                 if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, q, g->read_mask, &sb);
@@ -781,8 +795,9 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
                               hit);
 }
 
-bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
-                               float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
+CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                      float inner_half_height, fm_vec3_t displacement,
+                                      const coll_gather_above_t *above, coll_sweep_hit_t *hit)
 {
     if (!g || !g->scene) return false;
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement)) return false;
@@ -796,9 +811,22 @@ bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axi
     STATS_ADD(g->scene, gather_queries);
     best_hit_t sb;
     best_init(&sb, 1.0f);
-    gather_sweep_scan(g, &q, &rel, lo, hi, &sb);
+    gather_sweep_scan(g, &q, &rel, lo, hi, above, &center, &sb);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
+}
+
+bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                               float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
+{
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, hit);
+}
+
+bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                     float inner_half_height, fm_vec3_t displacement,
+                                     const coll_gather_above_t *above, coll_sweep_hit_t *hit)
+{
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, hit);
 }
 
 uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
