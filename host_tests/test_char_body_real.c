@@ -358,6 +358,28 @@ static void geo_tris(const float (*tris)[9], size_t n)
     }
 }
 
+/** A soak replay's body shape, exact (its hex floats), for the tests rebuilt from replays. */
+typedef struct {
+    float radius, height, step, snap, max_angle, gravity, max_fall;
+    uint8_t slides;
+    bool foot_owned; /* the owner point is the foot (centre offset half the height along y) */
+} soak_shape_t;
+
+static char_body_settings_t soak_body_settings(const soak_shape_t *k)
+{
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = k->radius;
+    s.height = k->height;
+    s.step_height = k->step;
+    s.floor_snap_distance = k->snap;
+    s.floor_max_angle = k->max_angle;
+    s.gravity = k->gravity;
+    s.max_fall_speed = k->max_fall;
+    s.max_slides = k->slides;
+    if (k->foot_owned) s.center_offset = cb_vec(0.0f, 0.5f * k->height, 0.0f);
+    return s;
+}
+
 /* Soak s2 l356 (generator 2), the pieces within 1.1 m of the spot (coordinates rounded to
  * 0.1 mm): tiles 0.27 m high with cracks between them, up tilted 4 degrees by the game
  * (s2 l117, l375 alike). The foot ray, along up, went down through a crack into a tile's
@@ -562,15 +584,9 @@ static void test_hole_mouth_between_three_tiles(void)
         const float o = 0.01f * (float)(j - 2);
         pos = cb_vec(0x1.22801p+4f + 0.65f * o, 0x1.c41fccp+0f, -0x1.e332acp+1f + 0.76f * o);
         char_body_init(&body, &pos);
-        char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
-        s.radius = 0x1.ec91a4p-1f;
-        s.height = 0x1.c41fccp+1f;
-        s.step_height = 0x1.5b65b8p-1f;
-        s.floor_snap_distance = 0x1.12708cp+0f;
-        s.floor_max_angle = 0x1.dbc8eap-1f;
-        s.gravity = 0x1.a6fbc2p+4f;
-        s.max_fall_speed = 0x1.bbf8eap+5f;
-        s.max_slides = 4;
+        static const soak_shape_t shape = {0x1.ec91a4p-1f, 0x1.c41fccp+1f, 0x1.5b65b8p-1f, 0x1.12708cp+0f,
+                                            0x1.dbc8eap-1f, 0x1.a6fbc2p+4f, 0x1.bbf8eap+5f, 4, false};
+        char_body_settings_t s = soak_body_settings(&shape);
         char_body_configure(&body, &s);
         char_body_teleport(&body, pos, true);
         const fm_vec3_t v = cb_vec(-0x1.7331c2p+1f, 0.0f, 0x1.3deb28p+1f);
@@ -1758,16 +1774,9 @@ static void test_oa_dm1_ball_on_block_edge_falls(void)
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     pos = cb_vec(0x1.ba5a1ep+4f, 0x1.ecb02ap-2f, -0x1.5e843cp+4f); /* the soak body's state (owner = foot) */
     char_body_init(&body, &pos);
-    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
-    s.radius = 0x1.9bf04ep-2f;
-    s.height = 0x1.a33fdcp+0f;
-    s.step_height = 0x1.781a2cp-2f;
-    s.floor_snap_distance = 0x1.786f28p-2f;
-    s.floor_max_angle = 0x1.be32d8p-1f;
-    s.gravity = 0x1.fc84f8p+4f;
-    s.max_fall_speed = 0x1.b8p+5f;
-    s.max_slides = 4;
-    s.center_offset = cb_vec(0.0f, 0x1.a33fdcp-1f, 0.0f);
+    static const soak_shape_t shape = {0x1.9bf04ep-2f, 0x1.a33fdcp+0f, 0x1.781a2cp-2f, 0x1.786f28p-2f,
+                                        0x1.be32d8p-1f, 0x1.fc84f8p+4f, 0x1.b8p+5f, 4, true};
+    char_body_settings_t s = soak_body_settings(&shape);
     char_body_configure(&body, &s);
     char_body_set_velocity(&body, cb_vec(0.0f, -0x1.0f30fp+1f, 0.0f));
     body.input_velocity = cb_vec(0x1.63dc78p+2f, 0.0f, 0x1.e503aap+1f);
@@ -1832,16 +1841,9 @@ static void test_oa_dm5_hole_among_floor_pieces(void)
     TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
     pos = cb_vec(0x1.710998p+4f, -0x1.23617cp+0f, -0x1.467e2p+1f); /* the soak body's state (owner = foot) */
     char_body_init(&body, &pos);
-    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
-    s.radius = 0x1.6a29cp-2f;
-    s.height = 0x1.e80becp+0f;
-    s.step_height = 0x1.5e3fa2p-2f;
-    s.floor_snap_distance = 0x1.d68a84p-2f;
-    s.floor_max_angle = 0x1.844eb2p-1f;
-    s.gravity = 0x1.51cbbap+4f;
-    s.max_fall_speed = 0x1.b8p+5f;
-    s.max_slides = 2;
-    s.center_offset = cb_vec(0.0f, 0x1.e80becp-1f, 0.0f);
+    static const soak_shape_t shape = {0x1.6a29cp-2f, 0x1.e80becp+0f, 0x1.5e3fa2p-2f, 0x1.d68a84p-2f,
+                                        0x1.844eb2p-1f, 0x1.51cbbap+4f, 0x1.b8p+5f, 2, true};
+    char_body_settings_t s = soak_body_settings(&shape);
     char_body_configure(&body, &s);
     char_body_set_velocity(&body, cb_vec(-0x1.7acfb4p-1f, -0x1.3b46bp+1f, -0x1.c04148p-3f));
     body.input_velocity = cb_vec(-0x1.7acfb4p-1f, 0.0f, -0x1.c04148p-3f);
