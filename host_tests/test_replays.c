@@ -684,6 +684,43 @@ static void test_oracle_footing_out_held_by_the_slope_under_the_foot(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, pr));
 }
 
+/* The footing oracle and the inside of a closed solid (soak seed 4 level 20: up 48 degrees
+ * off vertical, r 0.1865, a field of tiles 0.22 m high on the room floor, both steep for
+ * this up). The body's foot in a crossing of cracks between four tiles: the line along up
+ * through it enters tile A through a side that leans over the crack (43.4 degrees off up
+ * from inside, walkable only as seen from inside the tile) 27.6 mm above the foot, and
+ * leaves tile B through B's side (walkable from outside) 3.14 mm above it: the foot is
+ * 2.2 mm inside B. Standing on A's inside would put the foot inside A: the oracle counts
+ * only B's outside (3.14 mm, a real failure, still failed), and A's side again when its
+ * piece is not known closed (27.6 mm, as before). On B's side, passes. */
+static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
+{
+    static soak_frame_t fr[4];
+    soak_replay_t rp;
+    memset(&rp, 0, sizeof rp);
+    rp.frames = fr;
+    rp.cap = 4;
+    int line = 0;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s4_l20_footing.replay", &rp, &line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    const char_body_settings_t *s = &rp.settings;
+    const fm_vec3_t sunk = V(-0x1.187be8p+4f, -0x1.1ab874p-1f, -0x1.7a0e74p+4f); /* main's body */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00314, soak_check_footing(&lvl, s, sunk));
+    /* tile B's side (outward, walkable) */
+    const soak_wtri_t *b = &lvl.wtris[soak_footing_tri];
+    TEST_ASSERT_EQUAL_UINT8(1, b->closed);
+    /* the same level with no piece known closed: A's inside counts, 27.6 mm */
+    for (uint32_t i = 0; i < lvl.nwtris; i++) lvl.wtris[i].closed = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.02760, soak_check_footing(&lvl, s, sunk));
+    /* the body lifted onto B's side (this branch's floor rule): passes */
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    const fm_vec3_t on = V(-0x1.1872fp+4f, -0x1.19a5eep-1f, -0x1.7a0b0ep+4f);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5, 0.0, soak_check_footing(&lvl, s, on)); /* 0.002 mm */
+    /* 5 mm deeper into B than main's body: fails by 5 mm more */
+    const fm_vec3_t deeper = V(sunk.x - 0.005f * s->up.x, sunk.y - 0.005f * s->up.y, sunk.z - 0.005f * s->up.z);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00814, soak_check_footing(&lvl, s, deeper));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -1002,6 +1039,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);
     RUN_TEST(test_oracle_footing_out_held_by_the_slope_under_the_foot);
+    RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

@@ -345,6 +345,23 @@ static bool tri_walkable(const soak_wtri_t *w, const char_body_settings_t *s, co
     return true;
 }
 
+/* The face tri_walkable found walkable (the one facing up) is the inside of a closed
+ * solid (its winding faces away from up: the front face is an underside, the back face
+ * looks into the solid). No body stands on it: a foot above it would be inside the solid.
+ * Under a tilted up the side of a tile leans over the crack beside it by less than the
+ * floor angle, seen from inside (soak s4 l20: up 48 degrees off vertical, a tile side
+ * 43.4 degrees off up from inside): the foot in the crack is under the tile's overhang,
+ * not under a floor. A piece not known closed (a single quad, a triangle soup, a map)
+ * counts either face as before. */
+static bool inside_face(const soak_wtri_t *w, const double up[3])
+{
+    if (!w->closed) return false;
+    double e1[3], e2[3], n[3];
+    sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
+    cross3(n, e1, e2);
+    return dot3(n, up) < 0;
+}
+
 static void foot_point(const char_body_settings_t *s, fm_vec3_t owner, double up[3], double f[3], double *r)
 {
     soak_capsule_t full, sweep;
@@ -441,7 +458,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (!tri_seen(w->mask, s)) continue;
         if (dist3(f, w->c) > w->rad + below + step + r) continue;
         double n[3], allow;
-        if (!tri_walkable(w, s, up, n, &allow)) continue;
+        if (!tri_walkable(w, s, up, n, &allow) || inside_face(w, up)) continue;
         double d[3];
         sub3(d, w->v[0], f);
         double t = dot3(n, d) / dot3(n, up);
@@ -505,7 +522,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (!tri_seen(w->mask, s)) continue;
         if (dist3(bc, w->c) > w->rad + r) continue;
         double n[3], allow;
-        if (!tri_walkable(w, s, up, n, &allow)) continue;
+        if (!tri_walkable(w, s, up, n, &allow) || inside_face(w, up)) continue;
         bool stood_on = false;
         for (int k = 0; k < non && !stood_on; k++)
             stood_on = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;

@@ -428,6 +428,24 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
     dq q = fq(&p->inst.xf.rot);
     dv3 pos = v3(p->inst.xf.pos.x, p->inst.xf.pos.y, p->inst.xf.pos.z);
     dv3 sc = v3(p->inst.xf.scale.x, p->inst.xf.scale.y, p->inst.xf.scale.z);
+    /* closed: every directed edge (a, b) of the piece met exactly once as (b, a) and once
+     * as itself (shared vertices: boxes, tile fields); quads of their own vertices are not */
+    const uint32_t *ix = l->idx + (size_t)p->first_tri * 3;
+    bool closed = p->ntris > 0;
+    for (uint32_t t = 0; t < p->ntris && closed; t++)
+        for (int j = 0; j < 3 && closed; j++) {
+            uint32_t a = ix[t * 3 + (uint32_t)j], b = ix[t * 3 + (uint32_t)(j + 1) % 3];
+            int same = 0, rev = 0;
+            for (uint32_t u = 0; u < p->ntris; u++)
+                for (int k = 0; k < 3; k++) {
+                    uint32_t c = ix[u * 3 + (uint32_t)k], d = ix[u * 3 + (uint32_t)(k + 1) % 3];
+                    same += c == a && d == b;
+                    rev += c == b && d == a;
+                }
+            closed = same == 1 && rev == 1;
+        }
+    /* a mirroring scale turns the winding inside out */
+    if (sc.x * sc.y * sc.z < 0) closed = false;
     for (uint32_t t = 0; t < p->ntris && l->nwtris < SOAK_MAX_TRIS; t++) {
         soak_wtri_t *w = &l->wtris[l->nwtris++];
         for (int j = 0; j < 3; j++) {
@@ -438,6 +456,7 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
         }
         wtri_bound(w);
         w->mask = p->inst.write_mask;
+        w->closed = closed;
     }
 }
 
@@ -775,6 +794,7 @@ int soak_level_load(soak_level_t *l, const char *blob_path, const char *raw_path
         }
         wtri_bound(w);
         w->mask = 0x01;
+        w->closed = 0; /* a map's solids are not known: every face counts either way */
     }
     free(raw);
     l->npieces = l->nbodies = l->nverts = l->ntris = 0;

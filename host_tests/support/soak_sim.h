@@ -85,6 +85,8 @@ typedef struct {
     double c[3];      ///< bounding-sphere centre
     double rad;       ///< bounding-sphere radius
     uint8_t mask;     ///< write mask of its piece
+    uint8_t closed;   ///< its piece is closed and consistently wound (every directed edge met
+                      ///< once reversed): its front face (by winding) is the outside of a solid
 } soak_wtri_t;
 
 /** Generator versions. 1: the original generator (replays without a `gen` line);
