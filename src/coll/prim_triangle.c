@@ -416,7 +416,9 @@ typedef struct {
     tri_t tri;
     fm_vec3_t a, b, s, d;
     float ss;
-    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
+    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle; < 0 until
+                     * an axis test first needs it (sweep_mag) */
+    float t_max;    /* the sweep's t_max (for sweep_mag) */
     float h[2], dn; /* has_face: heights of a and b over the face, and d along its normal */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
@@ -481,7 +483,7 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     /* Nearly parallel lines leave mu (and so tt) poorly conditioned: never accept a time
      * at which the two segments are still clearly apart (the cylinders cover the rest). */
     fm_vec3_t at = v3_madd(c->a, c->d, tt);
-    float sd2 = coll_prim_closest_seg_seg(at, v3_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
+    float sd2 = closest_seg_seg_in(at, v3_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
     float rr = r + 1e-5f * (1.0f + r);
     if (sd2 > rr * rr) return;
     take(best, tt, v3_scale(mu, sig), v3_madd(e0, e, v));
@@ -495,13 +497,31 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
-static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
-static bool sweep_separated(const sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
+static bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
+static bool sweep_separated(sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
 {
     return sweep_separated_k(c, u, rc, t_max, 1e-5f);
 }
 
-static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
+
+/* The coordinates' magnitude, made when an axis test first separates (most candidates
+ * that reach the feature sweep never get that far: their setup skips it). Summed in this
+ * order: the culls' allowances, hence the results, depend on its rounding. */
+static float sweep_mag(sweep_ctx_t *c)
+{
+    if (c->mag >= 0.0f) return c->mag;
+    float m = v3_abs_sum(c->a);
+    m += v3_abs_sum(c->b);
+    m += v3_abs_sum(c->d) * c->t_max;
+    m += v3_abs_sum(c->tri.v[0]);
+    m += v3_abs_sum(c->tri.v[1]);
+    m += v3_abs_sum(c->tri.v[2]);
+    c->mag = m;
+    return m;
+}
+
+static bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
     const fm_vec3_t u = *pu;
     float uu = v3_len2(u);
@@ -512,7 +532,7 @@ static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float r
     float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
     if (!(sep > 0.0f)) return false;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
-    sep -= slack * u1 * c->mag;
+    sep -= slack * u1 * sweep_mag(c);
     float rr = rc * 1.0001f + 1e-7f;
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
@@ -557,8 +577,6 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
-
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
@@ -601,13 +619,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     float rin = r - tol;
-    /* (summed in this order: the culls' allowances, hence the results, depend on its rounding) */
-    c.mag = v3_abs_sum(c.a);
-    c.mag += v3_abs_sum(c.b);
-    c.mag += v3_abs_sum(c.d) * t_max;
-    c.mag += v3_abs_sum(c.tri.v[0]);
-    c.mag += v3_abs_sum(c.tri.v[1]);
-    c.mag += v3_abs_sum(c.tri.v[2]);
+    c.mag = -1.0f; /* (sweep_mag) */
+    c.t_max = t_max;
     /* Separating-axis culls: the swept capsule stays clear of the triangle along an axis
      * (most candidates near stairs and corners that the plane cull keeps: the capsule
      * beside a riser or a tread's edge). With confirm, a contact that never goes deeper
@@ -691,7 +704,7 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         bool interior = c.sphere || (edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f);
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
             fm_vec3_t qs, qt, dummy;
-            coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
+            closest_seg_seg_in(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
             float q2 = seg_tri_closest(&c.tri, &qs, &qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
