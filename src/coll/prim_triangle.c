@@ -160,6 +160,17 @@ PRIM_INLINE float closest_seg_seg_in(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, f
     return v3_len2(v3_sub(x, y));
 }
 
+/* closest_seg_seg_in(p0, p1, q, q, ...)'s point of p0..p1 (the same expressions for a
+ * point q: bit-identical), without the general case's code. */
+PRIM_INLINE fm_vec3_t closest_on_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q)
+{
+    const float eps = 1e-20f;
+    fm_vec3_t d1 = v3_sub(p1, p0), w = v3_sub(p0, q);
+    float a = v3_dot(d1, d1);
+    float s = a <= eps ? 0.0f : f_clamp01(-v3_dot(d1, w) / a);
+    return v3_madd(p0, d1, s);
+}
+
 float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
                                 float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
@@ -497,7 +508,7 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
-static bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
+PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
 static bool sweep_separated(sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
 {
     return sweep_separated_k(c, u, rc, t_max, 1e-5f);
@@ -521,7 +532,7 @@ static float sweep_mag(sweep_ctx_t *c)
     return m;
 }
 
-static bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
     const fm_vec3_t u = *pu;
     float uu = v3_len2(u);
@@ -703,8 +714,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         /* (a sphere's centre is a point: its closest pair is exact already) */
         bool interior = c.sphere || (edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f);
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
-            fm_vec3_t qs, qt, dummy;
-            closest_seg_seg_in(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
+            fm_vec3_t qt, dummy;
+            fm_vec3_t qs = closest_on_seg(ha, hb, pt);
             float q2 = seg_tri_closest(&c.tri, &qs, &qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
