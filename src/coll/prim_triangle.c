@@ -684,13 +684,40 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     }
 
     feat_hit_t best;
+    /* the closest pair at the end of the motion (the confirmation's), when the end cull
+     * below made it */
+    bool end_known = false;
+    float d2e = 0.0f;
+    fm_vec3_t es = ps, et = ps;
     if (!far && d2 <= r * r) {
         best.hit = true;
         best.t = 0.0f;
         best.n = v3_unit_or(v3_sub(ps, pt), c.tri.has_face ? c.tri.n : v3(0.0f, 1.0f, 0.0f));
         best.p = pt;
-    } else if (!sweep_features(&c, r, t_max, false, &best)) {
-        return false;
+    } else {
+        /* The end cull: with a hit held at t_max (before), a candidate that reaches the
+         * capsule only at t_max (the held contact's neighbour across their shared edge: a
+         * nosing, a crack's edge) is no better, but the start's axes above cannot tell (its
+         * contact direction is the end's) and the feature sweep finds its contact at t_max, or
+         * a rounding earlier, where the confirmation then runs the features again to find it
+         * never goes deeper (3-6k console instructions each). The end's closest pair is the
+         * confirmation's own last axis: the swept capsule clear of rin along it, with the
+         * confirm culls' allowance (1e-6), never goes deeper than the touch tolerance, which
+         * is no hit however the features would find it. Only where that allowance leaves the
+         * tolerance room to clear it (small coordinates: the magnitude test below; a crack in a
+         * 100 m floor does not), and only once a hit is held (a first contact pays the end's
+         * pair for nothing: measured, it cost more than it saved). */
+        if (confirm && before && 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f)) {
+            fm_vec3_t off = v3_scale(c.d, t_max);
+            fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+            d2e = seg_tri_closest(&c.tri, &ea, &eb, &es, &et);
+            end_known = true;
+            if (!(d2e < rin * rin)) {
+                fm_vec3_t sep2 = v3_sub(es, et);
+                if (sweep_separated_k(&c, &sep2, rin, t_max, 1e-6f)) return false;
+            }
+        }
+        if (!sweep_features(&c, r, t_max, false, &best)) return false;
     }
     if (before && best.t > 0.0f && !(best.t < t_max)) return false;
 
@@ -732,13 +759,16 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
         if (sweep_separated_k(&c, &hit->normal, rin, t_max, 1e-6f)) return false;
-        fm_vec3_t off = v3_scale(c.d, t_max);
-        fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
-        float d2e = seg_tri_closest(&c.tri, &ea, &eb, &ps, &pt);
+        if (!end_known) {
+            fm_vec3_t off = v3_scale(c.d, t_max);
+            fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+            d2e = seg_tri_closest(&c.tri, &ea, &eb, &es, &et);
+        }
         if (!(d2e < rin * rin)) {
-            /* clear of rin along the closest pair's direction at the end: never deeper */
-            fm_vec3_t sep2 = v3_sub(ps, pt);
-            if (sweep_separated(&c, &sep2, rin, t_max)) return false;
+            /* clear of rin along the closest pair's direction at the end: never deeper
+             * (known not when that test ran before the features) */
+            fm_vec3_t sep2 = v3_sub(es, et);
+            if (!end_known && sweep_separated(&c, &sep2, rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
