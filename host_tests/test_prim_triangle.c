@@ -819,6 +819,91 @@ static void test_prepared_triangle_is_bit_identical(void)
     (void)n_prepared;
 }
 
+/* The held sweep's end cull (tri_sweep: with a hit held at t_max, a candidate clear of rin
+ * along the closest pair's direction at t_max is dropped before its feature sweep) drops
+ * nothing the sweep reports: the held sweep answers exactly what the plain one does at the
+ * same t_max, less a contact after t = 0 no sooner than t_max. On a stair nosing and a
+ * crack's edges (pairs of triangles sharing an edge: the tie the cull is for), capsules and
+ * spheres swept at the edge from all sides, t_max at the contact time of each of the
+ * triangles and a little after it (the capsule deeper by 1e-5 .. 5e-2 of its radius
+ * there), in small coordinates (the cull runs) and 300 m from the triangles' first vertex. */
+static void test_held_end_cull_matches_plain(void)
+{
+    /* a nosing: tread (y = 0, z < 0) and riser (z = 0, y < 0), two triangles each; a crack:
+     * a floor's edge and the crack's side below it */
+    const fm_vec3_t quads[2][2][4] = {
+        { { V(-1, 0, 0), V(1, 0, 0), V(1, 0, -1), V(-1, 0, -1) }, { V(-1, 0, 0), V(1, 0, 0), V(1, -0.25f, 0), V(-1, -0.25f, 0) } },
+        { { V(-1, 0, 0), V(1, 0, 0), V(1, 0, -2), V(-1, 0, -2) }, { V(-1, 0, 0), V(1, 0, 0), V(1, -1, 0), V(-1, -1, 0) } },
+    };
+    const float deeper[] = { 0.0f, 1e-5f, 1e-4f, 3e-4f, 1e-3f, 1e-2f, 5e-2f };
+    int n_cases = 0, n_ties = 0, n_hits = 0;
+    for (int g = 0; g < 2; g++)
+    for (int o = 0; o < 2; o++)
+    for (int i = 0; i < 300; i++) {
+        float off = o ? 300.0f : 0.0f;
+        fm_vec3_t tris[4][3];
+        for (int q = 0; q < 2; q++) {
+            const fm_vec3_t *v = quads[g][q];
+            fm_vec3_t a[3] = { v[0], v[1], v[2] }, b[3] = { v[0], v[2], v[3] };
+            for (int k = 0; k < 3; k++) { tris[2 * q][k] = a[k]; tris[2 * q + 1][k] = b[k]; }
+        }
+        /* aimed at a point of the front edge (x in -0.8 .. 0.8) from above and in front */
+        float r = (float)rnd_range(0.05, 0.6);
+        float hh = rnd() < 0.3 ? 0.0f : (float)rnd_range(0.1, 0.5);
+        prim_ref_v3 aim = { rnd_range(-0.8, 0.8), 0, 0 };
+        prim_ref_v3 dir = rnd_unit();
+        if (dir.y < 0) dir.y = -dir.y;
+        if (dir.z < 0) dir.z = -dir.z;
+        if (rnd() < 0.3) dir = prim_ref_scale((prim_ref_v3){ rnd_range(-0.2, 0.2), rnd_range(0.2, 1), rnd_range(0, 1) }, 1.0);
+        double dl = prim_ref_len(dir);
+        dir = prim_ref_scale(dir, 1.0 / dl);
+        prim_ref_v3 c = prim_ref_add(aim, prim_ref_scale(dir, r + hh + rnd_range(0.05, 1.0)));
+        prim_ref_v3 lat = prim_ref_scale(rnd_unit(), rnd_range(0, 0.6 * r)); /* off the line through the edge */
+        c = prim_ref_add(c, lat);
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(aim, c), rnd_range(1.0, 1.6)));
+        double dlen = prim_ref_len(prim_ref_sub(aim, c));
+        for (int a = 0; a < 4; a++) {
+            /* the sweep's inputs relative to the triangle's first vertex, moved by off */
+            fm_vec3_t rt[4][3], seg[2]; /* (the first vertex at the origin) */
+            seg[0] = V((float)c.x + off - (tris[a][0].x + off), (float)c.y - hh - tris[a][0].y, (float)c.z - tris[a][0].z);
+            seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
+            for (int k = 0; k < 3; k++)
+                rt[a][k] = V(tris[a][k].x + off - (tris[a][0].x + off), tris[a][k].y - tris[a][0].y, tris[a][k].z - tris[a][0].z);
+            coll_prim_hit_t h0;
+            if (!coll_tri_sweep_prep(seg, r, &d, rt[a], NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
+            n_hits++;
+            /* t_max at this triangle's contact time and after it, against every triangle */
+            for (int b = 0; b < 4; b++) {
+                fm_vec3_t sb[2], tb[3];
+                for (int k = 0; k < 2; k++)
+                    sb[k] = V((float)c.x + off - (tris[b][0].x + off), (float)c.y + (k ? hh : -hh) - tris[b][0].y,
+                              (float)c.z - tris[b][0].z);
+                for (int k = 0; k < 3; k++)
+                    tb[k] = V(tris[b][k].x + off - (tris[b][0].x + off), tris[b][k].y - tris[b][0].y, tris[b][k].z - tris[b][0].z);
+                for (int m = 0; m < (int)(sizeof deeper / sizeof deeper[0]); m++) {
+                    float t_max = h0.t + (float)(deeper[m] * r / (dlen > 1e-6 ? dlen : 1.0));
+                    coll_prim_hit_t hp, hb;
+                    memset(&hp, 0, sizeof hp);
+                    memset(&hb, 0, sizeof hb);
+                    bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
+                    bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
+                    if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
+                    if (!hits_equal(gp, &hp, gb, &hb)) {
+                        printf("held end cull: g %d o %d i %d a %d b %d m %d: plain %d t %.9g, held %d\n", g, o, i, a, b,
+                               m, gp, (double)hp.t, gb);
+                        dump_case(sb, r, d, tb);
+                    }
+                    TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
+                    n_ties += b != a && m == 0;
+                    n_cases++;
+                }
+            }
+        }
+    }
+    printf("held end cull: %d contacts, %d cases (%d ties across triangles)\n", n_hits, n_cases, n_ties);
+    TEST_ASSERT_TRUE(n_hits > 500);
+}
+
 /* ray_sphere's early rejection (an entry after s_max found before the square root) must
  * agree bit for bit with the full root: the full test here (the code before it), run on
  * random rays whose s_max is put exactly at, just before and just after the entry, near
@@ -1052,5 +1137,6 @@ int main(void)
     RUN_TEST(test_ray_sphere_early_reject_is_exact);
     RUN_TEST(test_far_start_edge_axis_cull_cases);
     RUN_TEST(test_overlap_boundary_axis_cull);
+    RUN_TEST(test_held_end_cull_matches_plain);
     return UNITY_END();
 }

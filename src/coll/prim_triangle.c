@@ -160,6 +160,17 @@ PRIM_INLINE float closest_seg_seg_in(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, f
     return v3_len2(v3_sub(x, y));
 }
 
+/* closest_seg_seg_in(p0, p1, q, q, ...)'s point of p0..p1 (the same expressions for a
+ * point q: bit-identical), without the general case's code. */
+PRIM_INLINE fm_vec3_t closest_on_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q)
+{
+    const float eps = 1e-20f;
+    fm_vec3_t d1 = v3_sub(p1, p0), w = v3_sub(p0, q);
+    float a = v3_dot(d1, d1);
+    float s = a <= eps ? 0.0f : f_clamp01(-v3_dot(d1, w) / a);
+    return v3_madd(p0, d1, s);
+}
+
 float coll_prim_closest_seg_seg(fm_vec3_t p0, fm_vec3_t p1, fm_vec3_t q0, fm_vec3_t q1,
                                 float *u_out, float *v_out, fm_vec3_t *cp, fm_vec3_t *cq)
 {
@@ -416,7 +427,9 @@ typedef struct {
     tri_t tri;
     fm_vec3_t a, b, s, d;
     float ss;
-    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle */
+    float mag;      /* coordinate magnitude (L1) of the segment, the motion and the triangle; < 0 until
+                     * an axis test first needs it (sweep_mag) */
+    float t_max;    /* the sweep's t_max (for sweep_mag) */
     float h[2], dn; /* has_face: heights of a and b over the face, and d along its normal */
     bool sphere;    /* inner segment (nearly) zero: only endpoint a is used */
 } sweep_ctx_t;
@@ -481,7 +494,7 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
     /* Nearly parallel lines leave mu (and so tt) poorly conditioned: never accept a time
      * at which the two segments are still clearly apart (the cylinders cover the rest). */
     fm_vec3_t at = v3_madd(c->a, c->d, tt);
-    float sd2 = coll_prim_closest_seg_seg(at, v3_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
+    float sd2 = closest_seg_seg_in(at, v3_add(at, c->s), e0, c->tri.v[(i + 1) % 3], NULL, NULL, NULL, NULL);
     float rr = r + 1e-5f * (1.0f + r);
     if (sd2 > rr * rr) return;
     take(best, tt, v3_scale(mu, sig), v3_madd(e0, e, v));
@@ -495,13 +508,31 @@ static void edge_edge_test(const sweep_ctx_t *c, int i, float r, float t_max, fe
  * of convex sets is at least their separation along any axis, so a true answer means no
  * contact within rc over the whole motion. Squared compare: no sqrt, no division.
  */
-static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
-static bool sweep_separated(const sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
+PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack);
+static bool sweep_separated(sweep_ctx_t *c, const fm_vec3_t *u, float rc, float t_max)
 {
     return sweep_separated_k(c, u, rc, t_max, 1e-5f);
 }
 
-static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
+
+/* The coordinates' magnitude, made when an axis test first separates (most candidates
+ * that reach the feature sweep never get that far: their setup skips it). Summed in this
+ * order: the culls' allowances, hence the results, depend on its rounding. */
+static float sweep_mag(sweep_ctx_t *c)
+{
+    if (c->mag >= 0.0f) return c->mag;
+    float m = v3_abs_sum(c->a);
+    m += v3_abs_sum(c->b);
+    m += v3_abs_sum(c->d) * c->t_max;
+    m += v3_abs_sum(c->tri.v[0]);
+    m += v3_abs_sum(c->tri.v[1]);
+    m += v3_abs_sum(c->tri.v[2]);
+    c->mag = m;
+    return m;
+}
+
+PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
     const fm_vec3_t u = *pu;
     float uu = v3_len2(u);
@@ -512,7 +543,7 @@ static bool sweep_separated_k(const sweep_ctx_t *c, const fm_vec3_t *pu, float r
     float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
     if (!(sep > 0.0f)) return false;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
-    sep -= slack * u1 * c->mag;
+    sep -= slack * u1 * sweep_mag(c);
     float rr = rc * 1.0001f + 1e-7f;
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
@@ -557,8 +588,6 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
-static inline float v3_abs_sum(fm_vec3_t v) { return fabsf(v.x) + fabsf(v.y) + fabsf(v.z); }
-
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
@@ -601,13 +630,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 
     const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
     float rin = r - tol;
-    /* (summed in this order: the culls' allowances, hence the results, depend on its rounding) */
-    c.mag = v3_abs_sum(c.a);
-    c.mag += v3_abs_sum(c.b);
-    c.mag += v3_abs_sum(c.d) * t_max;
-    c.mag += v3_abs_sum(c.tri.v[0]);
-    c.mag += v3_abs_sum(c.tri.v[1]);
-    c.mag += v3_abs_sum(c.tri.v[2]);
+    c.mag = -1.0f; /* (sweep_mag) */
+    c.t_max = t_max;
     /* Separating-axis culls: the swept capsule stays clear of the triangle along an axis
      * (most candidates near stairs and corners that the plane cull keeps: the capsule
      * beside a riser or a tread's edge). With confirm, a contact that never goes deeper
@@ -660,13 +684,40 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
     }
 
     feat_hit_t best;
+    /* the closest pair at the end of the motion (the confirmation's), when the end cull
+     * below made it */
+    bool end_known = false;
+    float d2e = 0.0f;
+    fm_vec3_t es = ps, et = ps;
     if (!far && d2 <= r * r) {
         best.hit = true;
         best.t = 0.0f;
         best.n = v3_unit_or(v3_sub(ps, pt), c.tri.has_face ? c.tri.n : v3(0.0f, 1.0f, 0.0f));
         best.p = pt;
-    } else if (!sweep_features(&c, r, t_max, false, &best)) {
-        return false;
+    } else {
+        /* The end cull: with a hit held at t_max (before), a candidate that reaches the
+         * capsule only at t_max (the held contact's neighbour across their shared edge: a
+         * nosing, a crack's edge) is no better, but the start's axes above cannot tell (its
+         * contact direction is the end's) and the feature sweep finds its contact at t_max, or
+         * a rounding earlier, where the confirmation then runs the features again to find it
+         * never goes deeper (3-6k console instructions each). The end's closest pair is the
+         * confirmation's own last axis: the swept capsule clear of rin along it, with the
+         * confirm culls' allowance (1e-6), never goes deeper than the touch tolerance, which
+         * is no hit however the features would find it. Only where that allowance leaves the
+         * tolerance room to clear it (small coordinates: the magnitude test below; a crack in a
+         * 100 m floor does not), and only once a hit is held (a first contact pays the end's
+         * pair for nothing: measured, it cost more than it saved). */
+        if (confirm && before && 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f)) {
+            fm_vec3_t off = v3_scale(c.d, t_max);
+            fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+            d2e = seg_tri_closest(&c.tri, &ea, &eb, &es, &et);
+            end_known = true;
+            if (!(d2e < rin * rin)) {
+                fm_vec3_t sep2 = v3_sub(es, et);
+                if (sweep_separated_k(&c, &sep2, rin, t_max, 1e-6f)) return false;
+            }
+        }
+        if (!sweep_features(&c, r, t_max, false, &best)) return false;
     }
     if (before && best.t > 0.0f && !(best.t < t_max)) return false;
 
@@ -690,8 +741,8 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         /* (a sphere's centre is a point: its closest pair is exact already) */
         bool interior = c.sphere || (edge >= 0 && eu > 1e-4f && eu < 1.0f - 1e-4f && ev > 1e-4f && ev < 1.0f - 1e-4f);
         for (int it = 0; it < 2 && !interior && d2h > 0.25f * r * r; it++) {
-            fm_vec3_t qs, qt, dummy;
-            coll_prim_closest_seg_seg(ha, hb, pt, pt, NULL, NULL, &qs, &dummy);
+            fm_vec3_t qt, dummy;
+            fm_vec3_t qs = closest_on_seg(ha, hb, pt);
             float q2 = seg_tri_closest(&c.tri, &qs, &qs, &dummy, &qt);
             if (!(q2 <= d2h)) break;
             d2h = q2; ps = qs; pt = qt;
@@ -708,13 +759,16 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
      * the cheap sufficient test from the contact, then the exact one. */
     if (confirm && !prim_goes_deeper(hd, hit->normal, c.d, rin, t_max - best.t)) {
         if (sweep_separated_k(&c, &hit->normal, rin, t_max, 1e-6f)) return false;
-        fm_vec3_t off = v3_scale(c.d, t_max);
-        fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
-        float d2e = seg_tri_closest(&c.tri, &ea, &eb, &ps, &pt);
+        if (!end_known) {
+            fm_vec3_t off = v3_scale(c.d, t_max);
+            fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
+            d2e = seg_tri_closest(&c.tri, &ea, &eb, &es, &et);
+        }
         if (!(d2e < rin * rin)) {
-            /* clear of rin along the closest pair's direction at the end: never deeper */
-            fm_vec3_t sep2 = v3_sub(ps, pt);
-            if (sweep_separated(&c, &sep2, rin, t_max)) return false;
+            /* clear of rin along the closest pair's direction at the end: never deeper
+             * (known not when that test ran before the features) */
+            fm_vec3_t sep2 = v3_sub(es, et);
+            if (!end_known && sweep_separated(&c, &sep2, rin, t_max)) return false;
             feat_hit_t conf;
             if (!sweep_features(&c, rin, t_max, true, &conf)) return false;
         }
