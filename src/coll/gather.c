@@ -69,28 +69,51 @@ __attribute__((noinline)) static int gather_shrink(coll_gather_t *g, fm_vec3_t l
     return r;
 }
 
+/* One axis of a kept triangle's box (first vertex w, the others w + a1, w + a2) into
+ * *lo..*hi; true when it misses the gathered box glo..ghi on that axis. */
+CAND_INLINE bool tri_axis_box(float w, float a1, float a2, float glo, float ghi, float *lo, float *hi)
+{
+    float v1 = w + a1, v2 = w + a2, v0 = w + 0.0f;
+    float l = f_min(v0, f_min(v1, v2)), h = f_max(v0, f_max(v1, v2));
+    *lo = l;
+    *hi = h;
+    return h < glo || l > ghi;
+}
+
 /* The walk of one instance, with the mesh layout lay a constant at each call below (the
- * per-entry fetch then carries no flag tests); false when the buffer overflowed. */
+ * per-entry fetch then carries no flag tests) and, for the common instance (no rotation,
+ * unit scale), simple a constant true (the kept triangle's relative form in straight
+ * code); false when the buffer overflowed. The walk's box is kept in locals (blo, bhi:
+ * reloaded only after gather_shrink, the one place that changes it), so the per-entry test
+ * reads it from registers, not through the walk after each kept triangle's stores. */
 CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_instance_t *inst, const xf3_t *x,
-                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay)
+                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay, const bool simple)
 {
     const coll_scene_t *scene = g->scene;
+    fm_vec3_t blo = *w->llo, bhi = *w->lhi;
     while (grid_walk_next_cell(w))
-        for (uint32_t k = w->k; k < w->kend; k++) {
+        for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
             uint32_t t;
-            fm_vec3_t shape[3], w0, v[3], lo, hi;
-            if (!grid_walk_take_lay(w, lay, k, &t, v)) continue;
-            tri_rel_of(v, x, o_l, &w0, shape);
+            fm_vec3_t w0, e1, e2, v[3], lo, hi;
+            if (!grid_walk_take_box(w, lay, k, &t, v, &blo, &bhi)) continue;
+            if (simple) { /* tri_rel_of's expressions for an identity transform */
+                fm_vec3_sub(&w0, &v[0], o_l);
+                fm_vec3_sub(&e1, &v[1], &v[0]);
+                fm_vec3_sub(&e2, &v[2], &v[0]);
+            } else {
+                fm_vec3_t shape[3];
+                tri_rel_of(v, x, o_l, &w0, shape);
+                e1 = shape[1];
+                e2 = shape[2];
+            }
             /* The triangle's box, then the box test on it: all three vertices below the
              * gathered box on an axis is their largest below it (tri_box_reject's test, for
-             * finite coordinates), and the box is what the queries keep anyway. */
-            bool out = false;
-            for (int a = 0; a < 3; a++) {
-                float v1 = w0.v[a] + shape[1].v[a], v2 = w0.v[a] + shape[2].v[a], v0 = w0.v[a] + shape[0].v[a];
-                lo.v[a] = f_min(v0, f_min(v1, v2));
-                hi.v[a] = f_max(v0, f_max(v1, v2));
-                out |= hi.v[a] < g->lo.v[a] || lo.v[a] > g->hi.v[a];
-            }
+             * finite coordinates), and the box is what the queries keep anyway. The first
+             * vertex is w0 + 0 (the shape's first vertex; + 0.0f turns a -0 into +0, as
+             * the sum always did). */
+            bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
+                       tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
+                       tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
             if (out) continue;
             if (g->ntris >= COLL_GATHER_MAX) {
                 /* too many: a smaller box around the same centre (queries outside it go to
@@ -102,12 +125,14 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                     seen_clear(seen);
                     return false;
                 }
+                blo = *w->llo;
+                bhi = *w->lhi;
                 if (r == GATHER_SKIP) continue;
             }
             coll_gather_tri_t *gt = &g->tris[g->ntris++];
             gt->w0 = w0;
-            gt->e1 = shape[1];
-            gt->e2 = shape[2];
+            gt->e1 = e1;
+            gt->e2 = e2;
             gt->lo = lo;
             gt->hi = hi;
             gt->inst = inst;
@@ -149,16 +174,15 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         grid_walk_t w;
         if (!grid_walk_box(&w, m, &llo, &lhi, &seen)) continue;
         /* the baker's small-mesh layouts (16-bit indices and refs; float or quantized
-         * vertices) get their own loops, any other the generic one */
+         * vertices) under an identity transform get their own loops, any other the
+         * generic one */
         const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
         bool ok;
-        switch (grid_walk_layout(&w)) {
-        case COLL_MESHF_IDX16 | COLL_MESHF_REF16: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16); break;
-        case COLL_MESHF_QUANT | COLL_MESHF_IDX16 | COLL_MESHF_REF16:
-            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16);
-            break;
-        default: ok = gather_walk(g, &w, inst, &x, &o_l, &seen, grid_walk_layout(&w)); break;
-        }
+        uint32_t lay = grid_walk_layout(&w);
+        if (lay == I16 && x.simple) ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16, true);
+        else if (lay == (COLL_MESHF_QUANT | I16) && x.simple)
+            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16, true);
+        else ok = gather_walk(g, &w, inst, &x, &o_l, &seen, lay, x.simple);
         if (!ok) return;
         grid_walk_end(&w, scene);
     }

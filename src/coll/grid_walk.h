@@ -546,10 +546,22 @@ static inline bool grid_walk_next_cell(grid_walk_t *w)
  * its box meets the walk's box and the walk has not given it before. A full table: a
  * box walk looks the triangle up in the cells visited earlier (exact); a lazy walk (a ray)
  * gives it again (harmless, its test repeats). */
+CAND_INLINE bool grid_walk_take_box(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3],
+                                    const fm_vec3_t *llo, const fm_vec3_t *lhi);
+
 CAND_INLINE bool grid_walk_take_lay(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3])
 {
+    return grid_walk_take_box(w, lay, k, t, v, w->llo, w->lhi);
+}
+
+/* grid_walk_take_lay with the walk's box given (llo..lhi: *w->llo..*w->lhi, or a copy of it
+ * the caller keeps in locals, so that the per-entry test does not reload it through the
+ * walk's pointers after every store the compiler cannot tell apart from them). */
+CAND_INLINE bool grid_walk_take_box(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3],
+                                    const fm_vec3_t *llo, const fm_vec3_t *lhi)
+{
     *t = view_ref_lay(&w->mv, lay, k);
-    if (!cand_tri_lay(&w->mv, lay, *t, w->llo, w->lhi, v)) return false;
+    if (!cand_tri_lay(&w->mv, lay, *t, llo, lhi, v)) return false;
     if (!w->dedup) return true;
     int sc = seen_check(w->seen, *t);
     if (sc == SEEN_BEFORE) return false;
