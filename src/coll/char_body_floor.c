@@ -533,17 +533,6 @@ static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
 }
 
 /**
- * Snaps the body down by dist along -up, swept. Where the capsule's rounded bottom catches
- * on an edge on the way (the nosing of the stair behind, walking down short treads), it
- * slides down off it along the contact plane, as a resting ball would, instead of hanging
- * on it above the floor: the way it was going (b->velocity, this step's motion), and never
- * against the input across up. Sliding off is motion (the velocity says so), so it is no
- * faster than the speed limit with the step's motion so far (b->velocity): a step of 1 ns
- * does not slide 9 cm off a nosing (soak s2 l381), it stays on it until the next step.
- * Nor does it slide below the floor it snaps to (normal n): the slide stops where the foot
- * meets that floor's plane (slide_off_above).
- */
-/**
  * How far along `left` a slide off an edge may go before the foot meets the plane of the
  * floor the snap is for (normal n, through the foot's target `dist` below it along up):
  * sliding off across up over a sloping floor, the rest of the snap's descent went below
@@ -557,6 +546,17 @@ static inline float slide_off_above(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t 
     return above > 0.0f ? above / into : 0.0f;
 }
 
+/**
+ * Snaps the body down by dist along -up, swept. Where the capsule's rounded bottom catches
+ * on an edge on the way (the nosing of the stair behind, walking down short treads), it
+ * slides down off it along the contact plane, as a resting ball would, instead of hanging
+ * on it above the floor: the way it was going (b->velocity, this step's motion), and never
+ * against the input across up. Sliding off is motion (the velocity says so), so it is no
+ * faster than the speed limit with the step's motion so far (b->velocity): a step of 1 ns
+ * does not slide 9 cm off a nosing (soak s2 l381), it stays on it until the next step.
+ * Nor does it slide below the floor it snaps to (normal n): the slide stops where the foot
+ * meets that floor's plane (slide_off_above).
+ */
 static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n)
 {
     const char_body_t *b = c->body;
