@@ -843,15 +843,17 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     }
                     past += under.distance + c->skin; /* another steep face (a slab's underside) */
                 }
-                /* Still on the steep face above the foot, the foot itself a hair inside a
-                 * walkable face (within CB_MARGIN, 1 cm, along up): under a tilted up the
-                 * foot slid down a steep floor into a crossing of cracks between tiles,
-                 * 2 mm into a tile's side that is walkable for this up (43 degrees off it),
-                 * and the loop above, meeting the sides of three other tiles on its way
-                 * down, never reached it (soak s4 l20: the foot 3.1 mm below it). The body
-                 * stands on that face, lifted onto it. */
+                /* Still on the steep face above the foot (the look past it found no floor):
+                 * the foot itself under a walkable face, the first along up from the foot
+                 * below the steep face (floor_over_foot), stands on it, lifted. Under a
+                 * tilted up the foot slid down a steep floor into a crossing of cracks
+                 * between tiles, 2 mm into a tile's side that is walkable for this up (43
+                 * degrees off it); the look past the face met the sides of three other
+                 * tiles on its way down and never reached it (soak s4 l20: 3.1 mm). On a
+                 * triangle soup half buried in the room floor the body stood on a steep
+                 * soup face, its foot 34 mm under the floor (s5 l134). */
                 if (s.found && s.steep && gap < -step_eps)
-                    floor_over_foot(c, *pos, fminf(-gap, cb_len_tol(c, CB_MARGIN)), &s);
+                    floor_over_foot(c, *pos, -gap, &s);
             }
         }
         /* held by the crack rule alone, over a floor the foot ray found out of reach below */
