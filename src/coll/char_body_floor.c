@@ -64,7 +64,7 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
     return v3_finite(v) ? v : v3(0.0f, 0.0f, 0.0f);
 }
 
-bool cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit)
+bool coll_cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit)
 {
     bool found;
     if (cb_down_known(c, pos, len, &found, hit)) return found;
@@ -79,7 +79,7 @@ bool cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t
     return found;
 }
 
-void cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by)
+void coll_cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by)
 {
     cb_down_t *d = &c->mem->down;
     d->pos = pos;

@@ -57,9 +57,9 @@ enum {
 #define CB_MAX_CONTACTS 4
 
 
-/** The stair step's down sweep, remembered (cb_sweep_down): the sweep capsule at owner
+/** The stair step's down sweep, remembered (coll_cb_sweep_down): the sweep capsule at owner
  *  position `pos` going down along -up by `len`, `dist` along it to the first contact `h`
- *  (when `hit`). Moved along up since (cb_down_moved: unswept, the way it came), pos, len
+ *  (when `hit`). Moved along up since (coll_cb_down_moved: unswept, the way it came), pos, len
  *  and dist say so. Moving along its axis from a clear start the capsule's first contact
  *  is its bottom ball's: a later down sweep of either from the same place reaching no
  *  farther is answered from it (cb_down_known). */
@@ -202,10 +202,10 @@ static inline fm_vec3_t cb_sweep_center(const cb_ctx_t *c, fm_vec3_t pos)
 
 /** The sweep capsule's down sweep at owner position pos by len along -up (known, or swept),
  *  remembered in the step's memory (cb_down_t). */
-bool cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit);
+bool coll_cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_hit_t *hit);
 /** The remembered down sweep's place moved by `by` along up (> 0: up) to pos, unswept, along
  *  the way it came: its first contact is that much farther (or nearer). */
-void cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by);
+void coll_cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by);
 
 /** Moves by disp with up to max_slides sweep-and-slide iterations, clipping *vel (may be NULL)
  *  by the same planes. grounded: walls only (hits above the step zone act as vertical). */

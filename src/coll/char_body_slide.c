@@ -214,11 +214,11 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     if (!(f * hl > cb_len_tol(c, 1e-4f))) return false;
     /* down by the lift, keeping the contact that stops it */
     coll_sweep_hit_t dh;
-    bool hung = cb_sweep_down(c, p, lift, &dh) && isfinite(dh.t);
+    bool hung = coll_cb_sweep_down(c, p, lift, &dh) && isfinite(dh.t);
     float travel = hung ? lift * (dh.t > 0.0f ? dh.t : 0.0f) - c->skin : lift;
     if (travel > 0.0f) {
         p = v3_madd(p, c->up, -travel);
-        cb_down_moved(c, p, -travel); /* the probe's ball drops from here: what it meets is known */
+        coll_cb_down_moved(c, p, -travel); /* the probe's ball drops from here: what it meets is known */
     }
     fm_vec3_t foot = cb_foot(c, p);
     float rise = v3_dot(v3_sub(foot, foot0), c->up) - base;
@@ -244,7 +244,7 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
         fm_vec3_t d = v3_scale(c->up, floor_h - rise);
         if (travel > 0.0f && floor_h - rise <= travel) {
             p = v3_add(p, d);
-            cb_down_moved(c, p, floor_h - rise);
+            coll_cb_down_moved(c, p, floor_h - rise);
         }
         else if (coll_cb_move_swept(c, &p, d) < 1.0f) return false;
     }
