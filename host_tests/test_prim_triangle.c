@@ -17,9 +17,13 @@
 #ifdef __mips__
 #define N_RANDOM_SWEEPS 1500
 #define N_RANDOM_RAYS 4000
+#define N_EARLY_REJECT_RAYS 20000
+#define N_BOUNDARY_OVERLAPS 4000
 #else
 #define N_RANDOM_SWEEPS 20000
 #define N_RANDOM_RAYS 100000
+#define N_EARLY_REJECT_RAYS 200000
+#define N_BOUNDARY_OVERLAPS 40000
 #endif
 
 void setUp(void) {}
@@ -924,10 +928,23 @@ static bool ray_sphere_full(fm_vec3_t o, fm_vec3_t d, fm_vec3_t c, float r, floa
     return *s_out <= s_max;
 }
 
+/* The next float after x towards `to` (nextafterf; the console's test ROM has no libm). */
+static float float_toward(float x, float to)
+{
+    if (x == to || x != x) return x;
+    uint32_t u;
+    memcpy(&u, &x, sizeof u);
+    if (x == 0.0f) u = to < 0.0f ? 0x80000001u : 1u;
+    else if ((x < to) == (x > 0.0f)) u++;
+    else u--;
+    memcpy(&x, &u, sizeof x);
+    return x;
+}
+
 static void test_ray_sphere_early_reject_is_exact(void)
 {
     int n_hits = 0, n_edge_miss = 0;
-    for (int i = 0; i < 200000; i++) {
+    for (int i = 0; i < N_EARLY_REJECT_RAYS; i++) {
         float scale = (i & 1) ? 1.0f : 1000.0f;
         fm_vec3_t c = V(rnd_range(-scale, scale), rnd_range(-scale, scale), rnd_range(-scale, scale));
         float r = rnd_range(0.01f, 2.0f);
@@ -938,7 +955,7 @@ static void test_ray_sphere_early_reject_is_exact(void)
         fm_vec3_t d = V((aim.x - o.x) * len, (aim.y - o.y) * len, (aim.z - o.z) * len);
         float s_ref;
         if (!ray_sphere_full(o, d, c, r, 3.0e38f, &s_ref) || s_ref == 0.0f) continue;
-        float cuts[5] = { s_ref, nextafterf(s_ref, 0.0f), nextafterf(s_ref, 1e30f), s_ref * 0.999f, s_ref * 0.5f };
+        float cuts[5] = { s_ref, float_toward(s_ref, 0.0f), float_toward(s_ref, 1e30f), s_ref * 0.999f, s_ref * 0.5f };
         for (int k = 0; k < 5; k++) {
             float sr = 0.0f;
             bool want = ray_sphere_full(o, d, c, r, cuts[k], &sr);
@@ -955,7 +972,7 @@ static void test_ray_sphere_early_reject_is_exact(void)
             else n_edge_miss++;
         }
     }
-    TEST_ASSERT_TRUE(n_hits > 10000 && n_edge_miss > 10000);
+    TEST_ASSERT_TRUE(n_hits > N_EARLY_REJECT_RAYS / 20 && n_edge_miss > N_EARLY_REJECT_RAYS / 20);
 }
 
 /* The start beyond the face's offset plane skips the start's closest pair and culls on the
@@ -1054,7 +1071,7 @@ static void test_far_start_edge_axis_cull_cases(void)
 static void test_overlap_boundary_axis_cull(void)
 {
     int n = 0, n_over = 0, n_amb = 0;
-    for (int i = 0; i < 40000; i++) {
+    for (int i = 0; i < N_BOUNDARY_OVERLAPS; i++) {
         prim_ref_v3 rt[3];
         random_triangle(rt, pow(10, rnd_range(-1, 1)));
         if (i % 50 == 0) rt[2] = prim_ref_add(rt[0], prim_ref_scale(prim_ref_sub(rt[1], rt[0]), rnd())); /* collinear */
