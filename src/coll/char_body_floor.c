@@ -781,7 +781,9 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     reach = gap;
                 else if (gap > reach && !one_way_deep && resting_beside(c, *pos, gap))
                     reach = gap;
-                else if (gap > reach && gap <= 2.0f * contact_eps && !one_way_deep && held_over_floor(c, *pos, gap))
+                else if (gap > reach && !one_way_deep &&
+                         (gap <= 2.0f * contact_eps || gap <= c->radius * (1.0f - nu) / nu + contact_eps) &&
+                         held_over_floor(c, *pos, gap))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
