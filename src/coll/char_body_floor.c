@@ -653,7 +653,10 @@ static bool resting_beside(const cb_ctx_t *c, fm_vec3_t pos, float gap)
  * lift back along up into the other, so the body hung at rest in the air 2.6 mm over the
  * floor for ever (soak s3 l110). It is held there, standing: the snap slides it down as far
  * as it goes. (Allowed as far as the snap distance it also grounded bodies whose foot was
- * below a raised floor: 2 new footing failures at 1M frames, seed 1.)
+ * below a raised floor: 2 new footing failures at 1M frames, seed 1.) The caller allows it
+ * also as far as the full capsule's bottom ball reaches the floor's plane, r (1 - cos) /
+ * cos: the body leans on a wall under a tilted up, that ball on a floor 30 degrees off up,
+ * its foot 15 mm over it (soak s4 l138).
  */
 static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 {
