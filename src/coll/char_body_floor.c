@@ -764,7 +764,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
          * resting on such a slope never sees it (soak s1 l7: 0.37 m, snap 0.29). */
         float depth = c->snap;
         if (c->radius > (c->radius + c->step + c->snap - contact_eps) * b->cos_floor_max_angle)
-            depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
+            depth = (c->radius + contact_eps) / b->cos_floor_max_angle - (c->radius + c->step);
         bool found = cb_foot_ray(c, origin, above + depth, &hit, false) &&
                      v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
@@ -777,9 +777,12 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 /* A walkable slope steeper than the capsule's bottom allows (r / cos > r +
                  * step: the seed's "radius and stepping height must allow the angle") holds
                  * the sweep capsule's bottom ball r / cos - (r + step) above the foot's
-                 * point on it: landing there is standing on it, as walking onto it is. */
+                 * point on it: landing there is standing on it, as walking onto it is.
+                 * Touching it is within contact_eps of its plane, contact_eps / cos along
+                 * up (contact_eps along up missed a body resting a skin off a slope 62
+                 * degrees off up, wedged against a steep wall, for ever: soak s4 l385). */
                 float rest = c->radius / nu - (c->radius + c->step);
-                if (gap > reach && rest > reach && gap <= rest + contact_eps && !one_way_deep &&
+                if (gap > reach && rest > reach && gap <= rest + contact_eps / nu && !one_way_deep &&
                     resting_on(c, *pos, hit.normal))
                     reach = gap;
                 else if (gap > reach && !one_way_deep && resting_beside(c, *pos, gap))
