@@ -894,7 +894,27 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             /* sliding off a nosing on the way down moved the body across up too: that is
              * motion, and the velocity says so */
             fm_vec3_t across = v3_reject(v3_sub(*pos, before), up);
-            if (v3_dot(across, across) > 0.0f) b->velocity = v3_madd(b->velocity, across, 1.0f / c->dt);
+            if (v3_dot(across, across) > 0.0f) {
+                b->velocity = v3_madd(b->velocity, across, 1.0f / c->dt);
+                /* The snap slid off an edge across up: the foot may now be under another
+                 * floor, one the step zone hid from the sweep (a tile lower than the step
+                 * at a ramp's foot: soak s4 l229, the foot 202 mm inside it). The foot ray
+                 * again, down to the foot: a walkable floor over the foot lifts it there. */
+                coll_ray_hit_t h2;
+                fm_vec3_t o2 = v3_madd(cb_foot(c, *pos), up, above);
+                if (cb_ray(c, o2, v3_scale(up, -1.0f), above, &h2) && v3_finite(h2.normal) &&
+                    v3_finite(h2.point) && isfinite(h2.distance) &&
+                    v3_dot(h2.normal, up) >= b->cos_floor_max_angle) {
+                    float g2 = h2.distance - above;
+                    fm_vec3_t slid_to = *pos;
+                    if (g2 < -step_eps && stand_on(c, pos, g2, h2.normal)) {
+                        if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, slid_to), up);
+                        s = (support_t){true, false, g2, h2.normal, h2.point, h2.id, h2.instance};
+                    } else {
+                        *pos = slid_to;
+                    }
+                }
+            }
         }
     }
 
