@@ -489,6 +489,10 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
          * from where it was (landing in front of a kerb it has no room to climb, under an
          * overhang, instead of hanging in the air at the start of every step). */
         float fall = v3_dot(v3_sub(slid, start), up);
+        /* and where the slide went up (the input pushed it up a slope or a face into a
+         * place it has no room to stand), the step's own fall along up: else it hung at
+         * rest 6 mm over the floor for ever (soak s6 l426) */
+        if (fall > v_up * dt) fall = v_up * dt;
         bool kept = false;
         if (!walking && !jumping && fall < -c.tiny) {
             pos = start;

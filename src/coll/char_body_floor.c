@@ -653,7 +653,10 @@ static bool resting_beside(const cb_ctx_t *c, fm_vec3_t pos, float gap)
  * lift back along up into the other, so the body hung at rest in the air 2.6 mm over the
  * floor for ever (soak s3 l110). It is held there, standing: the snap slides it down as far
  * as it goes. (Allowed as far as the snap distance it also grounded bodies whose foot was
- * below a raised floor: 2 new footing failures at 1M frames, seed 1.)
+ * below a raised floor: 2 new footing failures at 1M frames, seed 1.) The caller allows it
+ * also as far as the full capsule's bottom ball reaches the floor's plane, r (1 - cos) /
+ * cos: the body leans on a wall under a tilted up, that ball on a floor 30 degrees off up,
+ * its foot 15 mm over it (soak s4 l138).
  */
 static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 {
@@ -761,7 +764,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
          * resting on such a slope never sees it (soak s1 l7: 0.37 m, snap 0.29). */
         float depth = c->snap;
         if (c->radius > (c->radius + c->step + c->snap - contact_eps) * b->cos_floor_max_angle)
-            depth = c->radius / b->cos_floor_max_angle - (c->radius + c->step) + contact_eps;
+            depth = (c->radius + contact_eps) / b->cos_floor_max_angle - (c->radius + c->step);
         bool found = cb_foot_ray(c, origin, above + depth, &hit, false) &&
                      v3_finite(hit.normal) && v3_finite(hit.point);
         if (found) {
@@ -774,14 +777,19 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 /* A walkable slope steeper than the capsule's bottom allows (r / cos > r +
                  * step: the seed's "radius and stepping height must allow the angle") holds
                  * the sweep capsule's bottom ball r / cos - (r + step) above the foot's
-                 * point on it: landing there is standing on it, as walking onto it is. */
+                 * point on it: landing there is standing on it, as walking onto it is.
+                 * Touching it is within contact_eps of its plane, contact_eps / cos along
+                 * up (contact_eps along up missed a body resting a skin off a slope 62
+                 * degrees off up, wedged against a steep wall, for ever: soak s4 l385). */
                 float rest = c->radius / nu - (c->radius + c->step);
-                if (gap > reach && rest > reach && gap <= rest + contact_eps && !one_way_deep &&
+                if (gap > reach && rest > reach && gap <= rest + contact_eps / nu && !one_way_deep &&
                     resting_on(c, *pos, hit.normal))
                     reach = gap;
                 else if (gap > reach && !one_way_deep && resting_beside(c, *pos, gap))
                     reach = gap;
-                else if (gap > reach && gap <= 2.0f * contact_eps && !one_way_deep && held_over_floor(c, *pos, gap))
+                else if (gap > reach && !one_way_deep &&
+                         (gap <= 2.0f * contact_eps || gap <= c->radius * (1.0f - nu) / nu + contact_eps) &&
+                         held_over_floor(c, *pos, gap))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
@@ -886,7 +894,27 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             /* sliding off a nosing on the way down moved the body across up too: that is
              * motion, and the velocity says so */
             fm_vec3_t across = v3_reject(v3_sub(*pos, before), up);
-            if (v3_dot(across, across) > 0.0f) b->velocity = v3_madd(b->velocity, across, 1.0f / c->dt);
+            if (v3_dot(across, across) > 0.0f) {
+                b->velocity = v3_madd(b->velocity, across, 1.0f / c->dt);
+                /* The snap slid off an edge across up: the foot may now be under another
+                 * floor, one the step zone hid from the sweep (a tile lower than the step
+                 * at a ramp's foot: soak s4 l229, the foot 202 mm inside it). The foot ray
+                 * again, down to the foot: a walkable floor over the foot lifts it there. */
+                coll_ray_hit_t h2;
+                fm_vec3_t o2 = v3_madd(cb_foot(c, *pos), up, above);
+                if (cb_ray(c, o2, v3_scale(up, -1.0f), above, &h2) && v3_finite(h2.normal) &&
+                    v3_finite(h2.point) && isfinite(h2.distance) &&
+                    v3_dot(h2.normal, up) >= b->cos_floor_max_angle) {
+                    float g2 = h2.distance - above;
+                    fm_vec3_t slid_to = *pos;
+                    if (g2 < -step_eps && stand_on(c, pos, g2, h2.normal)) {
+                        if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, slid_to), up);
+                        s = (support_t){true, false, g2, h2.normal, h2.point, h2.id, h2.instance};
+                    } else {
+                        *pos = slid_to;
+                    }
+                }
+            }
         }
     }
 
