@@ -449,7 +449,22 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     } else {
         met = ball_drop(c, pos, b0, s, edge);
     }
-    if (!met) return true;
+    if (!met) {
+        if (!(nu < 1.0f)) return true; /* level: the ball touches the plane at the foot ray's point */
+        /* Tilted against up, the ball touches the plane off the foot ray's point: it reaches
+         * the floor only where that touch point is on the floor (or a face in its plane).
+         * A tile's side, walkable under a tilted up, found by the foot ray in a 4 mm crack
+         * between tiles: its plane runs on under the tiles beside the crack, which the ball
+         * never reaches (soak s4 l142: 2.4 mm). Otherwise the full rule decides. */
+        coll_ray_hit_t t;
+        fm_vec3_t b1 = v3_madd(b0, up, -s);
+        float want = r + 2.0f * c->skin * nu;
+        if (cb_ray(c, b1, v3_scale(floor->normal, -1.0f), want + c->contact_eps, &t) && isfinite(t.distance) &&
+            v3_finite(t.normal) && v3_dot(t.normal, floor->normal) > 0.999f &&
+            fabsf(t.distance - want) <= c->contact_eps)
+            return true;
+        return false;
+    }
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
     return false;
