@@ -206,6 +206,9 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
     const fm_vec3_t up = c->up;
     const float reach = c->radius;
     const coll_gather_t *g = c->gather;
+    /* under: a floor the foot is over; a steep face the foot ray found (wall_under_crack's)
+     * is none, and its plane holds the edges of the piece it is the side of (soak s5 l30) */
+    if (under && !(v3_dot(under->normal, up) >= c->body->cos_floor_max_angle)) under = NULL;
     if (g && g->valid) {
         const fm_vec3_t o = v3_sub(bc, g->origin);
         bool beyond = false;
@@ -236,8 +239,13 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
     else n = coll_capsule_overlaps(c->scene, bc, up, reach, 0.0f, c->body->settings.read_mask,
                                    c->body->settings.coll_types, ct, CB_HOLE_CONTACTS);
     if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
-    fm_vec3_t dir[CB_HOLE_CONTACTS];
+    fm_vec3_t dir[CB_HOLE_CONTACTS + 1];
     uint32_t m = 0;
+    /* the contact the ball rests on (ball_held's first): lowered half a radius below it,
+     * the ball meets a taller piece's edge it first touched on that piece's side, its
+     * normal no longer under the ball (soak s5 l30: a hole between pieces 0.17 and 0.50 m
+     * high under a tilted up, that edge the only contact on its side) */
+    dir[m++] = side;
     for (uint32_t i = 0; i < n; i++) {
         if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f)) continue; /* not under the ball */
         /* the plane the foot is over is no side of a hole (the next tread down, and its
