@@ -393,7 +393,10 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * stands on the floor, it is not lifted into the corner) */
         const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r &&
                             !steep_face(c, &h1) && !steep_face(c, &h2);
-        if (over_floor && -contact > floor_gap - c->contact_eps) return false;
+        /* (at the floor: within the step tolerance the caller's "higher than the floor"
+         * uses, not the contact tolerance: a roll across a crack onto a tile 1.4 mm over
+         * the floor the foot ray found through it holds the ball, soak s6 l211) */
+        if (over_floor && -contact > floor_gap - cb_len_tol(c, CB_STEP_EPS)) return false;
         if (over_floor && !narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) goto hole;
         if (wedge) {
             normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
