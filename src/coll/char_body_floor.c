@@ -461,7 +461,10 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
         met = ball_drop(c, pos, b0, s, edge);
     }
     if (!met) {
-        if (!(nu < 1.0f)) return true; /* level: the ball touches the plane at the foot ray's point */
+        /* level, or tilted less than 45 degrees: the ball touches the plane within a radius
+         * (r tan of the tilt) of the foot ray's point; not looked at (cost: walkable ramps
+         * under the bench's up; stairs_real +0.7 % with every tilted floor looked at) */
+        if (!(nu < 0.70710678f)) return true;
         /* Tilted against up, the ball touches the plane off the foot ray's point: it reaches
          * the floor only where that touch point is on the floor (or a face in its plane).
          * A tile's side, walkable under a tilted up, found by the foot ray in a 4 mm crack
@@ -469,6 +472,19 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
          * never reaches (soak s4 l142: 2.4 mm). Otherwise the full rule decides. */
         coll_ray_hit_t t;
         fm_vec3_t b1 = v3_madd(b0, up, -s);
+        /* first the found triangle itself (in its mesh's frame: the instance's transform is
+         * affine); a touch point beyond its edges may be on a neighbour in its plane: the ray */
+        fm_vec3_t q;
+        if (floor->instance && floor->triangle >= 0 &&
+            coll_transform_point_inverse(&floor->instance->xf, v3_madd(b1, floor->normal, -r), &q)) {
+            fm_vec3_t v[3];
+            coll_mesh_triangle(floor->instance->mesh, (uint32_t)floor->triangle, v);
+            fm_vec3_t e1 = v3_sub(v[1], v[0]), e2 = v3_sub(v[2], v[0]), tn = v3_cross(e1, e2);
+            if (v3_dot(v3_cross(e1, v3_sub(q, v[0])), tn) >= 0.0f &&
+                v3_dot(v3_cross(v3_sub(v[2], v[1]), v3_sub(q, v[1])), tn) >= 0.0f &&
+                v3_dot(v3_cross(v3_sub(v[0], v[2]), v3_sub(q, v[2])), tn) >= 0.0f)
+                return true;
+        }
         float want = r + 2.0f * c->skin * nu;
         if (cb_ray(c, b1, v3_scale(floor->normal, -1.0f), want + c->contact_eps, &t) && isfinite(t.distance) &&
             v3_finite(t.normal) && v3_dot(t.normal, floor->normal) > 0.999f &&
