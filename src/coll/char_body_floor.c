@@ -206,6 +206,9 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
     const fm_vec3_t up = c->up;
     const float reach = c->radius;
     const coll_gather_t *g = c->gather;
+    /* under: a floor the foot is over; a steep face the foot ray found (wall_under_crack's)
+     * is none, and its plane holds the edges of the piece it is the side of (soak s5 l30) */
+    if (under && !(v3_dot(under->normal, up) >= c->body->cos_floor_max_angle)) under = NULL;
     if (g && g->valid) {
         const fm_vec3_t o = v3_sub(bc, g->origin);
         bool beyond = false;
@@ -236,8 +239,13 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
     else n = coll_capsule_overlaps(c->scene, bc, up, reach, 0.0f, c->body->settings.read_mask,
                                    c->body->settings.coll_types, ct, CB_HOLE_CONTACTS);
     if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
-    fm_vec3_t dir[CB_HOLE_CONTACTS];
+    fm_vec3_t dir[CB_HOLE_CONTACTS + 1];
     uint32_t m = 0;
+    /* the contact the ball rests on (ball_held's first): lowered half a radius below it,
+     * the ball meets a taller piece's edge it first touched on that piece's side, its
+     * normal no longer under the ball (soak s5 l30: a hole between pieces 0.17 and 0.50 m
+     * high under a tilted up, that edge the only contact on its side) */
+    dir[m++] = side;
     for (uint32_t i = 0; i < n; i++) {
         if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f)) continue; /* not under the ball */
         /* the plane the foot is over is no side of a hole (the next tread down, and its
@@ -385,7 +393,10 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * stands on the floor, it is not lifted into the corner) */
         const bool narrow = wedge && v3_len(v3_reject(v3_sub(h2.point, h1.point), up)) < 2.0f * r &&
                             !steep_face(c, &h1) && !steep_face(c, &h2);
-        if (over_floor && -contact > floor_gap - c->contact_eps) return false;
+        /* (at the floor: within the step tolerance the caller's "higher than the floor"
+         * uses, not the contact tolerance: a roll across a crack onto a tile 1.4 mm over
+         * the floor the foot ray found through it holds the ball, soak s6 l211) */
+        if (over_floor && -contact > floor_gap - cb_len_tol(c, CB_STEP_EPS)) return false;
         if (over_floor && !narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) goto hole;
         if (wedge) {
             normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
@@ -449,7 +460,38 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     } else {
         met = ball_drop(c, pos, b0, s, edge);
     }
-    if (!met) return true;
+    if (!met) {
+        /* level, or tilted less than 45 degrees: the ball touches the plane within a radius
+         * (r tan of the tilt) of the foot ray's point; not looked at (cost: walkable ramps
+         * under the bench's up; stairs_real +0.7 % with every tilted floor looked at) */
+        if (!(nu < 0.70710678f)) return true;
+        /* Tilted against up, the ball touches the plane off the foot ray's point: it reaches
+         * the floor only where that touch point is on the floor (or a face in its plane).
+         * A tile's side, walkable under a tilted up, found by the foot ray in a 4 mm crack
+         * between tiles: its plane runs on under the tiles beside the crack, which the ball
+         * never reaches (soak s4 l142: 2.4 mm). Otherwise the full rule decides. */
+        coll_ray_hit_t t;
+        fm_vec3_t b1 = v3_madd(b0, up, -s);
+        /* first the found triangle itself (in its mesh's frame: the instance's transform is
+         * affine); a touch point beyond its edges may be on a neighbour in its plane: the ray */
+        fm_vec3_t q;
+        if (floor->instance && floor->triangle >= 0 &&
+            coll_transform_point_inverse(&floor->instance->xf, v3_madd(b1, floor->normal, -r), &q)) {
+            fm_vec3_t v[3];
+            coll_mesh_triangle(floor->instance->mesh, (uint32_t)floor->triangle, v);
+            fm_vec3_t e1 = v3_sub(v[1], v[0]), e2 = v3_sub(v[2], v[0]), tn = v3_cross(e1, e2);
+            if (v3_dot(v3_cross(e1, v3_sub(q, v[0])), tn) >= 0.0f &&
+                v3_dot(v3_cross(v3_sub(v[2], v[1]), v3_sub(q, v[1])), tn) >= 0.0f &&
+                v3_dot(v3_cross(v3_sub(v[0], v[2]), v3_sub(q, v[2])), tn) >= 0.0f)
+                return true;
+        }
+        float want = r + 2.0f * c->skin * nu;
+        if (cb_ray(c, b1, v3_scale(floor->normal, -1.0f), want + c->contact_eps, &t) && isfinite(t.distance) &&
+            v3_finite(t.normal) && v3_dot(t.normal, floor->normal) > 0.999f &&
+            fabsf(t.distance - want) <= c->contact_eps)
+            return true;
+        return false;
+    }
     if (!isfinite(edge->t) || !v3_finite(edge->normal) || !v3_finite(edge->point)) edge->normal = up;
     else *edge_len = s;
     return false;
