@@ -186,6 +186,13 @@ static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_swe
     return true;
 }
 
+/** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
+static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
+{
+    return v3(f_min(f_max(o.x, t->lo.x), t->hi.x), f_min(f_max(o.y, t->lo.y), t->hi.y),
+              f_min(f_max(o.z, t->lo.z), t->hi.z));
+}
+
 /** Contacts ball_in_hole looks at (the deepest kept). */
 #define CB_HOLE_CONTACTS 16
 
@@ -218,8 +225,7 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
             fm_vec3_t far = v3(side.x > 0.0f ? t->hi.x : t->lo.x, side.y > 0.0f ? t->hi.y : t->lo.y,
                                side.z > 0.0f ? t->hi.z : t->lo.z);
             if (!(v3_dot(v3_sub(far, o), side) > 0.0f)) continue;
-            fm_vec3_t q = v3(f_min(f_max(o.x, t->lo.x), t->hi.x), f_min(f_max(o.y, t->lo.y), t->hi.y),
-                             f_min(f_max(o.z, t->lo.z), t->hi.z));
+            fm_vec3_t q = box_closest(t, o);
             if (!(v3_len2(v3_sub(q, o)) <= reach * reach)) continue;
             /* and is no part of the floor the foot ray found (the next tread down under a
              * ball over a nosing): a triangle in its plane */
@@ -536,8 +542,7 @@ static bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
         /* reaches beyond the centre, away from the edge */
         if (!(v3_dot(t->hi, side_hi) + v3_dot(t->lo, side_lo) > reach)) continue;
         /* within reach of the full ball */
-        fm_vec3_t q = v3(f_min(f_max(o.x, t->lo.x), t->hi.x), f_min(f_max(o.y, t->lo.y), t->hi.y),
-                         f_min(f_max(o.z, t->lo.z), t->hi.z));
+        fm_vec3_t q = box_closest(t, o);
         if (!(v3_len2(v3_sub(q, o)) < r * r)) continue;
         /* walkable (either face): a piece's top, not a wall beside the body; and not in the
          * plane of the floor under the foot (the tread a lift steps onto) */
