@@ -789,6 +789,37 @@ static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap, fm_vec
     return !(gap < -step_eps && done * -gap < -gap - step_eps);
 }
 
+/**
+ * The snap onto s (from `before`, s->gap below the foot) slid the body down a walkable slope
+ * steeper than the capsule's bottom allows (r / cos > r + step: the sweep capsule rests on
+ * it with the foot r / cos - (r + step) above it): the foot must still be over that floor.
+ * At a slope's low edge the slide took it past the edge, over the slot of a V valley, and
+ * the body stood on the slope with its foot in the slot and the full ball deep in the
+ * other slope (soak s6 l146: 54 mm, s4 l245: 10.7 mm, both 0.1 m slots between 38-41
+ * degree ramps). The foot ray from the slid foot down to where the floor's plane is (the
+ * snap's rest of the way, plus what the slide went downhill, plus contact_eps) finds no
+ * floor: the snap is made straight down instead (no slide across up), the foot stays over
+ * the slope, and the next step's probe sees the slot (the crack rule). Nothing on floors the
+ * capsule stands on with its foot (r / cos <= r + step: every stair tread).
+ */
+static void snap_kept_over(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, const support_t *s)
+{
+    const fm_vec3_t up = c->up;
+    const float nu = v3_dot(s->normal, up);
+    if (!(c->radius > (c->radius + c->step) * nu)) return;
+    const fm_vec3_t moved = v3_sub(*pos, before), across = v3_reject(moved, up);
+    const float al = v3_len(across);
+    if (!(al > 0.0f)) return;
+    const float above = c->radius + c->step;
+    const float hold = s->gap + v3_dot(moved, up) + al * sqrtf(f_max(0.0f, 1.0f - nu * nu)) / nu + c->contact_eps;
+    coll_ray_hit_t h;
+    if (cb_ray(c, v3_madd(cb_foot(c, *pos), up, above), v3_scale(up, -1.0f), above + f_max(hold, 0.0f), &h) &&
+        isfinite(h.distance))
+        return;
+    *pos = before;
+    coll_cb_move_swept(c, pos, v3_scale(up, -s->gap));
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -937,6 +968,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 else s.found = false;
                 fits = !s.found || stand_on(c, pos, s.gap, s.normal);
             }
+            if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
              * motion, and the velocity says so */
