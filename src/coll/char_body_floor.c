@@ -715,6 +715,39 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 }
 
 /**
+ * Airborne, the foot point over a walkable floor tilted against up, out of the contact
+ * reach but within the reach of the full capsule's bottom ball (r (1 - cos) / cos +
+ * contact_eps: the ball's lowest point along the floor's normal is below the foot), and the
+ * step did not move the body (at most a tenth of the skin since the step began): the ball
+ * rests on that floor. Nothing stops the way down along up (held_over_floor), but the slide
+ * does: under a tilted up in a room's corner, the input across up pushes into both walls,
+ * which lean back from the body, clipped to their crease it climbs it faster than gravity
+ * falls, and the slide stops the body; it hung at rest 3.5 mm over the floor, its ball on
+ * it, for ever (soak s7 l48). Touching is checked: the ball grown by contact_eps overlaps
+ * a face in that floor's plane (its normal).
+ */
+static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *hit, float gap)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    fm_vec3_t moved = v3_sub(pos, before);
+    if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
+    const float r = c->radius, nu = v3_dot(hit->normal, c->up);
+    if (!((r + gap) * nu - r < c->contact_eps)) return false; /* the ball over the floor's plane */
+    /* and it touches that floor (a wall the ball's side is in may be deeper: overlaps) */
+    coll_contact_t ct[CB_HOLE_CONTACTS];
+    const fm_vec3_t bc = v3_madd(cb_foot(c, pos), c->up, r);
+    uint32_t n;
+    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, c->up, r + c->contact_eps, 0.0f, ct, CB_HOLE_CONTACTS);
+    else n = coll_capsule_overlaps(c->scene, bc, c->up, r + c->contact_eps, 0.0f, b->settings.read_mask,
+                                   b->settings.coll_types, ct, CB_HOLE_CONTACTS);
+    if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
+    for (uint32_t i = 0; i < n; i++)
+        if (v3_finite(ct[i].normal) && v3_dot(ct[i].normal, hit->normal) > 0.999f) return true;
+    return false;
+}
+
+/**
  * The foot ray found a face too steep to stand on, nearly along up (within 60 degrees: a
  * wall, a tile's side), within reach. Under a tilted up the ray through a crack between
  * tiles meets a tile's side, and the body stood "steep" on it with its foot 14-85 mm
@@ -836,7 +869,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     reach = gap;
                 else if (gap > reach && !one_way_deep &&
                          (gap <= 2.0f * contact_eps || gap <= c->radius * (1.0f - nu) / nu + contact_eps) &&
-                         held_over_floor(c, *pos, gap))
+                         (held_over_floor(c, *pos, gap) || at_rest_on(c, *pos, &hit, gap)))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
