@@ -300,9 +300,13 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     float n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
-     * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
+     * hovers over a slope (its capsule is too wide for it), it is not over a gap. (The
+     * contact's distance from that plane along the plane's normal: on the shared edge of
+     * two coplanar triangles the contact normal is 0.3 degrees off, and along it a point
+     * 0.6 m away on the same plane was 1.9 mm off it; the rule lifted a body walking on a
+     * slope too steep for its capsule 0.27 m off it, and it fell.) */
     if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(v3_dot(v3_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
+        fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     for (int k = 0; k < 2 && over_floor && n1u < b->cos_floor_max_angle; k++) {
@@ -646,6 +650,12 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n
         /* Only an edge under the capsule is slid off, and only onwards (the way the body
          * moved this step: never back, off the nosing ahead of a body climbing stairs). */
         if (!(v3_dot(hit.normal, c->up) > 0.05f)) return;
+        /* Not the floor it snaps to: the sweep capsule rests on that floor's plane (a slope
+         * steeper than its bottom allows holds it r / cos - (r + step) over the foot's
+         * point: the snap's target is out of its reach), and sliding along it is no slide
+         * off an edge: it went 0.28 m across up every step, 4 times the walk, and off the
+         * slope onto a piece beside it, 21 mm short of it (soak s7 l262, floor). */
+        if (v3_dot(hit.normal, n) > 0.999f && fabsf(v3_dot(v3_sub(hit.point, target), n)) <= c->contact_eps) return;
         left = v3_madd(left, hit.normal, -v3_dot(left, hit.normal));
         /* onwards: across up, within 60 degrees of the velocity (not down a steep face
          * beside a body sliding along a wall: that is back, or sideways, off it); a body
