@@ -238,6 +238,24 @@ static void test_oracle_direction(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(-0.1f, 0, 0), z, in, true, false, true));
     /* the along-up part does not count (stair lift, snap) */
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0.0f, -0.2f, 0), z, in, true, false, false));
+    /* a start overlap under the checker's 1 mm is pushed out by the recover against the
+     * input (s7 l411: 0.66 mm deep, pushed 1.16 mm back): allowed up to twice depth + half
+     * a skin (the velocity oracle's allowance), a walk back beyond it still fails, and no
+     * allowance without the overlap or under CB_MIN_DEPTH */
+    soak_motion_t m;
+    memset(&m, 0, sizeof m);
+    m.pos0 = o; m.input = in; m.dt = 1.0f / 60; m.grounded0 = true;
+    m.pen_depth = 0.00066; m.pos1 = V(-0.00116f, 0, 0);
+    osim.owner = m.pos1; osim.body.velocity = z;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&osim, &m));
+    m.pos1 = V(-0.0035f, 0, 0); /* beyond 1 mm + 2 (0.66 + 0.5) mm */
+    osim.owner = m.pos1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_DIRECTION, soak_sim_check_motion(&osim, &m));
+    m.pen_depth = 0.00005; m.pos1 = V(-0.00116f, 0, 0);
+    osim.owner = m.pos1;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_DIRECTION, soak_sim_check_motion(&osim, &m));
+    m.pen_depth = 0;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_DIRECTION, soak_sim_check_motion(&osim, &m));
 }
 
 static void test_oracle_progress(void)

@@ -300,9 +300,13 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     float n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
-     * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
+     * hovers over a slope (its capsule is too wide for it), it is not over a gap. (The
+     * contact's distance from that plane along the plane's normal: on the shared edge of
+     * two coplanar triangles the contact normal is 0.3 degrees off, and along it a point
+     * 0.6 m away on the same plane was 1.9 mm off it; the rule lifted a body walking on a
+     * slope too steep for its capsule 0.27 m off it, and it fell.) */
     if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(v3_dot(v3_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
+        fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     for (int k = 0; k < 2 && over_floor && n1u < b->cos_floor_max_angle; k++) {
@@ -646,6 +650,12 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n
         /* Only an edge under the capsule is slid off, and only onwards (the way the body
          * moved this step: never back, off the nosing ahead of a body climbing stairs). */
         if (!(v3_dot(hit.normal, c->up) > 0.05f)) return;
+        /* Not the floor it snaps to: the sweep capsule rests on that floor's plane (a slope
+         * steeper than its bottom allows holds it r / cos - (r + step) over the foot's
+         * point: the snap's target is out of its reach), and sliding along it is no slide
+         * off an edge: it went 0.28 m across up every step, 4 times the walk, and off the
+         * slope onto a piece beside it, 21 mm short of it (soak s7 l262, floor). */
+        if (v3_dot(hit.normal, n) > 0.999f && fabsf(v3_dot(v3_sub(hit.point, target), n)) <= c->contact_eps) return;
         left = v3_madd(left, hit.normal, -v3_dot(left, hit.normal));
         /* onwards: across up, within 60 degrees of the velocity (not down a steep face
          * beside a body sliding along a wall: that is back, or sideways, off it); a body
@@ -712,6 +722,39 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
         !isfinite(h.t) || !v3_finite(h.normal))
         return false;
     return h.t < 1.0f && v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle;
+}
+
+/**
+ * Airborne, the foot point over a walkable floor tilted against up, out of the contact
+ * reach but within the reach of the full capsule's bottom ball (r (1 - cos) / cos +
+ * contact_eps: the ball's lowest point along the floor's normal is below the foot), and the
+ * step did not move the body (at most a tenth of the skin since the step began): the ball
+ * rests on that floor. Nothing stops the way down along up (held_over_floor), but the slide
+ * does: under a tilted up in a room's corner, the input across up pushes into both walls,
+ * which lean back from the body, clipped to their crease it climbs it faster than gravity
+ * falls, and the slide stops the body; it hung at rest 3.5 mm over the floor, its ball on
+ * it, for ever (soak s7 l48). Touching is checked: the ball grown by contact_eps overlaps
+ * a face in that floor's plane (its normal).
+ */
+static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *hit, float gap)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    fm_vec3_t moved = v3_sub(pos, before);
+    if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
+    const float r = c->radius, nu = v3_dot(hit->normal, c->up);
+    if (!((r + gap) * nu - r < c->contact_eps)) return false; /* the ball over the floor's plane */
+    /* and it touches that floor (a wall the ball's side is in may be deeper: overlaps) */
+    coll_contact_t ct[CB_HOLE_CONTACTS];
+    const fm_vec3_t bc = v3_madd(cb_foot(c, pos), c->up, r);
+    uint32_t n;
+    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, c->up, r + c->contact_eps, 0.0f, ct, CB_HOLE_CONTACTS);
+    else n = coll_capsule_overlaps(c->scene, bc, c->up, r + c->contact_eps, 0.0f, b->settings.read_mask,
+                                   b->settings.coll_types, ct, CB_HOLE_CONTACTS);
+    if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
+    for (uint32_t i = 0; i < n; i++)
+        if (v3_finite(ct[i].normal) && v3_dot(ct[i].normal, hit->normal) > 0.999f) return true;
+    return false;
 }
 
 /**
@@ -867,7 +910,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     reach = gap;
                 else if (gap > reach && !one_way_deep &&
                          (gap <= 2.0f * contact_eps || gap <= c->radius * (1.0f - nu) / nu + contact_eps) &&
-                         held_over_floor(c, *pos, gap))
+                         (held_over_floor(c, *pos, gap) || at_rest_on(c, *pos, &hit, gap)))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
