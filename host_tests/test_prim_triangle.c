@@ -908,6 +908,99 @@ static void test_held_end_cull_matches_plain(void)
     TEST_ASSERT_TRUE(n_hits > 500);
 }
 
+/* The end cull in large coordinates (tri_sweep's sweep_separated_at: the end's closest pair
+ * measured from its point on the triangle, the axis made perpendicular to the edge that point
+ * lies on, its allowance the rounding of those local terms): the held sweep still answers what
+ * the plain one does, less a contact after t = 0 no sooner than t_max. The crack course's
+ * geometry: 40 m long edges (a floor's edge and the crack's side below it, a floor and the
+ * floor across the crack), so the far vertices lie 20 m along the edge from the contact and
+ * the coordinates' magnitude (80-160) makes the confirm culls' own allowance (1e-6 of it)
+ * larger than the touch tolerance; spheres and capsules swept at an edge from above and
+ * the sides, t_max at each triangle's contact time and a little after it, near the first
+ * vertex and 100 m and 300 m away. */
+static void test_held_end_cull_local_matches_plain(void)
+{
+    /* the two slabs' facing edges: slab A's top (y = 0, z in -20 .. -0.2) and side (z = -0.2,
+     * y in -1 .. 0), slab B's top (z in 0.2 .. 20) and side (z = 0.2); each quad two
+     * triangles, split as bench_geo_box splits a box's faces (both diagonals tried) */
+    const fm_vec3_t quads[4][4] = {
+        { V(-20, 0, -0.2f), V(20, 0, -0.2f), V(20, 0, -20), V(-20, 0, -20) },
+        { V(-20, 0, -0.2f), V(20, 0, -0.2f), V(20, -1, -0.2f), V(-20, -1, -0.2f) },
+        { V(-20, 0, 0.2f), V(20, 0, 0.2f), V(20, 0, 20), V(-20, 0, 20) },
+        { V(-20, 0, 0.2f), V(20, 0, 0.2f), V(20, -1, 0.2f), V(-20, -1, 0.2f) },
+    };
+    const float deeper[] = { 0.0f, 1e-5f, 1e-4f, 3e-4f, 1e-3f, 1e-2f };
+    const float offs[] = { 0.0f, 100.0f, 300.0f };
+    int n_cases = 0, n_hits = 0;
+    for (int o = 0; o < 3; o++)
+    for (int split = 0; split < 2; split++)
+    for (int i = 0; i < 150; i++) {
+        float off = offs[o];
+        fm_vec3_t tris[8][3];
+        for (int q = 0; q < 4; q++) {
+            const fm_vec3_t *v = quads[q];
+            if (split) {
+                fm_vec3_t a[3] = { v[0], v[1], v[2] }, b[3] = { v[0], v[2], v[3] };
+                for (int k = 0; k < 3; k++) { tris[2 * q][k] = a[k]; tris[2 * q + 1][k] = b[k]; }
+            } else {
+                fm_vec3_t a[3] = { v[0], v[1], v[3] }, b[3] = { v[1], v[2], v[3] };
+                for (int k = 0; k < 3; k++) { tris[2 * q][k] = a[k]; tris[2 * q + 1][k] = b[k]; }
+            }
+        }
+        float r = (float)rnd_range(0.25, 0.6);
+        float hh = rnd() < 0.5 ? 0.0f : (float)rnd_range(0.1, 0.5);
+        /* at a point of one edge, from above the crack (a ball dropped into it, rolled
+         * across it) or from anywhere above and beside */
+        double ex = rnd_range(-15, 15), ez = rnd() < 0.5 ? -0.2 : 0.2;
+        prim_ref_v3 aim = { ex, 0, ez };
+        prim_ref_v3 dir;
+        if (rnd() < 0.5) dir = (prim_ref_v3){ rnd_range(-0.1, 0.1), 1, -ez * rnd_range(0, 4) };
+        else dir = rnd_unit();
+        if (dir.y < 0.05) dir.y = 0.05 + rnd();
+        dir = prim_ref_scale(dir, 1.0 / prim_ref_len(dir));
+        prim_ref_v3 c = prim_ref_add(aim, prim_ref_scale(dir, r + hh + rnd_range(0.05, 1.0)));
+        c = prim_ref_add(c, prim_ref_scale(rnd_unit(), rnd_range(0, 0.3 * r)));
+        fm_vec3_t d = F(prim_ref_scale(prim_ref_sub(aim, c), rnd_range(1.0, 1.6)));
+        double dlen = prim_ref_len(prim_ref_sub(aim, c));
+        for (int a = 0; a < 8; a++) {
+            fm_vec3_t seg[2], ta[3];
+            seg[0] = V((float)c.x + off - (tris[a][0].x + off), (float)c.y - hh - tris[a][0].y, (float)c.z - tris[a][0].z);
+            seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
+            for (int k = 0; k < 3; k++)
+                ta[k] = V(tris[a][k].x + off - (tris[a][0].x + off), tris[a][k].y - tris[a][0].y, tris[a][k].z - tris[a][0].z);
+            coll_prim_hit_t h0;
+            if (!coll_tri_sweep_prep(seg, r, &d, ta, NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
+            n_hits++;
+            for (int b = 0; b < 8; b++) {
+                fm_vec3_t sb[2], tb[3];
+                for (int k = 0; k < 2; k++)
+                    sb[k] = V((float)c.x + off - (tris[b][0].x + off), (float)c.y + (k ? hh : -hh) - tris[b][0].y,
+                              (float)c.z - tris[b][0].z);
+                for (int k = 0; k < 3; k++)
+                    tb[k] = V(tris[b][k].x + off - (tris[b][0].x + off), tris[b][k].y - tris[b][0].y, tris[b][k].z - tris[b][0].z);
+                for (int m = 0; m < (int)(sizeof deeper / sizeof deeper[0]); m++) {
+                    float t_max = h0.t + (float)(deeper[m] * r / (dlen > 1e-6 ? dlen : 1.0));
+                    coll_prim_hit_t hp, hb;
+                    memset(&hp, 0, sizeof hp);
+                    memset(&hb, 0, sizeof hb);
+                    bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
+                    bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
+                    if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
+                    if (!hits_equal(gp, &hp, gb, &hb)) {
+                        printf("held end cull (local): o %d s %d i %d a %d b %d m %d: plain %d t %.9g, held %d\n", o, split,
+                               i, a, b, m, gp, (double)hp.t, gb);
+                        dump_case(sb, r, d, tb);
+                    }
+                    TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
+                    n_cases++;
+                }
+            }
+        }
+    }
+    printf("held end cull (local): %d contacts, %d cases\n", n_hits, n_cases);
+    TEST_ASSERT_TRUE(n_hits > 500);
+}
+
 /* ray_sphere's early rejection (an entry after s_max found before the square root) must
  * agree bit for bit with the full root: the full test here (the code before it), run on
  * random rays whose s_max is put exactly at, just before and just after the entry, near
@@ -1155,5 +1248,6 @@ int main(void)
     RUN_TEST(test_far_start_edge_axis_cull_cases);
     RUN_TEST(test_overlap_boundary_axis_cull);
     RUN_TEST(test_held_end_cull_matches_plain);
+    RUN_TEST(test_held_end_cull_local_matches_plain);
     return UNITY_END();
 }

@@ -548,6 +548,49 @@ PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
 
+/* |u . w| summed term by term: what the rounding of u . w (and of w's own subtraction)
+ * scales with. */
+static inline float v3_abs_dot(fm_vec3_t u, fm_vec3_t w)
+{
+    return fabsf(u.x * w.x) + fabsf(u.y * w.y) + fabsf(u.z * w.z);
+}
+
+/* sweep_separated_k along u with every point measured from o (a point of the triangle near
+ * the capsule: a closest pair's point on it, on edge's interior at ev when edge >= 0), so
+ * that the allowance is the rounding of those local projections (1e-6 of their terms, each
+ * a subtraction and a dot product: a few float epsilons) instead of 1e-6 of the
+ * coordinates' magnitude: on a long triangle whose far vertices lie along an edge the axis
+ * is perpendicular to, their terms are near zero. Any axis is a valid test; this one is
+ * the cull's, not a different answer. */
+static bool sweep_separated_at(const sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, const fm_vec3_t *po,
+                               int edge, float ev)
+{
+    fm_vec3_t u = *pu;
+    const fm_vec3_t o = *po;
+    /* o on edge's interior (closest pair): the pair's direction is perpendicular to the
+     * edge but for the rounding of the point on it, which tilts it towards the edge's far
+     * vertex (1e-6 over a 40 m edge: more than the tolerance); the part perpendicular to the
+     * edge is an axis as good */
+    if (edge >= 0 && ev > 0.0f && ev < 1.0f) {
+        fm_vec3_t e = c->tri.e[edge];
+        u = v3_madd(u, e, -v3_dot(u, e) / v3_len2(e));
+    }
+    float uu = v3_len2(u);
+    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
+    const tri_t *t = &c->tri;
+    fm_vec3_t wa = v3_sub(c->a, o), wb = v3_sub(c->b, o), wd = v3_scale(c->d, t_max);
+    fm_vec3_t w0 = v3_sub(t->v[0], o), w1 = v3_sub(t->v[1], o), w2 = v3_sub(t->v[2], o);
+    float sa = v3_dot(u, wa), sb = v3_dot(u, wb), sd = v3_dot(u, wd);
+    float t0 = v3_dot(u, w0), t1 = v3_dot(u, w1), t2 = v3_dot(u, w2);
+    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    if (!(sep > 0.0f)) return false;
+    float err = f_max(v3_abs_dot(u, wa), v3_abs_dot(u, wb)) + v3_abs_dot(u, wd) +
+                f_max(v3_abs_dot(u, w0), f_max(v3_abs_dot(u, w1), v3_abs_dot(u, w2)));
+    sep -= 1e-6f * err;
+    float rr = rc * 1.0001f + 1e-7f;
+    return sep > 0.0f && sep * sep > rr * rr * uu;
+}
+
 /** Earliest entry of t*d into K(r) over [0, t_max]; any = stop at the first piece found. */
 static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any, feat_hit_t *best)
 {
@@ -703,18 +746,26 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
          * never goes deeper (3-6k console instructions each). The end's closest pair is the
          * confirmation's own last axis: the swept capsule clear of rin along it, with the
          * confirm culls' allowance (1e-6), never goes deeper than the touch tolerance, which
-         * is no hit however the features would find it. Only where that allowance leaves the
-         * tolerance room to clear it (small coordinates: the magnitude test below; a crack in a
-         * 100 m floor does not), and only once a hit is held (a first contact pays the end's
+         * is no hit however the features would find it. Where the coordinates are small, with
+         * the confirm culls' own test (its allowance 1e-6 of their magnitude); where that
+         * allowance leaves the tolerance no room (a crack's edge in a 100 m floor: magnitude
+         * 87-162), the same axis measured from the end's point on the triangle and made
+         * perpendicular to the edge it lies on, its allowance the rounding of those local
+         * terms (sweep_separated_at). Only once a hit is held (a first contact pays the end's
          * pair for nothing: measured, it cost more than it saved). */
-        if (confirm && before && 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f)) {
+        if (confirm && before) {
+            bool small = 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f);
             fm_vec3_t off = v3_scale(c.d, t_max);
             fm_vec3_t ea = v3_add(c.a, off), eb = v3_add(c.b, off);
-            d2e = seg_tri_closest(&c.tri, &ea, &eb, &es, &et);
+            int eedge;
+            float eeu, eev;
+            d2e = seg_tri_closest_ex(&c.tri, &ea, &eb, NULL, &es, &et, &eedge, &eeu, &eev);
             end_known = true;
             if (!(d2e < rin * rin)) {
                 fm_vec3_t sep2 = v3_sub(es, et);
-                if (sweep_separated_k(&c, &sep2, rin, t_max, 1e-6f)) return false;
+                if (small ? sweep_separated_k(&c, &sep2, rin, t_max, 1e-6f)
+                          : sweep_separated_at(&c, &sep2, rin, t_max, &et, eedge, eev))
+                    return false;
             }
         }
         if (!sweep_features(&c, r, t_max, false, &best)) return false;
