@@ -314,7 +314,8 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
 #define ON(k) (sim->oracles & (1u << (k)))
     /* (a) direction; the push-out is no walk against the input (soak s7 l411: a slide
      * into the room wall under a 27.8 m/s input ended 0.66 mm inside it, under the
-     * checker's 1 mm, and the next step's recover pushed it 1.16 mm back out) */
+     * checker's 1 mm, and the next step's recover pushed it 1.16 mm back out; s9 l208 the
+     * same in a corner) */
     if (walking && ON(SOAK_FAIL_DIRECTION)) {
         sim->st.oracle_frames[SOAK_FAIL_DIRECTION]++;
         if (along < -(SOAK_DIR_TOL + push))

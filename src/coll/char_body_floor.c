@@ -276,9 +276,12 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
 }
 
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
- * (piece_beyond let a body standing on the floor under its foot through). */
+ * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
+ * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
+ * the drop slides down past a wall face the ball leans on (drop_past_side); not past an
+ * edge, which may be a hole's side (soak s5 l30), nor a face the ball fell onto. */
 static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *under, float floor_gap,
-                      const coll_sweep_hit_t *first, float first_len, bool hole_only, support_t *out,
+                      const coll_sweep_hit_t *first, float first_len, bool hole_only, bool past_side, support_t *out,
                       fm_vec3_t *far_out)
 {
     const bool over_floor = floor_gap < 1e29f;
@@ -309,7 +312,11 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < 1e-3f * (c->unit + r))
         return false;
     float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
-    for (int k = 0; k < 2 && over_floor && n1u < b->cos_floor_max_angle; k++) {
+    /* (past_side: once, off a wall face the ball leans on at the drop's start, within
+     * CB_MARGIN across it) */
+    const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
+                                      d1 * n1u <= cb_len_tol(c, CB_MARGIN) && steep_face(c, &h1));
+    for (int k = 0; k < (over_floor ? 2 : 1) && slide && n1u < b->cos_floor_max_angle; k++) {
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
         if (!(n1u > 0.02f)) return false;
@@ -762,13 +769,17 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
  * wall, a tile's side), within reach. Under a tilted up the ray through a crack between
  * tiles meets a tile's side, and the body stood "steep" on it with its foot 14-85 mm
  * below the tile tops around it (soak s2 l117, l356, l375, s3 l369). Where the crack rule
- * holds the ball higher (on the edges of the gap), the body stands there instead.
+ * holds the ball higher (on the edges of the gap), the body stands there instead. Its drop
+ * slides down past a wall it meets first, as over a floor (drop_past_side): under a tilted
+ * up the room's floor, a wall 79 degrees off up, stopped the ball beside the open end of a
+ * V valley's slot, the roll along it met nothing, and the body stood steep on the slot's
+ * side with its foot 66 mm below the valley's end faces around the slot (soak s8 l115).
  */
 static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
     support_t w; /* written by ball_held when it returns true: read only then */
-    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, false, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, false, true, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
         *s = w;
 }
 
@@ -928,7 +939,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge) ||
                          (hole_only = piece_beyond(c, *pos, &edge, &hit))) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, &w, &far) &&
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
                         w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
@@ -988,7 +999,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
         /* held by the crack rule alone, over a floor the foot ray found out of reach below */
         bool edges_over_floor = false;
         if (!s.found) {
-            ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, &s, NULL);
+            ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, false, &s, NULL);
             edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
