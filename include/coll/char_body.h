@@ -125,21 +125,22 @@ typedef struct {
 /**
  * Optional per-body gather cache (char_body_set_gather_cache()). A step gathers the mesh
  * triangles around the body once (its box: the capsule grown by the step's reach). With a
- * cache, the gather keeps the mesh-local triangles of a larger box (the step's grown by
- * 0.4 m on each side, in units_per_meter) and the following steps take theirs from it while
- * the cache still covers them: the same scene and mesh list, each instance seen then still
- * on the same mesh, and the step's box, taken into each instance's mesh space under its
- * transform now, inside the mesh-space box the cache walked there (so a moving or turning
- * platform keeps its cached triangles until the body leaves their box, and the game may
- * write inst->xf any frame). Otherwise the cache is refilled. The step sees exactly the
- * triangles a fresh gather would, with bit-identical shapes (rebuilt from the cached
- * mesh-local vertices by the fresh gather's own expressions), ordered by instance, then
- * triangle index. Scenes with more than COLL_GATHER_CACHE_INSTANCES mesh instances, and
- * refills meeting more than COLL_GATHER_CACHE_TRIS triangles, take the uncached gather.
- * The game owns the memory (sizeof(coll_gather_cache_t): 2,276 B on the console, 2,376 B on
+ * cache, a refill keeps the mesh-local triangles of a larger box (the step's, swept six
+ * steps ahead at the step's velocity, at most 1 m, and grown by 0.1 m; in units_per_meter)
+ * and the following steps take theirs from it while the cache still covers them: the same
+ * scene and mesh list, each instance seen then still on the same mesh, and the step's box,
+ * taken into each instance's mesh space under its transform now, inside the mesh-space box
+ * the cache walked there (so a moving or turning platform keeps its cached triangles until
+ * the body leaves their box, and the game may write inst->xf any frame). Otherwise the
+ * cache is refilled. The step sees exactly the triangles a fresh gather would, in the same
+ * order, with bit-identical shapes (rebuilt from the cached mesh-local vertices by the
+ * fresh gather's own expressions): the body moves bit for bit as without a cache. Scenes
+ * with more than COLL_GATHER_CACHE_INSTANCES mesh instances, and refills meeting more than
+ * COLL_GATHER_CACHE_TRIS triangles or 64 grid cells of an instance, take the uncached gather.
+ * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,272 B on
  * a 64-bit host); one cache serves one body. All fields are private.
  */
-#define COLL_GATHER_CACHE_TRIS 48
+#define COLL_GATHER_CACHE_TRIS 64
 #define COLL_GATHER_CACHE_INSTANCES 8
 
 typedef struct {
@@ -245,7 +246,7 @@ const char_body_events_t *char_body_events(const char_body_t *body);
 void char_body_set_collider(char_body_t *body, coll_body_t *collider);
 
 /** Gives the body a gather cache (coll_gather_cache_t: owned by the game, one per body,
- *  about 2.5 KB), emptied here; NULL detaches it (the uncached gather, as without one).
+ *  about 5 KB), emptied here; NULL detaches it (the uncached gather, as without one).
  *  Steps then take their candidate triangles from it while the body stays in the box it
  *  was filled for and the scene is unchanged: the same triangles and answers, fewer grid
  *  walks (docs/BENCHMARKS.md, branch perf14). */

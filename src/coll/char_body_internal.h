@@ -58,13 +58,13 @@ enum {
  *  CB_GATHER_CACHE_MARGIN m on each side (perf14: measured on the sample walk, the crowd,
  *  the Jolt scene and the real maps). */
 #ifndef CB_GATHER_CACHE_STEPS
-#define CB_GATHER_CACHE_STEPS 4
+#define CB_GATHER_CACHE_STEPS 6
 #endif
 #ifndef CB_GATHER_CACHE_AHEAD
 #define CB_GATHER_CACHE_AHEAD 1.0f
 #endif
 #ifndef CB_GATHER_CACHE_MARGIN
-#define CB_GATHER_CACHE_MARGIN 0.15f
+#define CB_GATHER_CACHE_MARGIN 0.1f
 #endif
 /** Contacts used by the overlap recovery. */
 #define CB_MAX_CONTACTS 4
