@@ -219,10 +219,22 @@ static void world_init(world_t *w, const char *assets, bool platform)
     }
 }
 
+/* BENCH_GATHER_CACHE=1 in the environment: every body made here gets a gather cache of its
+ * own (char_body_set_gather_cache; the bench's bodies are made in array order, at most 32). */
+static coll_gather_cache_t g_gather_caches[32];
+static int g_gather_cache_next;
+static bool gather_cache_on(void)
+{
+    const char *e = getenv("BENCH_GATHER_CACHE");
+    return e && e[0] == '1';
+}
+
 static void body_make(char_body_t *b, fm_vec3_t *pos, fm_vec3_t foot)
 {
     *pos = foot;
     char_body_init(b, pos);
+    if (gather_cache_on() && g_gather_cache_next < 32)
+        char_body_set_gather_cache(b, &g_gather_caches[g_gather_cache_next++]);
     char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
     s.center_offset = V(0, 1, 0);
     char_body_configure(b, &s);
@@ -510,6 +522,15 @@ int main(int argc, char **argv)
         printf("stats queries=%u gathers=%u gather_overflows=%u gather_queries=%u gather_misses=%u dedup_overflows=%u\n",
                g_stats.queries, g_stats.gathers, g_stats.gather_overflows, g_stats.gather_queries, g_stats.gather_misses,
                g_stats.dedup_overflows);
+        if (g_gather_cache_next > 0) {
+            uint32_t h = 0, fl = 0, ov = 0;
+            for (int i = 0; i < g_gather_cache_next; i++) {
+                h += g_gather_caches[i].hits;
+                fl += g_gather_caches[i].fills;
+                ov += g_gather_caches[i].overflows;
+            }
+            printf("gather_cache bodies=%d hits=%u fills=%u overflows=%u\n", g_gather_cache_next, h, fl, ov);
+        }
         return 0;
     }
     if (strcmp(argv[1], "accuracy") == 0 && argc >= 3) return cmd_accuracy(argv[2], argc > 3 ? argv[3] : NULL);

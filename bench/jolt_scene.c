@@ -152,6 +152,9 @@ static uint64_t jolt_hash(uint64_t v)
 }
 
 static uint32_t g_step; /* steps taken so far */
+/* JOLT_GATHER_CACHE=1 in the environment: each body gets a gather cache of its own
+ * (char_body_set_gather_cache; the printed gather_cache_* lines count its use). */
+static coll_gather_cache_t g_cache[NCHARS];
 
 /* The measured region: one step of all 100 characters. Kept out of line so callgrind's
  * --toggle-collect=jolt_step_all counts exactly this loop. */
@@ -329,6 +332,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "coll_mesh_build failed (%d)\n", (int)e);
         return 1;
     }
+    const char *gc_env = getenv("JOLT_GATHER_CACHE");
+    const bool gather_cache = gc_env && gc_env[0] == '1';
     coll_scene_init(&g_scene);
     coll_scene_set_stats(&g_scene, &g_stats);
     g_inst = (coll_mesh_instance_t){.mesh = mesh, .xf = COLL_TRANSFORM_IDENTITY, .write_mask = 0x01, .id = 1};
@@ -353,6 +358,7 @@ int main(int argc, char **argv)
             g_owner[i] = (fm_vec3_t){{4.0f * (float)x - 20.0f, 2.0f, 4.0f * (float)y - 20.0f}};
             char_body_init(&g_body[i], &g_owner[i]);
             char_body_configure(&g_body[i], &s);
+            if (gather_cache) char_body_set_gather_cache(&g_body[i], &g_cache[i]);
         }
 
     check_t ck = {0};
@@ -391,6 +397,16 @@ int main(int argc, char **argv)
     printf("overflows=%u\n", qs.dedup_overflows + qs.gather_overflows);
     printf("dedup_overflows=%u\ngathers=%u\ngather_overflows=%u\ngather_queries=%u\ngather_misses=%u\nscene_queries=%u\n",
            qs.dedup_overflows, qs.gathers, qs.gather_overflows, qs.gather_queries, qs.gather_misses, qs.queries);
+    if (gather_cache) {
+        uint64_t h = 0, fl = 0, ov = 0;
+        for (int i = 0; i < NCHARS; i++) {
+            h += g_cache[i].hits;
+            fl += g_cache[i].fills;
+            ov += g_cache[i].overflows;
+        }
+        printf("gather_cache_hits=%llu\ngather_cache_fills=%llu\ngather_cache_overflows=%llu\n",
+               (unsigned long long)h, (unsigned long long)fl, (unsigned long long)ov);
+    }
     printf("max_pen_sweep_mm=%.4f\n", ck.max_pen_sweep * 1e3);
     printf("min_clearance_sweep_mm=%.4f\n", ck.min_clear_sweep * 1e3);
     printf("worst=body %d step %u\n", ck.worst_body, ck.worst_step);

@@ -503,6 +503,97 @@ static void test_one_way_short_jump_falls_back(void)
     TEST_ASSERT_FLOAT_WITHIN(0.001f, 0.0f, pos.y);
 }
 
+/* ---- 4. the gather cache ---- */
+
+/* A body with a gather cache moves exactly as one without: bit for bit, step after step, on
+ * a level of a bumpy floor, stairs and boxes with a turning platform and a sliding one that
+ * the test moves every frame, through walking in changing directions, jumps, a teleport,
+ * a read_mask change and a platform taken out of the scene and put back. The two bodies
+ * never see each other (meshes only). The cache is used (most steps come from it). */
+static void test_gather_cache_moves_exactly_as_without(void)
+{
+    const float dt = 1.0f / 30.0f;
+    cb_world_reset();
+    cb_geo_begin();
+    cb_geo_grid(12.0f, 48, 0.0f);
+    cb_geo_stairs(0.35f, 0.15f, 8, -3.0f, -1.0f);
+    cb_geo_box(cb_vec(-4.0f, 0.4f, 3.0f), cb_vec(0.6f, 0.4f, 0.6f), 0.3f);
+    cb_geo_box(cb_vec(3.0f, 0.2f, -5.0f), cb_vec(1.0f, 0.2f, 0.5f), 0.0f);
+    cb_world_add_geo(1);
+    cb_geo_begin();
+    cb_geo_box(cb_vec(0.0f, -0.1f, 0.0f), cb_vec(2.0f, 0.1f, 2.0f), 0.0f);
+    const coll_mesh_t *pm = cb_geo_end();
+    TEST_ASSERT_NOT_NULL(pm);
+    coll_transform_t xf = {cb_vec(0.0f, 0.3f, 4.0f), {{0.0f, 0.0f, 0.0f, 1.0f}}, cb_vec(1.0f, 1.0f, 1.0f)};
+    coll_mesh_instance_t *turn = cb_world_add_mesh(pm, xf, 2);
+    xf.pos = cb_vec(4.0f, 0.3f, 0.0f);
+    coll_mesh_instance_t *slide = cb_world_add_mesh(pm, xf, 3);
+    static char_body_t a, b;
+    static fm_vec3_t pa, pb;
+    static coll_gather_cache_t cache;
+    cb_body_init(&a, &pa, cb_vec(1.0f, 0.5f, 4.0f));
+    cb_body_init(&b, &pb, cb_vec(1.0f, 0.5f, 4.0f));
+    char_body_set_gather_cache(&a, &cache);
+    fm_vec3_t axis = cb_vec(0.0f, 1.0f, 0.0f);
+    for (int f = 0; f < 600; f++) {
+        float t = (float)f * dt;
+        fm_quat_from_axis_angle(&turn->xf.rot, &axis, 0.8f * t);
+        slide->xf.pos.x = 4.0f + 2.0f * sinf(0.7f * t);
+        float ang = 0.4f * t + (f / 90) * 1.3f;
+        fm_vec3_t in = cb_vec(3.0f * cosf(ang), 0.0f, 3.0f * sinf(ang));
+        if (f % 150 < 20) in = cb_vec(0.0f, 0.0f, 0.0f); /* standing (on a platform at first) */
+        a.input_velocity = b.input_velocity = in;
+        if (f % 97 == 50 && char_body_is_on_floor(&a)) {
+            char_body_set_velocity(&a, cb_vec(0.0f, 6.0f, 0.0f));
+            char_body_set_velocity(&b, cb_vec(0.0f, 6.0f, 0.0f));
+        }
+        if (f == 300) {
+            char_body_teleport(&a, cb_vec(-2.0f, 1.0f, -2.0f), true);
+            char_body_teleport(&b, cb_vec(-2.0f, 1.0f, -2.0f), true);
+        }
+        if (f == 360 || f == 420) { /* the sliding platform on layer 2 only, then the body reads it again */
+            slide->write_mask = f == 360 ? 0x02 : 0x01;
+        }
+        if (f == 400) {
+            char_body_settings_t s = *char_body_get_settings(&a);
+            s.read_mask = 0x03;
+            char_body_configure(&a, &s);
+            char_body_configure(&b, &s);
+        }
+        if (f == 450) TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_remove_mesh(&cb_world.scene, turn));
+        if (f == 500) TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&cb_world.scene, turn));
+        CB_STEP(&a, dt);
+        CB_STEP(&b, dt);
+        TEST_ASSERT_EQUAL_MEMORY(&pa, &pb, sizeof pa);
+        TEST_ASSERT_EQUAL_MEMORY(&a.velocity, &b.velocity, sizeof a.velocity);
+        TEST_ASSERT_EQUAL_MEMORY(&a.floor_normal, &b.floor_normal, sizeof a.floor_normal);
+        TEST_ASSERT_EQUAL_MEMORY(&a.ground_velocity, &b.ground_velocity, sizeof a.ground_velocity);
+        TEST_ASSERT_EQUAL_MEMORY(&a.events, &b.events, sizeof a.events);
+        TEST_ASSERT_EQUAL_INT(a.flags, b.flags);
+        TEST_ASSERT_EQUAL_INT(a.floor_id, b.floor_id);
+        TEST_ASSERT_TRUE(a.floor_instance == b.floor_instance);
+    }
+    printf("gather cache over 600 steps: %u hits, %u refills, %u overflows\n", cache.hits, cache.fills,
+           cache.overflows);
+    TEST_ASSERT_TRUE(cache.hits > 300u);
+    TEST_ASSERT_TRUE(cache.fills > 10u);
+    /* detached: the uncached gather again (the cache is left as it was) */
+    uint32_t hits = cache.hits, fills = cache.fills;
+    char_body_set_gather_cache(&a, NULL);
+    CB_STEP(&a, dt);
+    CB_STEP(&b, dt);
+    TEST_ASSERT_EQUAL_MEMORY(&pa, &pb, sizeof pa);
+    TEST_ASSERT_EQUAL_UINT(hits, cache.hits);
+    TEST_ASSERT_EQUAL_UINT(fills, cache.fills);
+    /* attached again: emptied first */
+    char_body_set_gather_cache(&a, &cache);
+    TEST_ASSERT_EQUAL_UINT(0u, cache.hits + cache.fills);
+    CB_STEP(&a, dt);
+    CB_STEP(&b, dt);
+    TEST_ASSERT_EQUAL_MEMORY(&pa, &pb, sizeof pa);
+    TEST_ASSERT_EQUAL_UINT(1u, cache.fills);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -521,5 +612,6 @@ int main(void)
     RUN_TEST(test_events_stepped);
     RUN_TEST(test_events_no_steps_on_a_ramp);
     RUN_TEST(test_events_ceiling_and_wall);
+    RUN_TEST(test_gather_cache_moves_exactly_as_without);
     return UNITY_END();
 }

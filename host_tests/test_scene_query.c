@@ -1573,6 +1573,132 @@ static void test_sweeps_grazing_a_plane_agree_with_the_exact_test(void)
     TEST_ASSERT_TRUE(hits > n / 4 && hits < n - n / 4);
 }
 
+/* The gathered triangles of two gathers, bit for bit and in the same order. */
+static void assert_same_gather(const coll_gather_t *a, const coll_gather_t *b)
+{
+    TEST_ASSERT_EQUAL_INT(a->valid, b->valid);
+    if (!a->valid) return;
+    TEST_ASSERT_EQUAL_MEMORY(&a->origin, &b->origin, sizeof a->origin);
+    TEST_ASSERT_EQUAL_MEMORY(&a->lo, &b->lo, sizeof a->lo);
+    TEST_ASSERT_EQUAL_MEMORY(&a->hi, &b->hi, sizeof a->hi);
+    TEST_ASSERT_EQUAL_MEMORY(&a->scale, &b->scale, sizeof a->scale);
+    TEST_ASSERT_EQUAL_UINT(a->ntris, b->ntris);
+    for (uint16_t k = 0; k < a->ntris; k++) {
+        const coll_gather_tri_t *x = &a->tris[k], *y = &b->tris[k];
+        TEST_ASSERT_TRUE(x->inst == y->inst);
+        TEST_ASSERT_EQUAL_INT(x->tri, y->tri);
+        TEST_ASSERT_EQUAL_MEMORY(&x->w0, &y->w0, sizeof x->w0);
+        TEST_ASSERT_EQUAL_MEMORY(&x->e1, &y->e1, sizeof x->e1);
+        TEST_ASSERT_EQUAL_MEMORY(&x->e2, &y->e2, sizeof x->e2);
+        TEST_ASSERT_EQUAL_MEMORY(&x->lo, &y->lo, sizeof x->lo);
+        TEST_ASSERT_EQUAL_MEMORY(&x->hi, &y->hi, sizeof x->hi);
+    }
+}
+
+/* A gather through a cache (coll_gather_begin_cached) is the fresh gather of the same box:
+ * the same triangles in the same order with the same placement, shape and box bit for bit,
+ * and the same query answers, over random walks of a body-sized box through random worlds
+ * (rotated, scaled, quantized, dense and hashed grids, far from the origin), with teleports,
+ * an instance transform changed every frame, meshes removed and added back, the read mask
+ * changed, and refills that overflow the cache. No allocation on the way. */
+static void test_gather_cache_equals_fresh_gather(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 1414);
+    static coll_gather_t gc, gf;
+    static coll_gather_cache_t cache;
+    uint32_t steps = 0, hits = 0, fills = 0, overflows = 0, kept = 0, moved = 0, removed = 0, masks = 0;
+    for (int wi = 0; wi < N_WORLDS; wi++) {
+        random_world(&r, false);
+        coll_gather_cache_reset(&cache);
+        fm_vec3_t c = to_f(random_surface_point(&r));
+        fm_vec3_t half = {{(float)core_rng_range(&r, 0.3, 1.0), (float)core_rng_range(&r, 0.6, 1.6),
+                           (float)core_rng_range(&r, 0.3, 1.0)}};
+        uint8_t mask = 0xFF;
+        coll_mesh_instance_t *gone = NULL;
+        coll_transform_t xf0 = g_w.inst[0].xf;
+        for (int st = 0; st < 60; st++) {
+            uint32_t ev = core_rng_u32(&r) % 40;
+            if (ev == 0) c = to_f(random_surface_point(&r)); /* teleport */
+            else if (ev == 1) c = to_f(random_point_in_region(&r, 2.0));
+            else
+                for (int a = 0; a < 3; a++) c.v[a] += (float)core_rng_range(&r, -0.25, 0.25);
+            if (ev == 2) { mask = core_rng_u32(&r) % 2 ? 0xFF : 2; masks++; }
+            if (ev == 3 && !gone && g_w.scene.mesh_count > 1) {
+                gone = g_w.scene.meshes[core_rng_u32(&r) % g_w.scene.mesh_count];
+                TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_remove_mesh(&g_w.scene, gone));
+                removed++;
+            } else if (ev == 4 && gone) {
+                TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&g_w.scene, gone));
+                gone = NULL;
+            }
+            /* instance 0 moves (a platform the game writes every frame) in half the worlds */
+            if (wi % 2) {
+                float ph = 0.05f * (float)st;
+                g_w.inst[0].xf.pos.x = xf0.pos.x + 0.3f * sinf(ph);
+                g_w.inst[0].xf.pos.y = xf0.pos.y + 0.01f * (float)(st % 3);
+                if (st % 7 == 3) {
+                    fm_quat_t q = g_w.inst[0].xf.rot;
+                    q.x += 0.01f;
+                    g_w.inst[0].xf.rot = q;
+                }
+                moved++;
+            }
+            fm_vec3_t lo, hi, flo, fhi;
+            float grow = (float)core_rng_range(&r, 0.0, 1.2);
+            for (int a = 0; a < 3; a++) {
+                lo.v[a] = c.v[a] - half.v[a];
+                hi.v[a] = c.v[a] + half.v[a];
+                float ahead = (float)core_rng_range(&r, -0.5, 0.5);
+                flo.v[a] = lo.v[a] - grow + (ahead < 0.0f ? ahead : 0.0f);
+                fhi.v[a] = hi.v[a] + grow + (ahead > 0.0f ? ahead : 0.0f);
+            }
+            ASSERT_NO_ALLOC(coll_gather_begin_cached(&gc, &cache, &g_w.scene, lo, hi, flo, fhi, mask, COLL_TYPE_MESH));
+            coll_gather_begin(&gf, &g_w.scene, lo, hi, mask, COLL_TYPE_MESH);
+            assert_same_gather(&gc, &gf);
+            steps++;
+            kept += gc.ntris;
+            /* the same answers, bit for bit (the queries fill the triangles' prep as they go) */
+            fm_vec3_t down = {{0.0f, -1.0f, 0.0f}}, axis = {{0.0f, 1.0f, 0.0f}};
+            fm_vec3_t disp = {{(float)core_rng_range(&r, -0.3, 0.3), (float)core_rng_range(&r, -0.3, 0.1),
+                               (float)core_rng_range(&r, -0.3, 0.3)}};
+            float rad = 0.5f * f_min(half.x, half.z), ihh = 0.3f * half.y;
+            coll_ray_hit_t rh[2];
+            coll_sweep_hit_t sh[2];
+            coll_contact_t ct[2][8];
+            memset(rh, 0, sizeof rh);
+            memset(sh, 0, sizeof sh);
+            memset(ct, 0, sizeof ct);
+            coll_gather_t *gg[2] = { &gc, &gf };
+            bool rb[2], sb[2];
+            uint32_t nc[2];
+            for (int i = 0; i < 2; i++) {
+                rb[i] = coll_gather_raycast(gg[i], c, down, 0.9f * half.y, &rh[i]);
+                sb[i] = coll_gather_capsule_sweep(gg[i], c, axis, rad, ihh, disp, &sh[i]);
+                nc[i] = coll_gather_capsule_overlaps(gg[i], c, axis, rad, ihh, ct[i], 8);
+            }
+            TEST_ASSERT_EQUAL_INT(rb[0], rb[1]);
+            TEST_ASSERT_EQUAL_MEMORY(&rh[0], &rh[1], sizeof rh[0]);
+            TEST_ASSERT_EQUAL_INT(sb[0], sb[1]);
+            TEST_ASSERT_EQUAL_MEMORY(&sh[0], &sh[1], sizeof sh[0]);
+            TEST_ASSERT_EQUAL_UINT(nc[0], nc[1]);
+            TEST_ASSERT_EQUAL_MEMORY(ct[0], ct[1], sizeof ct[0]);
+        }
+        if (gone) TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&g_w.scene, gone));
+        hits += cache.hits;
+        fills += cache.fills;
+        overflows += cache.overflows;
+    }
+    printf("gather cache: %u steps, %u hits, %u refills, %u overflows, %u kept triangles; %u moved, %u removed, "
+           "%u mask changes\n",
+           steps, hits, fills, overflows, kept, moved, removed, masks);
+    TEST_ASSERT_TRUE(hits > steps / 4);
+    TEST_ASSERT_TRUE(fills > (uint32_t)N_WORLDS);
+    TEST_ASSERT_TRUE(overflows > 0u);
+    TEST_ASSERT_TRUE(kept > steps);
+    TEST_ASSERT_TRUE(removed > 0u && masks > 0u);
+}
+
 static void test_grid_kinds_covered(void)
 {
     printf("grids built: %u dense, %u hashed\n", g_dense_built, g_hashed_built);
@@ -1590,6 +1716,7 @@ int main(void)
     RUN_TEST(test_initial_overlap_deepest_and_overlaps_list);
     RUN_TEST(test_dedup_overflow_falls_back_exactly);
     RUN_TEST(test_gather_shrinks_its_box_on_dense_triangles);
+    RUN_TEST(test_gather_cache_equals_fresh_gather);
     RUN_TEST(test_precision_far_from_origin);
     RUN_TEST(test_moving_platform_read_every_query);
     RUN_TEST(test_ray_along_cell_boundary);

@@ -170,8 +170,21 @@ static int fail_kind_from_name(const char *n)
     return -1;
 }
 
+/* SOAK_GATHER_CACHE=1: the caches' counters over the run, printed to stderr at exit. */
+static unsigned long long g_gc_hits, g_gc_fills, g_gc_overflows, g_gc_steps;
+static void gather_cache_report(void)
+{
+    fprintf(stderr, "gather cache: %llu hits, %llu refills, %llu overflows\n", g_gc_hits, g_gc_fills, g_gc_overflows);
+}
+
 void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t start)
 {
+    if (sim->body.gather_cache == &sim->gather_cache) {
+        if (g_gc_steps++ == 0) atexit(gather_cache_report);
+        g_gc_hits += sim->gather_cache.hits;
+        g_gc_fills += sim->gather_cache.fills;
+        g_gc_overflows += sim->gather_cache.overflows;
+    }
     memset(sim, 0, sizeof *sim);
     sim->lvl = lvl;
     soak_level_animate(lvl, 0.0);
@@ -179,6 +192,8 @@ void soak_sim_begin(soak_sim_t *sim, soak_level_t *lvl, const char_body_settings
     char_body_init(&sim->body, &sim->owner);
     char_body_configure(&sim->body, s);
     char_body_teleport(&sim->body, start, true);
+    const char *gc = getenv("SOAK_GATHER_CACHE"); /* the bodies' gather cache (perf14: answers bit for bit) */
+    if (gc && gc[0] == '1') char_body_set_gather_cache(&sim->body, &sim->gather_cache);
     sim->excused = true; /* the start point may be inside geometry */
     sim->checks = SOAK_CHECKS_CURRENT;
     sim->oracles = SOAK_ORACLES_ALL;

@@ -271,6 +271,7 @@ typedef struct {
     soak_level_t *lvl;
     char_body_t body;
     fm_vec3_t owner;
+    coll_gather_cache_t gather_cache; ///< the body's, when SOAK_GATHER_CACHE=1 in the environment
     double time;
     uint32_t frame;
     bool excused;

@@ -122,6 +122,54 @@ typedef struct {
     .coll_types = COLL_TYPE_MESH, .max_slides = 4, .read_mask = 0x01, .follow_floor = true, \
     .units_per_meter = 1.0f })
 
+/**
+ * Optional per-body gather cache (char_body_set_gather_cache()). A step gathers the mesh
+ * triangles around the body once (its box: the capsule grown by the step's reach). With a
+ * cache, a refill keeps the mesh-local triangles of a larger box (the step's, swept six
+ * steps ahead at the step's velocity, at most 1 m, and grown by 0.1 m; in units_per_meter)
+ * and the following steps take theirs from it while the cache still covers them: the same
+ * scene and mesh list, each instance seen then still on the same mesh, and the step's box,
+ * taken into each instance's mesh space under its transform now, inside the mesh-space box
+ * the cache walked there (so a moving or turning platform keeps its cached triangles until
+ * the body leaves their box, and the game may write inst->xf any frame). Otherwise the
+ * cache is refilled. The step sees exactly the triangles a fresh gather would, in the same
+ * order, with bit-identical shapes (rebuilt from the cached mesh-local vertices by the
+ * fresh gather's own expressions): the body moves bit for bit as without a cache. Scenes
+ * with more than COLL_GATHER_CACHE_INSTANCES mesh instances, and refills meeting more than
+ * COLL_GATHER_CACHE_TRIS triangles or 64 grid cells of an instance, take the uncached gather.
+ * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,272 B on
+ * a 64-bit host); one cache serves one body. All fields are private.
+ */
+#define COLL_GATHER_CACHE_TRIS 64
+#define COLL_GATHER_CACHE_INSTANCES 8
+
+typedef struct {
+    const coll_mesh_instance_t *inst;
+    const coll_mesh_t *mesh;
+    fm_vec3_t llo, lhi;    ///< the mesh-local box the fill walked
+    uint32_t clo[3], chi[3]; ///< the grid cells it walked
+    uint8_t walked;        ///< seen and valid at the fill: llo..lhi holds
+    uint8_t first, count;  ///< its triangles: order[first .. first + count - 1]
+} coll_gather_cache_inst_t;
+
+typedef struct {
+    fm_vec3_t v0, d1, d2;  ///< mesh-local first vertex (dequantized) and the other two less it
+    fm_vec3_t blo, bhi;    ///< mesh-local box of the three vertices
+    uint32_t tri;
+    uint64_t cells;        ///< the walked cells whose list has it (bit per cell, x fastest)
+} coll_gather_cache_tri_t;
+
+typedef struct coll_gather_cache_s {
+    const coll_scene_t *scene;
+    uint8_t ninst, ntris;
+    uint8_t valid;
+    uint8_t backoff;       ///< misses left without a refill after an overflow
+    uint32_t hits, fills, overflows; ///< counters: steps taken from the cache, refills, overflows
+    coll_gather_cache_inst_t inst[COLL_GATHER_CACHE_INSTANCES];
+    uint8_t order[COLL_GATHER_CACHE_TRIS]; ///< tris[] by instance, then triangle index
+    coll_gather_cache_tri_t tris[COLL_GATHER_CACHE_TRIS];
+} coll_gather_cache_t;
+
 /** A character body. Only input_velocity is meant to be written directly. */
 typedef struct char_body_s {
     fm_vec3_t input_velocity;      ///< desired motion, m/s; only the part across up is used
@@ -134,6 +182,7 @@ typedef struct char_body_s {
     fm_vec3_t floor_local_point;   ///< foot contact in the floor instance's local space
     fm_vec3_t floor_world_point;   ///< the same contact in world space when it was recorded
     fm_vec3_t origin;              ///< the body's own origin when owner_pos is NULL; last good position
+    float drop_time;               ///< s left falling through one-way platforms (private)
     const coll_mesh_instance_t *floor_instance; ///< mesh instance stood on (carry), or NULL
     float cos_floor_max_angle;     ///< cached cos(settings.floor_max_angle)
     float inner_half_height;       ///< cached height / 2 - radius
@@ -145,7 +194,7 @@ typedef struct char_body_s {
     fm_vec3_t air_velocity;        ///< floor velocity across up kept since leaving it (private)
     coll_body_t *collider;         ///< the body's own collider, kept in sync, or NULL
     char_body_events_t events;     ///< what happened in the last step
-    float drop_time;               ///< s left falling through one-way platforms (private)
+    coll_gather_cache_t *gather_cache; ///< the game's gather cache, or NULL (char_body_set_gather_cache)
 } char_body_t;
 
 /** Default settings, owner_pos attached (may be NULL: the body then keeps its own origin). */
@@ -195,6 +244,13 @@ const char_body_events_t *char_body_events(const char_body_t *body);
  * detaches it. Bodies never push each other: each stops at or slides along the others.
  */
 void char_body_set_collider(char_body_t *body, coll_body_t *collider);
+
+/** Gives the body a gather cache (coll_gather_cache_t: owned by the game, one per body,
+ *  about 5 KB), emptied here; NULL detaches it (the uncached gather, as without one).
+ *  Steps then take their candidate triangles from it while the body stays in the box it
+ *  was filled for and the scene is unchanged: the same triangles and answers, fewer grid
+ *  walks (docs/BENCHMARKS.md, branch perf14). */
+void char_body_set_gather_cache(char_body_t *body, coll_gather_cache_t *cache);
 
 /** Drops through one-way platforms (COLL_INSTANCE_ONE_WAY): for as long as falling the
  *  body's height plus floor_snap_distance takes, they do not collide with it. */

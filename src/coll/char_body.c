@@ -197,6 +197,13 @@ void char_body_set_collider(char_body_t *body, coll_body_t *collider)
     sync_collider(body);
 }
 
+void char_body_set_gather_cache(char_body_t *body, coll_gather_cache_t *cache)
+{
+    if (!body) return;
+    body->gather_cache = cache;
+    if (cache) coll_gather_cache_reset(cache);
+}
+
 void char_body_drop_through(char_body_t *body)
 {
     if (!body) return;
@@ -290,7 +297,28 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         lo.v[a] = center.v[a] - ext + (up.v[a] > 0.0f ? -up.v[a] * below : -up.v[a] * c->step);
         hi.v[a] = center.v[a] + ext + (up.v[a] > 0.0f ? up.v[a] * c->step : -up.v[a] * below);
     }
-    coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
+    if (!b->gather_cache) {
+        coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
+        return;
+    }
+    /* With a cache, a refill keeps the triangles of a larger box: this step's, and where it
+     * will be CB_GATHER_CACHE_STEPS steps on at this velocity (the input across up, the
+     * velocity along up; at most CB_GATHER_CACHE_AHEAD ahead), grown by CB_GATHER_CACHE_MARGIN. */
+    fm_vec3_t in_h = v3_reject(input, up), vel;
+    if ((b->flags & (CB_FLAG_GROUNDED | CB_FLAG_STEEP)) == CB_FLAG_GROUNDED)
+        vel = follow_slope(in_h, up, b->floor_normal, c->unit); /* up or down the floor walked */
+    else vel = v3_madd(in_h, up, v3_dot(b->velocity, up));
+    fm_vec3_t ahead = v3_scale(vel, (float)CB_GATHER_CACHE_STEPS * dt);
+    float la = v3_len(ahead), amax = CB_GATHER_CACHE_AHEAD * c->unit;
+    if (!(la <= amax)) ahead = la > 0.0f && isfinite(la) ? v3_scale(ahead, amax / la) : v3(0.0f, 0.0f, 0.0f);
+    float mg = CB_GATHER_CACHE_MARGIN * c->unit;
+    fm_vec3_t flo, fhi;
+    for (int a = 0; a < 3; a++) {
+        flo.v[a] = lo.v[a] + (ahead.v[a] < 0.0f ? ahead.v[a] : 0.0f) - mg;
+        fhi.v[a] = hi.v[a] + (ahead.v[a] > 0.0f ? ahead.v[a] : 0.0f) + mg;
+    }
+    coll_gather_begin_cached(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask,
+                             b->settings.coll_types);
 }
 
 /**

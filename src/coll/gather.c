@@ -187,3 +187,323 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         grid_walk_end(&w, scene);
     }
 }
+
+/* ------------------------------------------------------------------ the cache ------ */
+#ifdef GATHER_CACHE_CHECK
+void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t rm, uint8_t ty);
+#endif
+
+/* After a refill overflows, the next misses take the uncached gather without trying. */
+#define CACHE_BACKOFF 8u
+
+void coll_gather_cache_reset(coll_gather_cache_t *cache)
+{
+    if (!cache) return;
+    cache->scene = NULL;
+    cache->ninst = cache->ntris = 0;
+    cache->valid = 0;
+    cache->backoff = 0;
+    cache->hits = cache->fills = cache->overflows = 0;
+}
+
+/* The gathered box's centre and half size from lo..hi, as coll_gather_begin sets them. */
+static inline void box_of(fm_vec3_t lo, fm_vec3_t hi, fm_vec3_t *origin, fm_vec3_t *glo, fm_vec3_t *ghi)
+{
+    for (int a = 0; a < 3; a++) {
+        origin->v[a] = 0.5f * (lo.v[a] + hi.v[a]);
+        ghi->v[a] = 0.5f * (hi.v[a] - lo.v[a]);
+        glo->v[a] = -ghi->v[a];
+    }
+}
+
+/* An instance coll_gather_begin walks: seen, on a mesh with triangles, a valid transform. */
+static inline bool inst_walked(const coll_mesh_instance_t *inst, uint8_t read_mask, xf3_t *x)
+{
+    if (!inst || !(inst->write_mask & read_mask)) return false;
+    const coll_mesh_t *m = inst->mesh;
+    return m && m->ntris != 0 && xf_prepare(&inst->xf, x);
+}
+
+/* The cache's slot of triangle t among the ones kept so far for this instance (a small
+ * open-addressed table, slot + 1, 0 empty), or the place to put it. */
+#define FILL_HASH_BITS 7
+CAND_INLINE uint32_t fill_probe(const uint8_t *tab, const coll_gather_cache_t *c, uint32_t t)
+{
+    uint32_t h = (t * 2654435761u) >> (32 - FILL_HASH_BITS);
+    while (tab[h] != 0u && c->tris[tab[h] - 1u].tri != t) h = (h + 1u) & ((1u << FILL_HASH_BITS) - 1u);
+    return h;
+}
+
+/* One instance's walk of a refill (the layout a constant at each call, as gather_walk):
+ * every listing of a triangle whose box meets the walk's box sets its cell's bit; a new one
+ * takes the next slot and its place in order[] by triangle index. False: the cache is full. */
+CAND_INLINE bool fill_walk(coll_gather_cache_t *c, grid_walk_t *w, uint32_t *np, uint32_t first, const uint32_t lay)
+{
+    uint8_t tab[1u << FILL_HASH_BITS];
+    memset(tab, 0, sizeof(tab));
+    uint32_t n = *np;
+    const uint32_t nx = w->chi[0] - w->clo[0] + 1u, ny = w->chi[1] - w->clo[1] + 1u;
+    const fm_vec3_t blo = *w->llo, bhi = *w->lhi;
+    while (grid_walk_next_cell(w)) {
+        const uint64_t bit = 1ull << (((w->c[2] - w->clo[2]) * ny + (w->c[1] - w->clo[1])) * nx + (w->c[0] - w->clo[0]));
+        for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
+            uint32_t t;
+            fm_vec3_t v[3];
+            if (!grid_walk_take_box(w, lay, k, &t, v, &blo, &bhi)) continue;
+            uint32_t h = fill_probe(tab, c, t);
+            if (tab[h] != 0u) {
+                c->tris[tab[h] - 1u].cells |= bit;
+                continue;
+            }
+            if (n >= COLL_GATHER_CACHE_TRIS) return false;
+            tab[h] = (uint8_t)(n + 1u);
+            coll_gather_cache_tri_t *ct = &c->tris[n];
+            ct->v0 = v[0];
+            fm_vec3_sub(&ct->d1, &v[1], &v[0]); /* tri_rel_of's local differences */
+            fm_vec3_sub(&ct->d2, &v[2], &v[0]);
+            for (int a = 0; a < 3; a++) {
+                ct->blo.v[a] = f_min(v[0].v[a], f_min(v[1].v[a], v[2].v[a]));
+                ct->bhi.v[a] = f_max(v[0].v[a], f_max(v[1].v[a], v[2].v[a]));
+            }
+            ct->tri = t;
+            ct->cells = bit;
+            /* its place by triangle index (a cell lists its triangles in order: mostly last) */
+            uint32_t j = n;
+            while (j > first && c->tris[c->order[j - 1u]].tri > t) {
+                c->order[j] = c->order[j - 1u];
+                j--;
+            }
+            c->order[j] = (uint8_t)n;
+            n++;
+        }
+    }
+    *np = n;
+    return true;
+}
+
+/* Refills the cache with the mesh-local triangles of the world box lo..hi: each walked
+ * instance's local box (coll_gather_begin's) and its grid cells (at most 64 of them), every
+ * triangle a cell under it lists whose box meets it (the walk's own test), with the cells
+ * that list it, ordered by triangle index within the instance. False when they are more
+ * than the cache holds. */
+static bool cache_fill(coll_gather_cache_t *c, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
+                       uint8_t read_mask)
+{
+    c->valid = 0;
+    c->scene = scene;
+    c->ntris = 0;
+    c->ninst = (uint8_t)scene->mesh_count;
+    fm_vec3_t origin, glo, ghi;
+    box_of(lo, hi, &origin, &glo, &ghi);
+    seen_t seen;
+    seen_init(&seen);
+    uint32_t n = 0;
+    for (uint16_t i = 0; i < scene->mesh_count; i++) {
+        const coll_mesh_instance_t *inst = scene->meshes[i];
+        coll_gather_cache_inst_t *ci = &c->inst[i];
+        ci->inst = inst;
+        ci->mesh = inst ? inst->mesh : NULL;
+        ci->walked = 0;
+        ci->first = (uint8_t)n;
+        ci->count = 0;
+        xf3_t x;
+        if (!inst_walked(inst, read_mask, &x)) continue;
+        const coll_mesh_t *m = inst->mesh;
+        fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &origin);
+        local_box(m, &x, &o_l, &glo, &ghi, &ci->llo, &ci->lhi);
+        ci->walked = 1;
+        grid_walk_t w;
+        if (!grid_walk_box(&w, m, &ci->llo, &ci->lhi, &seen)) {
+            ci->clo[0] = ci->clo[1] = ci->clo[2] = 1u; /* no cells: a box inside it misses the mesh too */
+            ci->chi[0] = ci->chi[1] = ci->chi[2] = 0u;
+            continue;
+        }
+        uint32_t nx = w.chi[0] - w.clo[0] + 1u, ny = w.chi[1] - w.clo[1] + 1u, nz = w.chi[2] - w.clo[2] + 1u;
+        if (w.walk_all || (uint64_t)nx * ny * nz > 64u) return false;
+        for (int a = 0; a < 3; a++) {
+            ci->clo[a] = w.clo[a];
+            ci->chi[a] = w.chi[a];
+        }
+        w.dedup = false; /* every listing is wanted: its cell's bit */
+        const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
+        uint32_t lay = grid_walk_layout(&w);
+        bool ok;
+        if (lay == I16) ok = fill_walk(c, &w, &n, ci->first, I16);
+        else if (lay == (COLL_MESHF_QUANT | I16)) ok = fill_walk(c, &w, &n, ci->first, COLL_MESHF_QUANT | I16);
+        else ok = fill_walk(c, &w, &n, ci->first, lay);
+        if (!ok) return false;
+        ci->count = (uint8_t)(n - ci->first);
+    }
+    c->ntris = (uint8_t)n;
+    c->valid = 1;
+    return true;
+}
+
+/* The step's gather from the cache: per instance, coll_gather_begin's transform, local
+ * origin, local box and grid cells, then the cached triangles listed in one of those cells
+ * through the walk's local box test and the gather's relative form and box test
+ * (gather_walk's expressions). False, with g not usable, when the cache does not cover the
+ * box (a refill is needed). */
+static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
+{
+    const coll_scene_t *scene = g->scene;
+    if (!c->valid || c->scene != scene || c->ninst != scene->mesh_count) return false;
+    g->ntris = 0;
+    for (uint16_t i = 0; i < scene->mesh_count; i++) {
+        const coll_mesh_instance_t *inst = scene->meshes[i];
+        const coll_gather_cache_inst_t *ci = &c->inst[i];
+        if (ci->inst != inst) return false;
+        xf3_t x;
+        if (!inst_walked(inst, g->read_mask, &x)) continue;
+        const coll_mesh_t *m = inst->mesh;
+        if (!ci->walked || ci->mesh != m) return false;
+        fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &g->origin);
+        fm_vec3_t llo, lhi;
+        local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
+        for (int a = 0; a < 3; a++)
+            if (!(llo.v[a] >= ci->llo.v[a]) || !(lhi.v[a] <= ci->lhi.v[a])) return false;
+        if (ci->count == 0u) continue;
+        /* the cells grid_walk_box would walk (none: the box misses the mesh), as bits of
+         * the fill's (they lie inside them: the box does, and cell coordinates are monotone) */
+        uint32_t clo[3], chi[3];
+        if (!instance_cells(m, &llo, &lhi, clo, chi)) continue;
+        uint32_t nx = ci->chi[0] - ci->clo[0] + 1u, ny = ci->chi[1] - ci->clo[1] + 1u;
+        uint64_t row = ((2ull << (chi[0] - clo[0])) - 1u) << (clo[0] - ci->clo[0]), cells = 0;
+        for (uint32_t z = clo[2]; z <= chi[2]; z++)
+            for (uint32_t y = clo[1]; y <= chi[1]; y++)
+                cells |= row << (((z - ci->clo[2]) * ny + (y - ci->clo[1])) * nx);
+        /* The walk's candidates in the walk's order: the walk enters the cells in the order
+         * of their bits (x fastest, then y, then z, in the fill's cells as in its own) and
+         * a cell lists its triangles by index, so a triangle comes at the first of its
+         * cells the walk enters (the dedup drops the later ones), by index within it. The
+         * cached triangles are by index: a stable sort on that first cell's bit. */
+        uint64_t key[COLL_GATHER_CACHE_TRIS];
+        uint8_t idx[COLL_GATHER_CACHE_TRIS];
+        uint32_t nk = 0;
+        for (uint32_t k = ci->first, kend = k + ci->count; k < kend; k++) {
+            const coll_gather_cache_tri_t *ct = &c->tris[c->order[k]];
+            /* tri_box_reject's test: all three vertices below (above) the box on an axis is
+             * their largest below (smallest above) it */
+            uint64_t in = ct->cells & cells;
+            if (!in || ct->bhi.x < llo.x || ct->blo.x > lhi.x || ct->bhi.z < llo.z || ct->blo.z > lhi.z ||
+                ct->bhi.y < llo.y || ct->blo.y > lhi.y)
+                continue;
+            uint64_t kb = in & (0u - in); /* the first cell's bit */
+            uint32_t j = nk++;
+            for (; j > 0u && key[j - 1u] > kb; j--) {
+                key[j] = key[j - 1u];
+                idx[j] = idx[j - 1u];
+            }
+            key[j] = kb;
+            idx[j] = c->order[k];
+        }
+        for (uint32_t j = 0; j < nk; j++) {
+            const coll_gather_cache_tri_t *ct = &c->tris[idx[j]];
+            /* tri_rel_of's expressions, on the differences it computes */
+            fm_vec3_t w0, e1, e2, lo, hi;
+            if (x.simple) {
+                fm_vec3_sub(&w0, &ct->v0, &o_l);
+                e1 = ct->d1;
+                e2 = ct->d2;
+            } else {
+                const xf3_t *xc = &x;
+                fm_vec3_t d;
+                fm_vec3_sub(&d, &ct->v0, &o_l);
+                w0 = mul3(xc->m, &d);
+                e1 = mul3(xc->m, &ct->d1);
+                e2 = mul3(xc->m, &ct->d2);
+            }
+            bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
+                       tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
+                       tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+            if (out) continue;
+            coll_gather_tri_t *gt = &g->tris[g->ntris++];
+            gt->w0 = w0;
+            gt->e1 = e1;
+            gt->e2 = e2;
+            gt->lo = lo;
+            gt->hi = hi;
+            gt->inst = inst;
+            gt->tri = (int32_t)ct->tri;
+            gt->prep.ready = false;
+        }
+    }
+    return true;
+}
+
+void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                              fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+{
+    if (!cache || !scene || !(types & COLL_TYPE_MESH) || scene->mesh_count > COLL_GATHER_CACHE_INSTANCES ||
+        !vfin(&lo) || !vfin(&hi)) {
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
+        return;
+    }
+    g->scene = scene;
+    g->read_mask = read_mask;
+    g->types = types;
+    g->ntris = 0;
+    g->valid = true;
+    g->scale = 1.0f;
+    box_of(lo, hi, &g->origin, &g->lo, &g->hi);
+    if (gather_from_cache(g, cache)) {
+        cache->hits++;
+        STATS_ADD(scene, gathers);
+#ifdef GATHER_CACHE_CHECK
+        gather_cache_check(g, scene, lo, hi, read_mask, types);
+#endif
+        return;
+    }
+    if (cache->backoff) {
+        cache->backoff--;
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
+        return;
+    }
+    for (int a = 0; a < 3; a++) {
+        flo.v[a] = f_min(flo.v[a], lo.v[a]);
+        fhi.v[a] = f_max(fhi.v[a], hi.v[a]);
+    }
+    if (!vfin(&flo) || !vfin(&fhi) || !cache_fill(cache, scene, flo, fhi, read_mask)) {
+        cache->valid = 0;
+        cache->overflows++;
+        cache->backoff = CACHE_BACKOFF;
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
+        return;
+    }
+    cache->fills++;
+    if (gather_from_cache(g, cache)) {
+        STATS_ADD(scene, gathers);
+#ifdef GATHER_CACHE_CHECK
+        gather_cache_check(g, scene, lo, hi, read_mask, types);
+#endif
+        return;
+    }
+    coll_gather_begin(g, scene, lo, hi, read_mask, types); /* (rounding: the grown box did not cover it) */
+}
+#ifdef GATHER_CACHE_CHECK
+#include <stdio.h>
+#include <string.h>
+void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t rm, uint8_t ty);
+void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t rm, uint8_t ty)
+{
+    static coll_gather_t f;
+    coll_gather_begin(&f, scene, lo, hi, rm, ty);
+    int bad = f.ntris != g->ntris;
+    for (int i = 0; i < f.ntris && !bad; i++)
+        if (g->tris[i].inst != f.tris[i].inst || g->tris[i].tri != f.tris[i].tri) bad = 4;
+    for (int i = 0; i < f.ntris && !bad; i++) {
+        int found = 0;
+        for (int j = 0; j < g->ntris; j++)
+            if (g->tris[j].inst == f.tris[i].inst && g->tris[j].tri == f.tris[i].tri) {
+                found = 1;
+                if (memcmp(&g->tris[j].w0, &f.tris[i].w0, 5 * sizeof(fm_vec3_t))) { bad = 2; fprintf(stderr, "w0 %g %g\n", (double)g->tris[j].w0.x, (double)f.tris[i].w0.x);}
+            }
+        if (!found) bad = 3;
+    }
+    if (bad) {
+        fprintf(stderr, "GATHER CACHE MISMATCH %d: fresh %d cached %d\n", bad, f.ntris, g->ntris);
+        for (int i = 0; i < f.ntris; i++) fprintf(stderr, " f %p %d\n", (const void *)f.tris[i].inst, (int)f.tris[i].tri);
+        for (int i = 0; i < g->ntris; i++) fprintf(stderr, " c %p %d\n", (const void *)g->tris[i].inst, (int)g->tris[i].tri);
+    }
+}
+#endif

@@ -20,6 +20,7 @@
 #define COLL_GATHER_H
 
 #include "coll/scene.h"
+#include "coll/char_body.h"
 #include "prim.h"
 
 /** Triangles a gather keeps (96 bytes each on the console: the gather is 12.3 KB, on the
@@ -53,6 +54,20 @@ typedef struct {
  *  meet the world box lo..hi. Collider bodies are not gathered: queries test them as usual. */
 void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
                        uint8_t types);
+
+/** coll_gather_begin through a gather cache (coll_gather_cache_t, char_body.h): when the
+ *  cache covers the box (the same scene and mesh list, each walked instance on the same
+ *  mesh, and the box's mesh-local box under each instance's transform now inside the one
+ *  the cache walked), the gather is filtered from the cached triangles; otherwise the cache
+ *  is refilled for fill_lo..fill_hi (the caller's, around lo..hi) first. The gather is
+ *  coll_gather_begin's: the same triangles in the same order, each with the same w0, e1,
+ *  e2, lo, hi bit for bit. A refill that meets more than COLL_GATHER_CACHE_TRIS triangles
+ *  or 64 cells of an instance (or a scene of more than COLL_GATHER_CACHE_INSTANCES
+ *  instances) gives coll_gather_begin's gather, and the next few misses skip the refill. */
+void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                              fm_vec3_t hi, fm_vec3_t fill_lo, fm_vec3_t fill_hi, uint8_t read_mask, uint8_t types);
+/** Empties a cache (its counters too). */
+void coll_gather_cache_reset(coll_gather_cache_t *cache);
 
 /** coll_raycast / coll_capsule_sweep / coll_capsule_overlaps on the gathered scene (its
  *  read_mask and types). g NULL or invalid: nothing (use the scene functions). Not const:
