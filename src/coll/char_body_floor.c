@@ -428,11 +428,12 @@ again:;
                  * as past a steep side (drop_past_side), and what it meets there is the
                  * first contact, at most twice (soak s7 l56: a 0.5 m crack between two
                  * tiles 44 mm high beside a staircase, r 0.96; the foot stood on the floor
-                 * in the crack, 4 mm under the ball resting on the tile edges). Landing
-                 * only (airborne before the step): climbing stairs, the nosing two risers
-                 * ahead is such a contact every few steps, and the look cost 17 queries in
-                 * a 90-step climb (486 -> 503). */
-                if (over_floor && past < 2 && c1 > c->step && !(b->flags & CB_FLAG_GROUNDED) &&
+                 * in the crack, 4 mm under the ball resting on the tile edges). Not a
+                 * contact ahead of the body's motion: climbing stairs, the nosing two risers
+                 * ahead is such a contact every few steps (the stair step climbs it), and
+                 * looking past it cost 17 queries in a 90-step climb (486 -> 503). */
+                if (over_floor && past < 2 && c1 > c->step &&
+                    !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) &&
                     drop_past_side(c, &b0, len, &h1, &d1)) {
                     past++;
                     n1u = v3_dot(h1.normal, up);
