@@ -408,7 +408,16 @@ again:;
         /* (at the floor: within the step tolerance the caller's "higher than the floor"
          * uses, not the contact tolerance: a roll across a crack onto a tile 1.4 mm over
          * the floor the foot ray found through it holds the ball, soak s6 l211) */
-        if (over_floor && -contact > floor_gap - cb_len_tol(c, CB_STEP_EPS)) return false;
+        if (over_floor && -contact > floor_gap - cb_len_tol(c, CB_STEP_EPS)) {
+            /* A flat first contact's "roll" is a move a radius across up and a drop: one
+             * direction, far beyond the edges around the ball. Under a tilted up the ball
+             * over a notch where two raised tiles meet corner to corner cannot go down
+             * along up in any direction (soak s7 l291: r 0.92, up 5 degrees off y, the
+             * foot on the lower tile 14 mm under the ball resting on the corners); the
+             * move over the notch found the lower tile. The hole rule decides then. */
+            if (flat) goto hole;
+            return false;
+        }
         if (over_floor && !narrow && !(onto_floor && across_foot) && fabsf(c1 - c2) > 0.1f * r) goto hole;
         if (wedge) {
             normal = v3_norm(v3_add(h1.normal, h2.normal)); /* a wedge */
