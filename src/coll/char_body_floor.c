@@ -427,6 +427,11 @@ again:;
         } else {
             goto hole;
         }
+        /* the same for a flat first contact whose move-and-drop went out of reach (the
+         * floor beyond a notch lower than the snap reaches; over a floor, above): else a
+         * body the hole rule held there on landing is not held there standing, and falls
+         * back into it every other step, at rest in the air (soak s7 l293) */
+        if (flat && -contact > reach) goto hole;
         if (0) {
         hole: /* the roll found nothing to hold the ball: held only in a hole (ball_in_hole) */
             if (!ball_in_hole(c, v3_madd(b1, up, -0.5f * r), v3_norm(v3_reject(h1.normal, up)), under)) {
