@@ -301,13 +301,18 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     }
     if (!isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point)) return false;
     float n1u = v3_dot(h1.normal, up);
+    float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
+    /* Over a floor, a wall along up that the ball touches beside it (its normal across up)
+     * does not stop the drop: the ball slides down along it (drop_past_side) onto what is
+     * under it (soak s9 l92: the end face of a V valley's slope beside the ball, the foot
+     * gone down the slot between the slopes, 181 mm below their edges) */
+    if (over_floor && fabsf(n1u) <= 0.02f && drop_past_side(c, &b0, len, &h1, &d1)) n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
      * hovers over a slope (its capsule is too wide for it), it is not over a gap. */
     if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
         fabsf(v3_dot(v3_sub(under->point, h1.point), h1.normal)) < 1e-3f * (c->unit + r))
         return false;
-    float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     /* (past_side: once, off a wall face the ball leans on at the drop's start, within
      * CB_MARGIN across it) */
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
