@@ -318,6 +318,12 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     }
     if (!isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point)) return false;
     float n1u = v3_dot(h1.normal, up);
+    float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
+    /* Over a floor, a wall along up that the ball touches beside it (its normal across up)
+     * does not stop the drop: the ball slides down along it (drop_past_side) onto what is
+     * under it (soak s9 l92: the end face of a V valley's slope beside the ball, the foot
+     * gone down the slot between the slopes, 181 mm below their edges) */
+    if (over_floor && fabsf(n1u) <= 0.02f && drop_past_side(c, &b0, len, &h1, &d1)) n1u = v3_dot(h1.normal, up);
     if (!(n1u > 0.02f)) return false; /* not under the ball */
     /* Resting on the very plane the foot ray found out of reach below the foot: the body
      * hovers over a slope (its capsule is too wide for it), it is not over a gap. (The
@@ -328,7 +334,6 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
         fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < 1e-3f * (c->unit + r))
         return false;
-    float d1 = h1.t > 0.0f ? h1.t * len : 0.0f;
     /* (past_side: once, off a wall face the ball leans on at the drop's start, within
      * CB_MARGIN across it) */
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
@@ -339,6 +344,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         if (!(n1u > 0.02f)) return false;
     }
     int past = 0; /* drops past a first contact beside the sweep capsule (below) */
+    bool rolled_off = false; /* dropped on past the first contact its roll fell off (below) */
 again:;
     float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
@@ -403,8 +409,27 @@ again:;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
             }
         }
-        if (!met) /* rolls off (a ledge), unless the ball is in a hole */
-            goto hole;
+        if (!met) {
+            /* Over a floor, the ball rolled off an edge higher above it than the roll
+             * descends (half a radius): it falls on past that edge, and when what it meets
+             * further down is a floor's face (a tile's top around the foot), that is the
+             * first contact (once; soak s10 l161: the top edge of a ledge 0.82 m over tiles
+             * with 9 mm gaps between them, the foot in one, 43 mm below the tiles) */
+            fm_vec3_t b0p = b0, fn;
+            coll_sweep_hit_t h1p = h1;
+            float d1p = d1;
+            if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r && drop_past_side(c, &b0p, len, &h1p, &d1p) &&
+                coll_cb_face_normal(&h1p, &fn) && v3_dot(fn, up) >= b->cos_floor_max_angle) {
+                b0 = b0p;
+                h1 = h1p;
+                d1 = d1p;
+                rolled_off = true;
+                n1u = v3_dot(h1.normal, up);
+                if (!(n1u > 0.02f)) return false;
+                goto again;
+            }
+            goto hole; /* rolls off (a ledge), unless the ball is in a hole */
+        }
         if (!isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
             return false; /* rolls into a ceiling */
         if (descent > 0.5f * r) goto hole;
