@@ -657,11 +657,15 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
                       coll_tri_prep_t *prep, float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp)) return false;
+    /* (prim_sane and prim_sane3 on all of them, one branch: prim_room_ok) */
+    if (!(r >= 0.0f) || !(t_max >= 0.0f)) return false;
+    if (!prim_room_ok(prim_room_bits(r) | prim_room_bits(t_max) | prim_room3(seg[0]) | prim_room3(seg[1]) |
+                      prim_room3(*disp)))
+        return false;
     /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
-    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
-    if (!prim_sane3(v3_scale(*disp, t_max))) return false;
+    if (!(prep && prep->ready) && !prim_room_ok(prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
+    if (!prim_room_ok(prim_room3(v3_scale(*disp, t_max)))) return false;
 
     sweep_ctx_t c;
     tri_setup_keep(&c.tri, tri, prep);
@@ -875,9 +879,9 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                         coll_prim_hit_t *hit)
 {
     if (!seg || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !prim_sane(r)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1])) return false;
-    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
+    if (!(r >= 0.0f) || !prim_room_ok(prim_room_bits(r) | prim_room3(seg[0]) | prim_room3(seg[1]))) return false;
+    if (!(prep && prep->ready) && !prim_room_ok(prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
     tri_t t;
     tri_setup_keep(&t, tri, prep);
     float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
@@ -941,8 +945,9 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
                        float s_max, coll_prim_hit_t *hit)
 {
     if (!o || !d || !tri || !hit) return false;
-    if (!prim_sane3(*o) || !prim_sane3(*d) || !(s_max >= 0.0f)) return false;
-    if (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!(s_max >= 0.0f)) return false;
+    if (!prim_room_ok(prim_room3(*o) | prim_room3(*d) | prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
     int kz = 0;
     float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
     if (ay > ax && ay >= az) kz = 1;
