@@ -1001,6 +1001,62 @@ static void test_held_end_cull_local_matches_plain(void)
     TEST_ASSERT_TRUE(n_hits > 500);
 }
 
+/* The start pair's cull in large coordinates (tri_sweep: where only the allowance of 1e-6 of
+ * the coordinates' magnitude kept the start's closest pair from separating, it is measured
+ * again from the pair's point on the triangle, sweep_separated_at): a ball rolled along a
+ * 40 m edge (the crack rule's roll beside a crack in a 100 m floor) near the first vertex and
+ * 100 m and 300 m from it, starting at r - 1e-4 .. r + 3e-4 from the edge, its motion along
+ * the tangent and slightly into or away from the edge. The float inputs' exact least
+ * distance over the motion (double) decides: no hit when it stays 1e-5 above rin (never
+ * deeper than the touch tolerance), a hit when it goes 1e-5 below rin. */
+static void test_start_pair_local_cull_rolls(void)
+{
+    const prim_ref_v3 quads[2][4] = {
+        { { -20, 0, -0.2 }, { 20, 0, -0.2 }, { 20, 0, -20 }, { -20, 0, -20 } },   /* slab A's top */
+        { { -20, 0, -0.2 }, { 20, 0, -0.2 }, { 20, -1, -0.2 }, { -20, -1, -0.2 } }, /* its side */
+    };
+    const double offs[] = { 0.0, 100.0, 300.0 };
+    int n_clear = 0, n_deep = 0, n_near = 0;
+    for (int o = 0; o < 3; o++)
+    for (int i = 0; i < 1500; i++) {
+        double r = rnd_range(0.3, 0.6), tol = 1e-4, rin = r - tol;
+        double x0 = rnd_range(-15, 15), th = rnd_range(0.15, 1.4);
+        prim_ref_v3 n = { 0, cos(th), sin(th) }, tg = { 0, -sin(th), cos(th) };
+        double clear = rnd_range(-1e-4, 3e-4), into = rnd() < 0.3 ? 0.0 : rnd_range(-2e-4, 6e-4);
+        prim_ref_v3 c = prim_ref_add(prim_ref_v(x0 + offs[o], 0, -0.2), prim_ref_scale(n, r + clear));
+        prim_ref_v3 dd = prim_ref_add(prim_ref_scale(tg, rnd() < 0.5 ? rnd_range(0.0, 0.02) : rnd_range(0.2, 1.0)),
+                                      prim_ref_scale(n, -into));
+        dd.x = rnd_range(-0.05, 0.05);
+        int q = i & 1, split = (i >> 1) & 1;
+        const prim_ref_v3 *v = quads[q];
+        prim_ref_v3 tr[3] = { v[0], v[1], split ? v[2] : v[3] }; /* both splits hold the edge */
+        for (int k = 0; k < 3; k++) tr[k].x += offs[o];
+        /* float inputs relative to the first vertex, and their exact least distance */
+        fm_vec3_t tri[3], seg[2], d = F(dd);
+        for (int k = 0; k < 3; k++) tri[k] = F(prim_ref_sub(tr[k], tr[0]));
+        seg[0] = seg[1] = F(prim_ref_sub(c, tr[0]));
+        prim_ref_v3 rt[3], a = { seg[0].x, seg[0].y, seg[0].z }, dref = { d.x, d.y, d.z }, ps, pt;
+        for (int k = 0; k < 3; k++) rt[k] = prim_ref_v(tri[k].x, tri[k].y, tri[k].z);
+        if (prim_ref_seg_tri(a, a, rt, &ps, &pt) < rin + 1e-5) continue; /* starts deeper */
+        double dmin = prim_ref_seg_tri(a, prim_ref_add(a, dref), rt, &ps, &pt);
+        coll_prim_hit_t h;
+        bool got = coll_tri_sweep_prep(seg, (float)r, &d, tri, NULL, 1.0f, false, &h);
+        if (dmin > rin + 1e-5) {
+            if (got) printf("start pair cull: o %d i %d: hit t %.9g, least distance rin + %.3g\n", o, i, (double)h.t, dmin - rin);
+            TEST_ASSERT_FALSE(got);
+            n_clear++;
+        } else if (dmin < rin - 1e-5) {
+            if (!got) printf("start pair cull: o %d i %d: no hit, least distance rin - %.3g\n", o, i, rin - dmin);
+            TEST_ASSERT_TRUE(got);
+            n_deep++;
+        } else {
+            n_near++;
+        }
+    }
+    printf("start pair cull: %d clear, %d deeper than the tolerance, %d within 1e-5 of it\n", n_clear, n_deep, n_near);
+    TEST_ASSERT_TRUE(n_clear > 1000 && n_deep > 300);
+}
+
 /* ray_sphere's early rejection (an entry after s_max found before the square root) must
  * agree bit for bit with the full root: the full test here (the code before it), run on
  * random rays whose s_max is put exactly at, just before and just after the entry, near
@@ -1249,5 +1305,6 @@ int main(void)
     RUN_TEST(test_overlap_boundary_axis_cull);
     RUN_TEST(test_held_end_cull_matches_plain);
     RUN_TEST(test_held_end_cull_local_matches_plain);
+    RUN_TEST(test_start_pair_local_cull_rolls);
     return UNITY_END();
 }

@@ -548,6 +548,25 @@ PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
 
+/* sweep_separated_k (rc, slack), telling apart a miss by the allowance alone: 1 separated,
+ * 2 separated without the allowance but not with it, 0 not even without it. */
+PRIM_INLINE int sweep_separated_why(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+{
+    const fm_vec3_t u = *pu;
+    float uu = v3_len2(u);
+    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return 0;
+    const tri_t *t = &c->tri;
+    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
+    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
+    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    if (!(sep > 0.0f)) return 0;
+    float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
+    float rr = rc * 1.0001f + 1e-7f;
+    float sepa = sep - slack * u1 * sweep_mag(c);
+    if (sepa > 0.0f && sepa * sepa > rr * rr * uu) return 1;
+    return sep * sep > rr * rr * uu ? 2 : 0;
+}
+
 /* |u . w| summed term by term: what the rounding of u . w (and of w's own subtraction)
  * scales with. */
 static inline float v3_abs_dot(fm_vec3_t u, fm_vec3_t w)
@@ -638,11 +657,15 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
                       coll_tri_prep_t *prep, float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
 {
     if (!seg || !disp || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !prim_sane(r) || !(t_max >= 0.0f) || !prim_sane(t_max)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1]) || !prim_sane3(*disp)) return false;
+    /* (prim_sane and prim_sane3 on all of them, one branch: prim_room_ok) */
+    if (!(r >= 0.0f) || !(t_max >= 0.0f)) return false;
+    if (!prim_room_ok(prim_room_bits(r) | prim_room_bits(t_max) | prim_room3(seg[0]) | prim_room3(seg[1]) |
+                      prim_room3(*disp)))
+        return false;
     /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
-    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
-    if (!prim_sane3(v3_scale(*disp, t_max))) return false;
+    if (!(prep && prep->ready) && !prim_room_ok(prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
+    if (!prim_room_ok(prim_room3(v3_scale(*disp, t_max)))) return false;
 
     sweep_ctx_t c;
     tri_setup_keep(&c.tri, tri, prep);
@@ -720,10 +743,17 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
             return true;
         }
         if (!moving) return false;
-        /* then the closest pair's direction at the start */
+        /* then the closest pair's direction at the start; with confirm, where only the
+         * allowance (1e-6 of the coordinates' magnitude) kept it from separating, again
+         * measured from the pair's point on the triangle (sweep_separated_at: a ball rolled
+         * along a crack's edge in a 100 m floor stays clear of it by 1e-4) */
         sep = v3_sub(ps, pt);
-        if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
+        if (confirm) {
+            int why = sweep_separated_why(&c, &sep, rin, t_max, 1e-6f);
+            if (why == 1 || (why == 2 && sweep_separated_at(&c, &sep, rin, t_max, &pt, edge0, ev0))) return false;
+        } else if (sweep_separated(&c, &sep, r, t_max)) {
             return false;
+        }
     }
 
     feat_hit_t best;
@@ -849,9 +879,9 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                         coll_prim_hit_t *hit)
 {
     if (!seg || !tri || !hit) return false;
-    if (!(r >= 0.0f) || !prim_sane(r)) return false;
-    if (!prim_sane3(seg[0]) || !prim_sane3(seg[1])) return false;
-    if (!(prep && prep->ready) && (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2]))) return false;
+    if (!(r >= 0.0f) || !prim_room_ok(prim_room_bits(r) | prim_room3(seg[0]) | prim_room3(seg[1]))) return false;
+    if (!(prep && prep->ready) && !prim_room_ok(prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
     tri_t t;
     tri_setup_keep(&t, tri, prep);
     float rin = r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
@@ -915,8 +945,9 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
                        float s_max, coll_prim_hit_t *hit)
 {
     if (!o || !d || !tri || !hit) return false;
-    if (!prim_sane3(*o) || !prim_sane3(*d) || !(s_max >= 0.0f)) return false;
-    if (!prim_sane3(tri[0]) || !prim_sane3(tri[1]) || !prim_sane3(tri[2])) return false;
+    if (!(s_max >= 0.0f)) return false;
+    if (!prim_room_ok(prim_room3(*o) | prim_room3(*d) | prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
+        return false;
     int kz = 0;
     float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
     if (ay > ax && ay >= az) kz = 1;

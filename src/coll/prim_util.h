@@ -29,6 +29,20 @@ static inline bool prim_sane3(fm_vec3_t v)
 {
     return (prim_over_bits(v.x) | prim_over_bits(v.y) | prim_over_bits(v.z)) == 0u;
 }
+/* prim_sane on many values with one branch: 1.0e7f's bits less |x|'s bits, negative (as a
+ * signed 32-bit value: both are below 2^31, so no overflow) exactly when prim_over_bits(x);
+ * OR them and test the sign once. */
+static inline uint32_t prim_room_bits(float x)
+{
+    union { float f; uint32_t u; } b = { x };
+    return 0x4b189680u - (b.u & 0x7fffffffu);
+}
+static inline uint32_t prim_room3(fm_vec3_t v)
+{
+    return prim_room_bits(v.x) | prim_room_bits(v.y) | prim_room_bits(v.z);
+}
+/* the OR of prim_room_* values: true when every one was sane */
+static inline bool prim_room_ok(uint32_t room) { return (room & 0x80000000u) == 0u; }
 
 /**
  * Sufficient (cheap) test that a contact goes deeper than the tolerance: the query's
