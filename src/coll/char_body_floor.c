@@ -441,7 +441,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
              * m crack between two lower blocks and out of its mouth, 1.5 m away; the foot
              * stood on the floor 45 mm under the crack's sag). As a roll that met nothing:
              * the ball is held only in a hole. */
-            if (v3_len2(v3_reject(v3_sub(h2.point, foot), up)) > r * r)
+            if (!flat && v3_len2(v3_reject(v3_sub(h2.point, foot), up)) > r * r)
                 return held_in_hole(c, b1, &h1, under, floor_gap, c1, reach, gap, out, far_out);
             return false;
         }
