@@ -301,6 +301,8 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
         return;
     }
+    if (coll_gather_from_cache(g, b->gather_cache, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types))
+        return;
     /* With a cache, a refill keeps the triangles of a larger box: this step's, and where it
      * will be CB_GATHER_CACHE_STEPS steps on at this velocity (the input across up, the
      * velocity along up; at most CB_GATHER_CACHE_AHEAD ahead), grown by CB_GATHER_CACHE_MARGIN. */
@@ -317,8 +319,7 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         flo.v[a] = lo.v[a] + (ahead.v[a] < 0.0f ? ahead.v[a] : 0.0f) - mg;
         fhi.v[a] = hi.v[a] + (ahead.v[a] > 0.0f ? ahead.v[a] : 0.0f) + mg;
     }
-    coll_gather_begin_cached(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask,
-                             b->settings.coll_types);
+    coll_gather_refill(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask, b->settings.coll_types);
 }
 
 /**

@@ -359,19 +359,35 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
         if (!ci->walked || ci->mesh != m) return false;
         fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &g->origin);
         fm_vec3_t llo, lhi;
-        local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
+        if (x.simple) { /* local_box's expressions for an identity transform */
+            float mg = m->grid_margin;
+            for (int a = 0; a < 3; a++) {
+                float cc = 0.5f * (g->lo.v[a] + g->hi.v[a]), h = 0.5f * (g->hi.v[a] - g->lo.v[a]);
+                llo.v[a] = o_l.v[a] + cc - h - mg;
+                lhi.v[a] = o_l.v[a] + cc + h + mg;
+            }
+        } else local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
         for (int a = 0; a < 3; a++)
             if (!(llo.v[a] >= ci->llo.v[a]) || !(lhi.v[a] <= ci->lhi.v[a])) return false;
         if (ci->count == 0u) continue;
         /* the cells grid_walk_box would walk (none: the box misses the mesh), as bits of
-         * the fill's (they lie inside them: the box does, and cell coordinates are monotone) */
-        uint32_t clo[3], chi[3];
-        if (!instance_cells(m, &llo, &lhi, clo, chi)) continue;
-        uint32_t nx = ci->chi[0] - ci->clo[0] + 1u, ny = ci->chi[1] - ci->clo[1] + 1u;
-        uint64_t row = ((2ull << (chi[0] - clo[0])) - 1u) << (clo[0] - ci->clo[0]), cells = 0;
-        for (uint32_t z = clo[2]; z <= chi[2]; z++)
-            for (uint32_t y = clo[1]; y <= chi[1]; y++)
-                cells |= row << (((z - ci->clo[2]) * ny + (y - ci->clo[1])) * nx);
+         * the fill's (they lie inside them: the box does, and cell coordinates are monotone);
+         * the fill's one cell: that cell, when the box meets the mesh's bounds */
+        uint64_t cells = 1u;
+        if (ci->clo[0] == ci->chi[0] && ci->clo[1] == ci->chi[1] && ci->clo[2] == ci->chi[2]) {
+            bool misses = false;
+            for (int a = 0; a < 3; a++) misses |= lhi.v[a] < m->bmin[a] || llo.v[a] > m->bmax[a];
+            if (misses) continue;
+        } else {
+            uint32_t clo[3], chi[3];
+            if (!instance_cells(m, &llo, &lhi, clo, chi)) continue;
+            uint32_t nx = ci->chi[0] - ci->clo[0] + 1u, ny = ci->chi[1] - ci->clo[1] + 1u;
+            uint64_t row = ((2ull << (chi[0] - clo[0])) - 1u) << (clo[0] - ci->clo[0]);
+            cells = 0u;
+            for (uint32_t z = clo[2]; z <= chi[2]; z++)
+                for (uint32_t y = clo[1]; y <= chi[1]; y++)
+                    cells |= row << (((z - ci->clo[2]) * ny + (y - ci->clo[1])) * nx);
+        }
         /* The walk's candidates in the walk's order: the walk enters the cells in the order
          * of their bits (x fastest, then y, then z, in the fill's cells as in its own) and
          * a cell lists its triangles by index, so a triangle comes at the first of its
@@ -431,14 +447,17 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
     return true;
 }
 
-void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                              fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+/* The cache can serve a gather of this scene and types at all. */
+static inline bool cache_usable(const coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                                fm_vec3_t hi, uint8_t types)
 {
-    if (!cache || !scene || !(types & COLL_TYPE_MESH) || scene->mesh_count > COLL_GATHER_CACHE_INSTANCES ||
-        !vfin(&lo) || !vfin(&hi)) {
-        coll_gather_begin(g, scene, lo, hi, read_mask, types);
-        return;
-    }
+    return cache && scene && (types & COLL_TYPE_MESH) && scene->mesh_count <= COLL_GATHER_CACHE_INSTANCES &&
+           vfin(&lo) && vfin(&hi);
+}
+
+static inline void gather_head(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
+                               uint8_t read_mask, uint8_t types)
+{
     g->scene = scene;
     g->read_mask = read_mask;
     g->types = types;
@@ -446,12 +465,27 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
     g->valid = true;
     g->scale = 1.0f;
     box_of(lo, hi, &g->origin, &g->lo, &g->hi);
-    if (gather_from_cache(g, cache)) {
-        cache->hits++;
-        STATS_ADD(scene, gathers);
+}
+
+bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                            fm_vec3_t hi, uint8_t read_mask, uint8_t types)
+{
+    if (!cache_usable(cache, scene, lo, hi, types) || !cache->valid) return false;
+    gather_head(g, scene, lo, hi, read_mask, types);
+    if (!gather_from_cache(g, cache)) return false;
+    cache->hits++;
+    STATS_ADD(scene, gathers);
 #ifdef GATHER_CACHE_CHECK
-        gather_cache_check(g, scene, lo, hi, read_mask, types);
+    gather_cache_check(g, scene, lo, hi, read_mask, types);
 #endif
+    return true;
+}
+
+void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                        fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+{
+    if (!cache_usable(cache, scene, lo, hi, types)) {
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     if (cache->backoff) {
@@ -471,6 +505,7 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
         return;
     }
     cache->fills++;
+    gather_head(g, scene, lo, hi, read_mask, types);
     if (gather_from_cache(g, cache)) {
         STATS_ADD(scene, gathers);
 #ifdef GATHER_CACHE_CHECK
@@ -480,6 +515,14 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
     }
     coll_gather_begin(g, scene, lo, hi, read_mask, types); /* (rounding: the grown box did not cover it) */
 }
+
+void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                              fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+{
+    if (!coll_gather_from_cache(g, cache, scene, lo, hi, read_mask, types))
+        coll_gather_refill(g, cache, scene, lo, hi, flo, fhi, read_mask, types);
+}
+
 #ifdef GATHER_CACHE_CHECK
 #include <stdio.h>
 #include <string.h>
