@@ -163,7 +163,9 @@ typedef struct coll_gather_cache_s {
     const coll_scene_t *scene;
     uint8_t ninst, ntris;
     uint8_t valid;
-    uint8_t backoff;       ///< misses left without a refill after an overflow
+    uint8_t backoff;       ///< misses left without a refill (after an overflow or unused refills)
+    uint8_t since;         ///< hits since the last refill (saturating)
+    uint8_t wasted;        ///< refills in a row that served no other step
     uint32_t hits, fills, overflows; ///< counters: steps taken from the cache, refills, overflows
     coll_gather_cache_inst_t inst[COLL_GATHER_CACHE_INSTANCES];
     uint8_t order[COLL_GATHER_CACHE_TRIS]; ///< tris[] by instance, then triangle index

@@ -203,6 +203,7 @@ void coll_gather_cache_reset(coll_gather_cache_t *cache)
     cache->ninst = cache->ntris = 0;
     cache->valid = 0;
     cache->backoff = 0;
+    cache->since = cache->wasted = 0;
     cache->hits = cache->fills = cache->overflows = 0;
 }
 
@@ -474,6 +475,7 @@ bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const 
     gather_head(g, scene, lo, hi, read_mask, types);
     if (!gather_from_cache(g, cache)) return false;
     cache->hits++;
+    if (cache->since < 255u) cache->since++;
     STATS_ADD(scene, gathers);
 #ifdef GATHER_CACHE_CHECK
     gather_cache_check(g, scene, lo, hi, read_mask, types);
@@ -493,6 +495,18 @@ void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll
         coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
+    /* a refill costs about twice a gather: after refills that served no other step (a body
+     * riding a fast turntable, the level turning under it) the next misses take the
+     * uncached gather, 4, 8, then 16 of them */
+    if (cache->valid && cache->since == 0u) {
+        if (cache->wasted < 3u) cache->wasted++;
+        cache->valid = 0;
+        cache->backoff = (uint8_t)((2u << cache->wasted) - 1u);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
+        return;
+    }
+    if (cache->since) cache->wasted = 0;
+    cache->since = 0;
     for (int a = 0; a < 3; a++) {
         flo.v[a] = f_min(flo.v[a], lo.v[a]);
         fhi.v[a] = f_max(fhi.v[a], hi.v[a]);
