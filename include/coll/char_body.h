@@ -140,8 +140,12 @@ typedef struct {
  * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,272 B on
  * a 64-bit host); one cache serves one body. All fields are private.
  */
-#define COLL_GATHER_CACHE_TRIS 64
-#define COLL_GATHER_CACHE_INSTANCES 8
+#ifndef COLL_GATHER_CACHE_TRIS
+#define COLL_GATHER_CACHE_TRIS 64 ///< at most 64 (the library and the game must agree)
+#endif
+#ifndef COLL_GATHER_CACHE_INSTANCES
+#define COLL_GATHER_CACHE_INSTANCES 8 ///< at most 255 (the library and the game must agree)
+#endif
 
 typedef struct {
     const coll_mesh_instance_t *inst;

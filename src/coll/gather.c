@@ -193,6 +193,9 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
 void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t rm, uint8_t ty);
 #endif
 
+_Static_assert(COLL_GATHER_CACHE_TRIS <= 64, "a refill marks the step's triangles in a 64-bit mask");
+_Static_assert(COLL_GATHER_CACHE_INSTANCES <= 255, "instance counts are 8-bit");
+
 /* After a refill overflows, the next misses take the uncached gather without trying. */
 #define CACHE_BACKOFF 8u
 
