@@ -137,7 +137,7 @@ typedef struct {
  * fresh gather's own expressions): the body moves bit for bit as without a cache. Scenes
  * with more than COLL_GATHER_CACHE_INSTANCES mesh instances, and refills meeting more than
  * COLL_GATHER_CACHE_TRIS triangles or 64 grid cells of an instance, take the uncached gather.
- * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,272 B on
+ * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,280 B on
  * a 64-bit host); one cache serves one body. All fields are private.
  */
 #ifndef COLL_GATHER_CACHE_TRIS
