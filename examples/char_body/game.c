@@ -116,6 +116,8 @@ void game_init(game_t *g, const game_level_t *level)
     char_body_init(&g->body, &g->pos);
     char_body_configure(&g->body, &s);
     char_body_teleport(&g->body, level->spawn, true);
+    /* each body keeps the triangles around it across steps (the same answers, fewer grid walks) */
+    char_body_set_gather_cache(&g->body, &g->gather_cache);
     g->collider = (coll_body_t){ .write_mask = 0x01, .id = GAME_PLAYER_COLLIDER_ID };
     char_body_set_collider(&g->body, &g->collider);
     coll_scene_add_body(&g->scene, &g->collider);
@@ -125,6 +127,7 @@ void game_init(game_t *g, const game_level_t *level)
         char_body_init(&n->body, &n->pos);
         char_body_configure(&n->body, &s);
         char_body_teleport(&n->body, n->pos, true);
+        char_body_set_gather_cache(&n->body, &n->gather_cache);
         n->collider = (coll_body_t){ .write_mask = 0x01, .id = (uint16_t)(GAME_NPC_ID0 + i) };
         char_body_set_collider(&n->body, &n->collider);
         coll_scene_add_body(&g->scene, &n->collider);

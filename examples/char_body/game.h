@@ -121,6 +121,7 @@ typedef struct {
 typedef struct {
     char_body_t body;
     fm_vec3_t pos;            ///< origin = capsule centre
+    coll_gather_cache_t gather_cache; ///< the body's gather cache (char_body_set_gather_cache)
     coll_body_t collider;     ///< registered in the game's scene
     bool to_b;                ///< walking towards b
 } game_npc_state_t;
@@ -133,6 +134,7 @@ typedef struct {
     coll_mesh_instance_t level_inst;
     char_body_t body;
     fm_vec3_t pos;           ///< player origin = capsule centre (body's owner position)
+    coll_gather_cache_t gather_cache; ///< the player's gather cache (char_body_set_gather_cache)
     fm_vec3_t up;            ///< current up (blended after a gravity toggle)
     fm_vec3_t cam_fwd;       ///< camera forward across up (unit, perpendicular to up)
     float cam_pitch;         ///< camera elevation above the player's horizon, radians

@@ -137,11 +137,15 @@ typedef struct {
  * fresh gather's own expressions): the body moves bit for bit as without a cache. Scenes
  * with more than COLL_GATHER_CACHE_INSTANCES mesh instances, and refills meeting more than
  * COLL_GATHER_CACHE_TRIS triangles or 64 grid cells of an instance, take the uncached gather.
- * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,272 B on
+ * The game owns the memory (sizeof(coll_gather_cache_t): 5,176 B on the console, 5,280 B on
  * a 64-bit host); one cache serves one body. All fields are private.
  */
-#define COLL_GATHER_CACHE_TRIS 64
-#define COLL_GATHER_CACHE_INSTANCES 8
+#ifndef COLL_GATHER_CACHE_TRIS
+#define COLL_GATHER_CACHE_TRIS 64 ///< at most 64 (the library and the game must agree)
+#endif
+#ifndef COLL_GATHER_CACHE_INSTANCES
+#define COLL_GATHER_CACHE_INSTANCES 8 ///< at most 255 (the library and the game must agree)
+#endif
 
 typedef struct {
     const coll_mesh_instance_t *inst;
@@ -163,7 +167,9 @@ typedef struct coll_gather_cache_s {
     const coll_scene_t *scene;
     uint8_t ninst, ntris;
     uint8_t valid;
-    uint8_t backoff;       ///< misses left without a refill after an overflow
+    uint8_t backoff;       ///< misses left without a refill (after an overflow or unused refills)
+    uint8_t since;         ///< hits since the last refill (saturating)
+    uint8_t wasted;        ///< refills in a row that served no other step
     uint32_t hits, fills, overflows; ///< counters: steps taken from the cache, refills, overflows
     coll_gather_cache_inst_t inst[COLL_GATHER_CACHE_INSTANCES];
     uint8_t order[COLL_GATHER_CACHE_TRIS]; ///< tris[] by instance, then triangle index

@@ -278,7 +278,8 @@ static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n, float u
 }
 
 /** Gathers the candidates of a step that starts at pos (see cb_ctx_t.gather). */
-static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_vec3_t input, float carry, float dt)
+static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_vec3_t input, fm_vec3_t carry_d,
+                        float dt)
 {
     const char_body_t *b = c->body;
     fm_vec3_t center = cb_center(c, pos), up = c->up;
@@ -287,6 +288,7 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
      * gravity; the velocity across up is the input's again, so it is not counted twice. */
     float speed = v3_len(v3_reject(input, up)) + v3_len(b->air_velocity) + fabsf(v3_dot(b->velocity, up)) +
                   b->slide_speed + b->settings.gravity * dt;
+    float carry = v3_len(carry_d);
     float move = speed * dt + carry + 4.0f * c->skin;
     /* the floor probe's reach, and the crack rule's ball dropped from the foot (it reaches
      * half a radius below the probe: ball_held in char_body_floor.c) */
@@ -301,14 +303,18 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
         return;
     }
+    if (coll_gather_from_cache(g, b->gather_cache, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types))
+        return;
     /* With a cache, a refill keeps the triangles of a larger box: this step's, and where it
-     * will be CB_GATHER_CACHE_STEPS steps on at this velocity (the input across up, the
-     * velocity along up; at most CB_GATHER_CACHE_AHEAD ahead), grown by CB_GATHER_CACHE_MARGIN. */
+     * will be CB_GATHER_CACHE_STEPS steps on at this velocity (the input across up, along
+     * the floor walked, or the velocity along up in the air; plus the platform's carry; at
+     * most CB_GATHER_CACHE_AHEAD ahead), grown by CB_GATHER_CACHE_MARGIN. */
     fm_vec3_t in_h = v3_reject(input, up), vel;
     if ((b->flags & (CB_FLAG_GROUNDED | CB_FLAG_STEEP)) == CB_FLAG_GROUNDED)
         vel = follow_slope(in_h, up, b->floor_normal, c->unit); /* up or down the floor walked */
     else vel = v3_madd(in_h, up, v3_dot(b->velocity, up));
-    fm_vec3_t ahead = v3_scale(vel, (float)CB_GATHER_CACHE_STEPS * dt);
+    /* (a platform's carry too: its steps are as long as the last one) */
+    fm_vec3_t ahead = v3_scale(v3_madd(carry_d, vel, dt), (float)CB_GATHER_CACHE_STEPS);
     float la = v3_len(ahead), amax = CB_GATHER_CACHE_AHEAD * c->unit;
     if (!(la <= amax)) ahead = la > 0.0f && isfinite(la) ? v3_scale(ahead, amax / la) : v3(0.0f, 0.0f, 0.0f);
     float mg = CB_GATHER_CACHE_MARGIN * c->unit;
@@ -317,8 +323,7 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         flo.v[a] = lo.v[a] + (ahead.v[a] < 0.0f ? ahead.v[a] : 0.0f) - mg;
         fhi.v[a] = hi.v[a] + (ahead.v[a] > 0.0f ? ahead.v[a] : 0.0f) + mg;
     }
-    coll_gather_begin_cached(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask,
-                             b->settings.coll_types);
+    coll_gather_refill(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask, b->settings.coll_types);
 }
 
 /**
@@ -423,7 +428,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     fm_vec3_t carry = v3(0.0f, 0.0f, 0.0f);
     bool carried = was_grounded && s->follow_floor && coll_cb_carry_delta(&c, &carry);
     coll_gather_t gather;
-    gather_step(&c, &gather, pos, input, v3_len(carry), dt);
+    gather_step(&c, &gather, pos, input, carry, dt);
     c.gather = &gather;
 
     /* 1. carry */

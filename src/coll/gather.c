@@ -193,6 +193,9 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
 void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t rm, uint8_t ty);
 #endif
 
+_Static_assert(COLL_GATHER_CACHE_TRIS <= 64, "a refill marks the step's triangles in a 64-bit mask");
+_Static_assert(COLL_GATHER_CACHE_INSTANCES <= 255, "instance counts are 8-bit");
+
 /* After a refill overflows, the next misses take the uncached gather without trying. */
 #define CACHE_BACKOFF 8u
 
@@ -203,6 +206,7 @@ void coll_gather_cache_reset(coll_gather_cache_t *cache)
     cache->ninst = cache->ntris = 0;
     cache->valid = 0;
     cache->backoff = 0;
+    cache->since = cache->wasted = 0;
     cache->hits = cache->fills = cache->overflows = 0;
 }
 
@@ -234,60 +238,162 @@ CAND_INLINE uint32_t fill_probe(const uint8_t *tab, const coll_gather_cache_t *c
     return h;
 }
 
+/* The step's side of a refill's walk of one instance: the gather being made (its box,
+ * origin), the instance, its transform and the step's local origin and box, and the step's
+ * cells as bits of the refill's (0: the step's box misses the mesh). */
+typedef struct {
+    coll_gather_t *g;
+    const coll_mesh_instance_t *inst;
+    const xf3_t *x;
+    fm_vec3_t o_l, llo, lhi;
+    uint64_t cells;
+} fill_step_t;
+
+/* Appends cached triangle ct to the step's gather when its relative form's box meets the
+ * gathered box (gather_walk's expressions, on tri_rel_of's local differences). */
+CAND_INLINE void emit_tri(coll_gather_t *g, const coll_gather_cache_tri_t *ct, const coll_mesh_instance_t *inst,
+                          const xf3_t *x, const fm_vec3_t *o_l)
+{
+    fm_vec3_t w0, e1, e2, lo, hi;
+    if (x->simple) {
+        fm_vec3_sub(&w0, &ct->v0, o_l);
+        e1 = ct->d1;
+        e2 = ct->d2;
+    } else {
+        fm_vec3_t d;
+        fm_vec3_sub(&d, &ct->v0, o_l);
+        w0 = mul3(x->m, &d);
+        e1 = mul3(x->m, &ct->d1);
+        e2 = mul3(x->m, &ct->d2);
+    }
+    bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
+               tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
+               tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+    if (out) return;
+    coll_gather_tri_t *gt = &g->tris[g->ntris++];
+    gt->w0 = w0;
+    gt->e1 = e1;
+    gt->e2 = e2;
+    gt->lo = lo;
+    gt->hi = hi;
+    gt->inst = inst;
+    gt->tri = (int32_t)ct->tri;
+    gt->prep.ready = false;
+}
+
+/* A cached triangle's local box meets a local box (tri_box_reject's test: all three
+ * vertices below (above) the box on an axis is their largest below (smallest above) it). */
+CAND_INLINE bool ctri_meets(const coll_gather_cache_tri_t *ct, const fm_vec3_t *llo, const fm_vec3_t *lhi)
+{
+    return !(ct->bhi.x < llo->x || ct->blo.x > lhi->x || ct->bhi.z < llo->z || ct->blo.z > lhi->z ||
+             ct->bhi.y < llo->y || ct->blo.y > lhi->y);
+}
+
 /* One instance's walk of a refill (the layout a constant at each call, as gather_walk):
  * every listing of a triangle whose box meets the walk's box sets its cell's bit; a new one
- * takes the next slot and its place in order[] by triangle index. False: the cache is full. */
-CAND_INLINE bool fill_walk(coll_gather_cache_t *c, grid_walk_t *w, uint32_t *np, uint32_t first, const uint32_t lay)
+ * takes the next slot and its place in order[] by triangle index. The same walk makes the
+ * step's gather: the step's cells are some of the refill's, entered in the same order, so
+ * a triangle listed in one of them that meets the step's local box is the step's at its
+ * first such listing, exactly where the step's own walk would take it. False: the cache is
+ * full. */
+CAND_INLINE bool fill_walk(coll_gather_cache_t *c, grid_walk_t *w, uint32_t *np, uint32_t first, fill_step_t *st,
+                           const uint32_t lay)
 {
     uint8_t tab[1u << FILL_HASH_BITS];
     memset(tab, 0, sizeof(tab));
+    uint64_t emitted = 0u;
     uint32_t n = *np;
     const uint32_t nx = w->chi[0] - w->clo[0] + 1u, ny = w->chi[1] - w->clo[1] + 1u;
     const fm_vec3_t blo = *w->llo, bhi = *w->lhi;
     while (grid_walk_next_cell(w)) {
         const uint64_t bit = 1ull << (((w->c[2] - w->clo[2]) * ny + (w->c[1] - w->clo[1])) * nx + (w->c[0] - w->clo[0]));
+        const bool in_step = (bit & st->cells) != 0u;
         for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
             uint32_t t;
             fm_vec3_t v[3];
             if (!grid_walk_take_box(w, lay, k, &t, v, &blo, &bhi)) continue;
-            uint32_t h = fill_probe(tab, c, t);
+            uint32_t h = fill_probe(tab, c, t), slot;
             if (tab[h] != 0u) {
-                c->tris[tab[h] - 1u].cells |= bit;
-                continue;
+                slot = tab[h] - 1u;
+                c->tris[slot].cells |= bit;
+            } else {
+                if (n >= COLL_GATHER_CACHE_TRIS) return false;
+                slot = n;
+                tab[h] = (uint8_t)(n + 1u);
+                coll_gather_cache_tri_t *ct = &c->tris[n];
+                ct->v0 = v[0];
+                fm_vec3_sub(&ct->d1, &v[1], &v[0]); /* tri_rel_of's local differences */
+                fm_vec3_sub(&ct->d2, &v[2], &v[0]);
+                for (int a = 0; a < 3; a++) {
+                    ct->blo.v[a] = f_min(v[0].v[a], f_min(v[1].v[a], v[2].v[a]));
+                    ct->bhi.v[a] = f_max(v[0].v[a], f_max(v[1].v[a], v[2].v[a]));
+                }
+                ct->tri = t;
+                ct->cells = bit;
+                /* its place by triangle index (a cell lists its triangles in order: mostly last) */
+                uint32_t j = n;
+                while (j > first && c->tris[c->order[j - 1u]].tri > t) {
+                    c->order[j] = c->order[j - 1u];
+                    j--;
+                }
+                c->order[j] = (uint8_t)n;
+                n++;
             }
-            if (n >= COLL_GATHER_CACHE_TRIS) return false;
-            tab[h] = (uint8_t)(n + 1u);
-            coll_gather_cache_tri_t *ct = &c->tris[n];
-            ct->v0 = v[0];
-            fm_vec3_sub(&ct->d1, &v[1], &v[0]); /* tri_rel_of's local differences */
-            fm_vec3_sub(&ct->d2, &v[2], &v[0]);
-            for (int a = 0; a < 3; a++) {
-                ct->blo.v[a] = f_min(v[0].v[a], f_min(v[1].v[a], v[2].v[a]));
-                ct->bhi.v[a] = f_max(v[0].v[a], f_max(v[1].v[a], v[2].v[a]));
-            }
-            ct->tri = t;
-            ct->cells = bit;
-            /* its place by triangle index (a cell lists its triangles in order: mostly last) */
-            uint32_t j = n;
-            while (j > first && c->tris[c->order[j - 1u]].tri > t) {
-                c->order[j] = c->order[j - 1u];
-                j--;
-            }
-            c->order[j] = (uint8_t)n;
-            n++;
+            const uint64_t sb = 1ull << slot;
+            if (!in_step || (emitted & sb)) continue;
+            const coll_gather_cache_tri_t *ct = &c->tris[slot];
+            if (!ctri_meets(ct, &st->llo, &st->lhi)) continue;
+            emitted |= sb; /* (the step's walk takes a triangle once: its dedup) */
+            emit_tri(st->g, ct, st->inst, st->x, &st->o_l);
         }
     }
     *np = n;
     return true;
 }
 
+/* The step's local box under instance x (local_box's expressions; an identity transform's
+ * inline). */
+CAND_INLINE void step_local_box(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const coll_gather_t *g,
+                                fm_vec3_t *llo, fm_vec3_t *lhi)
+{
+    if (x->simple) {
+        float mg = m->grid_margin;
+        for (int a = 0; a < 3; a++) {
+            float cc = 0.5f * (g->lo.v[a] + g->hi.v[a]), h = 0.5f * (g->hi.v[a] - g->lo.v[a]);
+            llo->v[a] = o_l->v[a] + cc - h - mg;
+            lhi->v[a] = o_l->v[a] + cc + h + mg;
+        }
+    } else local_box(m, x, o_l, &g->lo, &g->hi, llo, lhi);
+}
+
+/* The step's cells (grid_walk_box's, for its local box llo..lhi), as bits of the cells
+ * ci walked; 0 when the box misses the mesh. Its box lies inside ci's (the caller checks),
+ * so its cells lie inside ci's: cell coordinates are monotone. */
+CAND_INLINE uint64_t step_cells(const coll_mesh_t *m, const coll_gather_cache_inst_t *ci, const fm_vec3_t *llo,
+                                const fm_vec3_t *lhi)
+{
+    if (ci->clo[0] == ci->chi[0] && ci->clo[1] == ci->chi[1] && ci->clo[2] == ci->chi[2]) {
+        bool misses = false; /* instance_cells' test; the one cell is the fill's */
+        for (int a = 0; a < 3; a++) misses |= lhi->v[a] < m->bmin[a] || llo->v[a] > m->bmax[a];
+        return misses ? 0u : 1u;
+    }
+    uint32_t clo[3], chi[3];
+    if (!instance_cells(m, llo, lhi, clo, chi)) return 0u;
+    uint32_t nx = ci->chi[0] - ci->clo[0] + 1u, ny = ci->chi[1] - ci->clo[1] + 1u;
+    uint64_t row = ((2ull << (chi[0] - clo[0])) - 1u) << (clo[0] - ci->clo[0]), cells = 0u;
+    for (uint32_t z = clo[2]; z <= chi[2]; z++)
+        for (uint32_t y = clo[1]; y <= chi[1]; y++) cells |= row << (((z - ci->clo[2]) * ny + (y - ci->clo[1])) * nx);
+    return cells;
+}
+
 /* Refills the cache with the mesh-local triangles of the world box lo..hi: each walked
  * instance's local box (coll_gather_begin's) and its grid cells (at most 64 of them), every
  * triangle a cell under it lists whose box meets it (the walk's own test), with the cells
- * that list it, ordered by triangle index within the instance. False when they are more
- * than the cache holds. */
+ * that list it, ordered by triangle index within the instance; and makes the step's gather
+ * g (its head set) on the way (fill_walk). False when the triangles are more than the cache
+ * holds, or the step's box is not inside the refill's (rounding): g is then not usable. */
 static bool cache_fill(coll_gather_cache_t *c, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
-                       uint8_t read_mask)
+                       uint8_t read_mask, coll_gather_t *g)
 {
     c->valid = 0;
     c->scene = scene;
@@ -312,6 +418,14 @@ static bool cache_fill(coll_gather_cache_t *c, const coll_scene_t *scene, fm_vec
         fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &origin);
         local_box(m, &x, &o_l, &glo, &ghi, &ci->llo, &ci->lhi);
         ci->walked = 1;
+        fill_step_t st;
+        st.g = g;
+        st.inst = inst;
+        st.x = &x;
+        st.o_l = to_local_point(&x, &inst->xf, m, &g->origin);
+        step_local_box(m, &x, &st.o_l, g, &st.llo, &st.lhi);
+        for (int a = 0; a < 3; a++)
+            if (!(st.llo.v[a] >= ci->llo.v[a]) || !(st.lhi.v[a] <= ci->lhi.v[a])) return false;
         grid_walk_t w;
         if (!grid_walk_box(&w, m, &ci->llo, &ci->lhi, &seen)) {
             ci->clo[0] = ci->clo[1] = ci->clo[2] = 1u; /* no cells: a box inside it misses the mesh too */
@@ -324,13 +438,13 @@ static bool cache_fill(coll_gather_cache_t *c, const coll_scene_t *scene, fm_vec
             ci->clo[a] = w.clo[a];
             ci->chi[a] = w.chi[a];
         }
+        st.cells = step_cells(m, ci, &st.llo, &st.lhi);
         w.dedup = false; /* every listing is wanted: its cell's bit */
         const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
         uint32_t lay = grid_walk_layout(&w);
         bool ok;
-        if (lay == I16) ok = fill_walk(c, &w, &n, ci->first, I16);
-        else if (lay == (COLL_MESHF_QUANT | I16)) ok = fill_walk(c, &w, &n, ci->first, COLL_MESHF_QUANT | I16);
-        else ok = fill_walk(c, &w, &n, ci->first, lay);
+        if (lay == I16 && x.simple) ok = fill_walk(c, &w, &n, ci->first, &st, I16);
+        else ok = fill_walk(c, &w, &n, ci->first, &st, lay);
         if (!ok) return false;
         ci->count = (uint8_t)(n - ci->first);
     }
@@ -359,19 +473,12 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
         if (!ci->walked || ci->mesh != m) return false;
         fm_vec3_t o_l = to_local_point(&x, &inst->xf, m, &g->origin);
         fm_vec3_t llo, lhi;
-        local_box(m, &x, &o_l, &g->lo, &g->hi, &llo, &lhi);
+        step_local_box(m, &x, &o_l, g, &llo, &lhi);
         for (int a = 0; a < 3; a++)
             if (!(llo.v[a] >= ci->llo.v[a]) || !(lhi.v[a] <= ci->lhi.v[a])) return false;
         if (ci->count == 0u) continue;
-        /* the cells grid_walk_box would walk (none: the box misses the mesh), as bits of
-         * the fill's (they lie inside them: the box does, and cell coordinates are monotone) */
-        uint32_t clo[3], chi[3];
-        if (!instance_cells(m, &llo, &lhi, clo, chi)) continue;
-        uint32_t nx = ci->chi[0] - ci->clo[0] + 1u, ny = ci->chi[1] - ci->clo[1] + 1u;
-        uint64_t row = ((2ull << (chi[0] - clo[0])) - 1u) << (clo[0] - ci->clo[0]), cells = 0;
-        for (uint32_t z = clo[2]; z <= chi[2]; z++)
-            for (uint32_t y = clo[1]; y <= chi[1]; y++)
-                cells |= row << (((z - ci->clo[2]) * ny + (y - ci->clo[1])) * nx);
+        uint64_t cells = step_cells(m, ci, &llo, &lhi);
+        if (!cells) continue;
         /* The walk's candidates in the walk's order: the walk enters the cells in the order
          * of their bits (x fastest, then y, then z, in the fill's cells as in its own) and
          * a cell lists its triangles by index, so a triangle comes at the first of its
@@ -382,12 +489,8 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
         uint32_t nk = 0;
         for (uint32_t k = ci->first, kend = k + ci->count; k < kend; k++) {
             const coll_gather_cache_tri_t *ct = &c->tris[c->order[k]];
-            /* tri_box_reject's test: all three vertices below (above) the box on an axis is
-             * their largest below (smallest above) it */
             uint64_t in = ct->cells & cells;
-            if (!in || ct->bhi.x < llo.x || ct->blo.x > lhi.x || ct->bhi.z < llo.z || ct->blo.z > lhi.z ||
-                ct->bhi.y < llo.y || ct->blo.y > lhi.y)
-                continue;
+            if (!in || !ctri_meets(ct, &llo, &lhi)) continue;
             uint64_t kb = in & (0u - in); /* the first cell's bit */
             uint32_t j = nk++;
             for (; j > 0u && key[j - 1u] > kb; j--) {
@@ -397,48 +500,22 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
             key[j] = kb;
             idx[j] = c->order[k];
         }
-        for (uint32_t j = 0; j < nk; j++) {
-            const coll_gather_cache_tri_t *ct = &c->tris[idx[j]];
-            /* tri_rel_of's expressions, on the differences it computes */
-            fm_vec3_t w0, e1, e2, lo, hi;
-            if (x.simple) {
-                fm_vec3_sub(&w0, &ct->v0, &o_l);
-                e1 = ct->d1;
-                e2 = ct->d2;
-            } else {
-                const xf3_t *xc = &x;
-                fm_vec3_t d;
-                fm_vec3_sub(&d, &ct->v0, &o_l);
-                w0 = mul3(xc->m, &d);
-                e1 = mul3(xc->m, &ct->d1);
-                e2 = mul3(xc->m, &ct->d2);
-            }
-            bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
-                       tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
-                       tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
-            if (out) continue;
-            coll_gather_tri_t *gt = &g->tris[g->ntris++];
-            gt->w0 = w0;
-            gt->e1 = e1;
-            gt->e2 = e2;
-            gt->lo = lo;
-            gt->hi = hi;
-            gt->inst = inst;
-            gt->tri = (int32_t)ct->tri;
-            gt->prep.ready = false;
-        }
+        for (uint32_t j = 0; j < nk; j++) emit_tri(g, &c->tris[idx[j]], inst, &x, &o_l);
     }
     return true;
 }
 
-void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                              fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+/* The cache can serve a gather of this scene and types at all. */
+static inline bool cache_usable(const coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                                fm_vec3_t hi, uint8_t types)
 {
-    if (!cache || !scene || !(types & COLL_TYPE_MESH) || scene->mesh_count > COLL_GATHER_CACHE_INSTANCES ||
-        !vfin(&lo) || !vfin(&hi)) {
-        coll_gather_begin(g, scene, lo, hi, read_mask, types);
-        return;
-    }
+    return cache && scene && (types & COLL_TYPE_MESH) && scene->mesh_count <= COLL_GATHER_CACHE_INSTANCES &&
+           vfin(&lo) && vfin(&hi);
+}
+
+static inline void gather_head(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
+                               uint8_t read_mask, uint8_t types)
+{
     g->scene = scene;
     g->read_mask = read_mask;
     g->types = types;
@@ -446,12 +523,28 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
     g->valid = true;
     g->scale = 1.0f;
     box_of(lo, hi, &g->origin, &g->lo, &g->hi);
-    if (gather_from_cache(g, cache)) {
-        cache->hits++;
-        STATS_ADD(scene, gathers);
+}
+
+bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                            fm_vec3_t hi, uint8_t read_mask, uint8_t types)
+{
+    if (!cache_usable(cache, scene, lo, hi, types) || !cache->valid) return false;
+    gather_head(g, scene, lo, hi, read_mask, types);
+    if (!gather_from_cache(g, cache)) return false;
+    cache->hits++;
+    if (cache->since < 255u) cache->since++;
+    STATS_ADD(scene, gathers);
 #ifdef GATHER_CACHE_CHECK
-        gather_cache_check(g, scene, lo, hi, read_mask, types);
+    gather_cache_check(g, scene, lo, hi, read_mask, types);
 #endif
+    return true;
+}
+
+void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                        fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+{
+    if (!cache_usable(cache, scene, lo, hi, types)) {
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     if (cache->backoff) {
@@ -459,11 +552,24 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
         coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
+    /* a refill costs about twice a gather: after refills that served no other step (a body
+     * riding a fast turntable, the level turning under it) the next misses take the
+     * uncached gather, 4, 8, then 16 of them */
+    if (cache->valid && cache->since == 0u) {
+        if (cache->wasted < 3u) cache->wasted++;
+        cache->valid = 0;
+        cache->backoff = (uint8_t)((2u << cache->wasted) - 1u);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
+        return;
+    }
+    if (cache->since) cache->wasted = 0;
+    cache->since = 0;
     for (int a = 0; a < 3; a++) {
         flo.v[a] = f_min(flo.v[a], lo.v[a]);
         fhi.v[a] = f_max(fhi.v[a], hi.v[a]);
     }
-    if (!vfin(&flo) || !vfin(&fhi) || !cache_fill(cache, scene, flo, fhi, read_mask)) {
+    gather_head(g, scene, lo, hi, read_mask, types);
+    if (!vfin(&flo) || !vfin(&fhi) || !cache_fill(cache, scene, flo, fhi, read_mask, g)) {
         cache->valid = 0;
         cache->overflows++;
         cache->backoff = CACHE_BACKOFF;
@@ -471,15 +577,21 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
         return;
     }
     cache->fills++;
-    if (gather_from_cache(g, cache)) {
-        STATS_ADD(scene, gathers);
+    STATS_ADD(scene, gathers);
 #ifdef GATHER_CACHE_CHECK
-        gather_cache_check(g, scene, lo, hi, read_mask, types);
+    gather_cache_check(g, scene, lo, hi, read_mask, types);
 #endif
-        return;
-    }
-    coll_gather_begin(g, scene, lo, hi, read_mask, types); /* (rounding: the grown box did not cover it) */
 }
+
+void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                              fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
+{
+    if (!coll_gather_from_cache(g, cache, scene, lo, hi, read_mask, types))
+        coll_gather_refill(g, cache, scene, lo, hi, flo, fhi, read_mask, types);
+}
+
+/* Debug aid: built with -DGATHER_CACHE_CHECK, every gather made through a cache is
+ * compared with a fresh one (the same triangles, in order, bit for bit; stderr). */
 #ifdef GATHER_CACHE_CHECK
 #include <stdio.h>
 #include <string.h>

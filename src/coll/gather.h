@@ -66,6 +66,13 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
  *  instances) gives coll_gather_begin's gather, and the next few misses skip the refill. */
 void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
                               fm_vec3_t hi, fm_vec3_t fill_lo, fm_vec3_t fill_hi, uint8_t read_mask, uint8_t types);
+/** coll_gather_begin_cached's two halves: the gather from the cache when it covers the box
+ *  (true; false: g not usable), and the refill for fill_lo..fill_hi then the gather from it
+ *  (or coll_gather_begin's gather). The caller computes the refill's box only on a miss. */
+bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                            fm_vec3_t hi, uint8_t read_mask, uint8_t types);
+void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
+                        fm_vec3_t hi, fm_vec3_t fill_lo, fm_vec3_t fill_hi, uint8_t read_mask, uint8_t types);
 /** Empties a cache (its counters too). */
 void coll_gather_cache_reset(coll_gather_cache_t *cache);
 
