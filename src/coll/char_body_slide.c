@@ -337,6 +337,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     float pushed = 0.0f; /* by slide_off_edge, within the speed limit */
     fm_vec3_t topup = v3(0.0f, 0.0f, 0.0f); /* the last sweep's skin top-up, if nothing moved since */
     fm_vec3_t untopped = *pos;                /* where that top-up started */
+    fm_vec3_t corr = v3(0.0f, 0.0f, 0.0f);    /* top-up and nudges since the last swept or verified move */
     int slides = b->settings.max_slides;
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
@@ -367,9 +368,21 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                 *pos = untopped;
             } else {
                 float d = hit.depth < c->radius ? hit.depth : c->radius;
-                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
+                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) {
+                    /* No way out along the push: where the skin top-up and nudges since the
+                     * last swept move went into this contact, take them back (the place
+                     * before them was no deeper: the sweep that led there met nothing
+                     * sooner). In a slot a hair wider than the capsule, between a wall and
+                     * a vertex leaning over the body under a tilted up, the top-up and the
+                     * nudge off the wall put the capsule 1.07 mm into the vertex, the nudge
+                     * hid the top-up from the test above, and the slide ended there (soak
+                     * s11 l137; 0.07 mm after the take-back). */
+                    if (v3_dot(corr, hit.normal) < 0.0f) *pos = v3_sub(*pos, corr);
+                    break;
+                }
             }
             topup = v3(0.0f, 0.0f, 0.0f);
+            corr = topup;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -386,6 +399,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             topup = sep < c->skin ? v3_scale(hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f)) : v3(0.0f, 0.0f, 0.0f);
             untopped = *pos;
             *pos = v3_add(*pos, topup);
+            corr = topup;
         }
         /* In the air, a first sweep that met at once what the body already rests against
          * (it travelled no more than the skin) is not a slide: the clipped motion still gets its sweep.
@@ -399,7 +413,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             float off = slide_off_edge(c, pos, &hit, c->max_speed * c->dt - v3_len(disp) - pushed);
             if (off >= 0.0f) {
                 pushed += off;
-                topup = v3(0.0f, 0.0f, 0.0f);
+                topup = corr = v3(0.0f, 0.0f, 0.0f);
                 rem = left;
                 continue;
             }
@@ -414,7 +428,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
-            topup = v3(0.0f, 0.0f, 0.0f);
+            topup = corr = v3(0.0f, 0.0f, 0.0f);
             rem = v3_scale(v3_reject(left, c->up), 1.0f - stepped);
             time_left *= 1.0f - stepped;
             continue;
@@ -426,6 +440,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         if (known) {
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
             *pos = v3_madd(*pos, n, c->skin * 0.1f);
+            corr = v3_madd(corr, n, c->skin * 0.1f);
             topup = v3(0.0f, 0.0f, 0.0f);
         }
         fm_vec3_t want = v3_scale(disp, time_left);
