@@ -87,12 +87,18 @@ static fm_vec3_t no_climb(const cb_ctx_t *c, fm_vec3_t v0, fm_vec3_t v, const fm
  * being pushed into the floor by sloped ceilings. Hits inside the step zone keep their
  * real normal: the floor probe steps onto them.
  */
-static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *hit)
+static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *hit, fm_vec3_t rem)
 {
     float nu = v3_dot(hit->normal, c->up);
     float h = v3_dot(v3_sub(hit->point, cb_foot(c, pos)), c->up);
     if (nu > 0.0f && h <= c->step + cb_len_tol(c, CB_MARGIN)) return hit->normal;
     fm_vec3_t nh = v3_norm(v3_reject(hit->normal, c->up));
+    /* Under the ball and the motion leaves it across up: only its part along up (down,
+     * following a floor) goes into the contact, and the real normal takes just that (the
+     * motion along it rises no more than it was sinking: nothing is climbed). As a wall it
+     * clipped nothing and the motion met it again: with step 0 and the ball resting on a
+     * 75 mm edge at a tilted up, the body stood still on free floor (soak s11 l256). */
+    if (nu > 0.0f && v3_dot(rem, nh) >= 0.0f && v3_len(nh) > 0.5f) return hit->normal;
     return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
@@ -418,7 +424,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                 continue;
             }
         }
-        fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit, rem) : hit.normal;
         /* Walking, a first sweep that met a walkable floor in the step zone (the foot of a
          * ramp) is the body following the floor, not a slide off an obstacle: the motion
          * along that floor still gets its sweep. Else with max_slides 1 a body stops at the
