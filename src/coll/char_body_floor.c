@@ -871,8 +871,26 @@ static void floor_over_foot(const cb_ctx_t *c, fm_vec3_t pos, float height, supp
     coll_ray_hit_t h;
     if (!(height > step_eps) ||
         !cb_ray(c, cb_foot(c, pos), c->up, height, &h) || !v3_finite(h.normal) || !v3_finite(h.point) ||
-        !isfinite(h.distance) || !(h.distance > step_eps))
+        !isfinite(h.distance))
         return;
+    if (!(h.distance > step_eps)) {
+        /* The foot itself is inside the collider body (the ray from it meets the body at
+         * once): the meshes inside the body, looked at along the line from the face down to
+         * the foot; the first one met, walkable, is the floor the foot is under. Falling
+         * beside a collider body that stands on a tile (r 0.15, step 0.45), the foot went
+         * through the tile's top and the room floor into the body, and the body stood steep
+         * on its face with the foot 48 mm under the tile top (soak s12 l28). */
+        const char_body_settings_t *st = &c->body->settings;
+        const uint8_t mesh = (uint8_t)(st->coll_types & COLL_TYPE_MESH);
+        if (h.triangle >= 0 || !mesh ||
+            !coll_raycast(c->scene, v3_madd(cb_foot(c, pos), c->up, height), v3_scale(c->up, -1.0f), height,
+                          st->read_mask, mesh, &h) ||
+            !v3_finite(h.normal) || !v3_finite(h.point) || !isfinite(h.distance) ||
+            !(height - h.distance > step_eps) || v3_dot(h.normal, c->up) < c->body->cos_floor_max_angle)
+            return;
+        *s = (support_t){true, false, h.distance - height, h.normal, h.point, h.id, h.instance};
+        return;
+    }
     fm_vec3_t n = v3_scale(h.normal, -1.0f); /* met from below: turned to face up */
     if (v3_dot(n, c->up) < c->body->cos_floor_max_angle) return;
     *s = (support_t){true, false, -h.distance, n, h.point, h.id, h.instance};

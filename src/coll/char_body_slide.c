@@ -87,12 +87,18 @@ static fm_vec3_t no_climb(const cb_ctx_t *c, fm_vec3_t v0, fm_vec3_t v, const fm
  * being pushed into the floor by sloped ceilings. Hits inside the step zone keep their
  * real normal: the floor probe steps onto them.
  */
-static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *hit)
+static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *hit, fm_vec3_t rem)
 {
     float nu = v3_dot(hit->normal, c->up);
     float h = v3_dot(v3_sub(hit->point, cb_foot(c, pos)), c->up);
     if (nu > 0.0f && h <= c->step + cb_len_tol(c, CB_MARGIN)) return hit->normal;
     fm_vec3_t nh = v3_norm(v3_reject(hit->normal, c->up));
+    /* Under the ball and the motion leaves it across up: only its part along up (down,
+     * following a floor) goes into the contact, and the real normal takes just that (the
+     * motion along it rises no more than it was sinking: nothing is climbed). As a wall it
+     * clipped nothing and the motion met it again: with step 0 and the ball resting on a
+     * 75 mm edge at a tilted up, the body stood still on free floor (soak s11 l256). */
+    if (nu > 0.0f && v3_dot(rem, nh) >= 0.0f && v3_len(nh) > 0.5f) return hit->normal;
     return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
@@ -337,6 +343,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     float pushed = 0.0f; /* by slide_off_edge, within the speed limit */
     fm_vec3_t topup = v3(0.0f, 0.0f, 0.0f); /* the last sweep's skin top-up, if nothing moved since */
     fm_vec3_t untopped = *pos;                /* where that top-up started */
+    fm_vec3_t corr = v3(0.0f, 0.0f, 0.0f);    /* top-up and nudges since the last swept or verified move */
     int slides = b->settings.max_slides;
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
@@ -367,9 +374,21 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                 *pos = untopped;
             } else {
                 float d = hit.depth < c->radius ? hit.depth : c->radius;
-                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) break;
+                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) {
+                    /* No way out along the push: where the skin top-up and nudges since the
+                     * last swept move went into this contact, take them back (the place
+                     * before them was no deeper: the sweep that led there met nothing
+                     * sooner). In a slot a hair wider than the capsule, between a wall and
+                     * a vertex leaning over the body under a tilted up, the top-up and the
+                     * nudge off the wall put the capsule 1.07 mm into the vertex, the nudge
+                     * hid the top-up from the test above, and the slide ended there (soak
+                     * s11 l137; 0.07 mm after the take-back). */
+                    if (v3_dot(corr, hit.normal) < 0.0f) *pos = v3_sub(*pos, corr);
+                    break;
+                }
             }
             topup = v3(0.0f, 0.0f, 0.0f);
+            corr = topup;
         } else {
             /* Advance to the contact, backing off the skin along the motion; at grazing
              * angles that leaves less than the skin between capsule and plane, so top the
@@ -386,6 +405,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             topup = sep < c->skin ? v3_scale(hit.normal, c->skin - (sep > 0.0f ? sep : 0.0f)) : v3(0.0f, 0.0f, 0.0f);
             untopped = *pos;
             *pos = v3_add(*pos, topup);
+            corr = topup;
         }
         /* In the air, a first sweep that met at once what the body already rests against
          * (it travelled no more than the skin) is not a slide: the clipped motion still gets its sweep.
@@ -399,12 +419,12 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             float off = slide_off_edge(c, pos, &hit, c->max_speed * c->dt - v3_len(disp) - pushed);
             if (off >= 0.0f) {
                 pushed += off;
-                topup = v3(0.0f, 0.0f, 0.0f);
+                topup = corr = v3(0.0f, 0.0f, 0.0f);
                 rem = left;
                 continue;
             }
         }
-        fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit) : hit.normal;
+        fm_vec3_t n = grounded ? walking_plane(c, *pos, &hit, rem) : hit.normal;
         /* Walking, a first sweep that met a walkable floor in the step zone (the foot of a
          * ramp) is the body following the floor, not a slide off an obstacle: the motion
          * along that floor still gets its sweep. Else with max_slides 1 a body stops at the
@@ -414,7 +434,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         float stepped = 0.0f;
         if (grounded && step_ups < 2 && v3_dot(n, hit.normal) < 0.9999f && try_step(c, pos, left, &hit, &stepped)) {
             step_ups++;
-            topup = v3(0.0f, 0.0f, 0.0f);
+            topup = corr = v3(0.0f, 0.0f, 0.0f);
             rem = v3_scale(v3_reject(left, c->up), 1.0f - stepped);
             time_left *= 1.0f - stepped;
             continue;
@@ -426,6 +446,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         if (known) {
             /* Same plane again (numerical touch): nudge off it so the next sweep starts clear. */
             *pos = v3_madd(*pos, n, c->skin * 0.1f);
+            corr = v3_madd(corr, n, c->skin * 0.1f);
             topup = v3(0.0f, 0.0f, 0.0f);
         }
         fm_vec3_t want = v3_scale(disp, time_left);
