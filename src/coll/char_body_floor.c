@@ -605,11 +605,12 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
  * the foot walks up to it (0.65-0.97 along up on the bench's stairs, 16 and 26 steps a
  * course; over 0.99 3 and 1). Without a valid gather, no (as before).
  */
-static bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, const coll_ray_hit_t *under)
+static bool piece_beyond_at(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, const coll_ray_hit_t *under,
+                            float min_nu)
 {
     const coll_gather_t *g = c->gather;
     const fm_vec3_t up = c->up;
-    if (!g || !g->valid || !(v3_dot(edge->normal, up) > 0.99f)) return false;
+    if (!g || !g->valid || !(v3_dot(edge->normal, up) > min_nu)) return false;
     const fm_vec3_t side = v3_norm(v3_reject(edge->normal, up)); /* from the edge towards the ball */
     const float r = c->radius;
     const fm_vec3_t f = v3_sub(cb_foot(c, pos), g->origin), o = v3_madd(f, up, r);
@@ -638,6 +639,32 @@ static bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
             return true;
     }
     return false;
+}
+
+static inline bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, const coll_ray_hit_t *under)
+{
+    return piece_beyond_at(c, pos, edge, under, 0.99f);
+}
+
+/**
+ * level_beyond's ray found no groove's far side, and the edge the first look met is off
+ * the ball's centre (piece_beyond does not look): the far side may still be a piece the
+ * ray, a line a radius long along the edge's side, went past: a tile corner beside the
+ * line, which the ball (wide: r 0.99) meets rolling off the edge (soak s6 l429: a hole
+ * between rotated tiles 0.15-0.16 m high, the foot on the floor under a 11 degree tilted
+ * up, the contact normal 0.92 along up; the ray met nothing at all, the floor being lower
+ * along up a radius across it; the roll met the far tile 0.2 m from the foot: a narrow
+ * wedge, 0.16 m above the floor). Then the full rule decides (its roll), not the hole rule
+ * alone. The same box pass as piece_beyond, only for an edge behind the body's motion
+ * (a stair's nosing ahead is such an edge every few steps: the cost gate foot13b's
+ * drop_past_side uses too), and only when the first look met it (edge_len > 0).
+ */
+static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
+                         const coll_ray_hit_t *under)
+{
+    if (!(edge_len > 0.0f) || v3_dot(edge->normal, c->up) > 0.99f || /* piece_beyond looked */
+        v3_dot(v3_sub(edge->point, cb_foot(c, pos)), c->body->velocity) > 0.0f) return false;
+    return piece_beyond_at(c, pos, edge, under, 0.02f);
 }
 
 /**
@@ -1029,7 +1056,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     bool hole_only = false; /* only a hole can hold it (piece_beyond) */
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge) ||
-                         (hole_only = piece_beyond(c, *pos, &edge, &hit))) &&
+                         (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
+                         piece_behind(c, *pos, &edge, edge_len, &hit)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
                         w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
