@@ -823,6 +823,47 @@ static void test_prepared_triangle_is_bit_identical(void)
     (void)n_prepared;
 }
 
+/* The sweep's inputs relative to triangle t's first vertex, the scene moved by off along x:
+ * the triangle, and the capsule (centre c, half height hh along y) as its segment. */
+static void rel_tri(const fm_vec3_t t[3], float off, fm_vec3_t out[3])
+{
+    for (int k = 0; k < 3; k++) out[k] = V(t[k].x + off - (t[0].x + off), t[k].y - t[0].y, t[k].z - t[0].z);
+}
+
+/* For a sweep that met triangle a at h0_t (the motion d, |aim - c| = dlen): every triangle's
+ * held sweep, t_max at that contact time and deeper[m] x r after it, answers what its plain
+ * sweep does, less a contact no sooner than t_max. Returns the cases; ties: b != a at m 0. */
+static int held_cases_match_plain(const fm_vec3_t (*tris)[3], int n, int a, prim_ref_v3 c, float off, float hh,
+                                  float r, fm_vec3_t d, double dlen, float h0_t, const float *deeper, int ndeeper,
+                                  const char *label, int *n_ties)
+{
+    int n_cases = 0;
+    for (int b = 0; b < n; b++) {
+        fm_vec3_t sb[2], tb[3];
+        for (int k = 0; k < 2; k++)
+            sb[k] = V((float)c.x + off - (tris[b][0].x + off), (float)c.y + (k ? hh : -hh) - tris[b][0].y,
+                      (float)c.z - tris[b][0].z);
+        rel_tri(tris[b], off, tb);
+        for (int m = 0; m < ndeeper; m++) {
+            float t_max = h0_t + (float)(deeper[m] * r / (dlen > 1e-6 ? dlen : 1.0));
+            coll_prim_hit_t hp, hb;
+            memset(&hp, 0, sizeof hp);
+            memset(&hb, 0, sizeof hb);
+            bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
+            bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
+            if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
+            if (!hits_equal(gp, &hp, gb, &hb)) {
+                printf("%s: a %d b %d m %d: plain %d t %.9g, held %d\n", label, a, b, m, gp, (double)hp.t, gb);
+                dump_case(sb, r, d, tb);
+            }
+            TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
+            if (n_ties) *n_ties += b != a && m == 0;
+            n_cases++;
+        }
+    }
+    return n_cases;
+}
+
 /* The held sweep's end cull (tri_sweep: with a hit held at t_max, a candidate clear of rin
  * along the closest pair's direction at t_max is dropped before its feature sweep) drops
  * nothing the sweep reports: the held sweep answers exactly what the plain one does at the
@@ -868,40 +909,16 @@ static void test_held_end_cull_matches_plain(void)
         double dlen = prim_ref_len(prim_ref_sub(aim, c));
         for (int a = 0; a < 4; a++) {
             /* the sweep's inputs relative to the triangle's first vertex, moved by off */
-            fm_vec3_t rt[4][3], seg[2]; /* (the first vertex at the origin) */
+            fm_vec3_t rt[3], seg[2]; /* (the first vertex at the origin) */
             seg[0] = V((float)c.x + off - (tris[a][0].x + off), (float)c.y - hh - tris[a][0].y, (float)c.z - tris[a][0].z);
             seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
-            for (int k = 0; k < 3; k++)
-                rt[a][k] = V(tris[a][k].x + off - (tris[a][0].x + off), tris[a][k].y - tris[a][0].y, tris[a][k].z - tris[a][0].z);
+            rel_tri(tris[a], off, rt);
             coll_prim_hit_t h0;
-            if (!coll_tri_sweep_prep(seg, r, &d, rt[a], NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
+            if (!coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
             n_hits++;
             /* t_max at this triangle's contact time and after it, against every triangle */
-            for (int b = 0; b < 4; b++) {
-                fm_vec3_t sb[2], tb[3];
-                for (int k = 0; k < 2; k++)
-                    sb[k] = V((float)c.x + off - (tris[b][0].x + off), (float)c.y + (k ? hh : -hh) - tris[b][0].y,
-                              (float)c.z - tris[b][0].z);
-                for (int k = 0; k < 3; k++)
-                    tb[k] = V(tris[b][k].x + off - (tris[b][0].x + off), tris[b][k].y - tris[b][0].y, tris[b][k].z - tris[b][0].z);
-                for (int m = 0; m < (int)(sizeof deeper / sizeof deeper[0]); m++) {
-                    float t_max = h0.t + (float)(deeper[m] * r / (dlen > 1e-6 ? dlen : 1.0));
-                    coll_prim_hit_t hp, hb;
-                    memset(&hp, 0, sizeof hp);
-                    memset(&hb, 0, sizeof hb);
-                    bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
-                    bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
-                    if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
-                    if (!hits_equal(gp, &hp, gb, &hb)) {
-                        printf("held end cull: g %d o %d i %d a %d b %d m %d: plain %d t %.9g, held %d\n", g, o, i, a, b,
-                               m, gp, (double)hp.t, gb);
-                        dump_case(sb, r, d, tb);
-                    }
-                    TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
-                    n_ties += b != a && m == 0;
-                    n_cases++;
-                }
-            }
+            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 4, a, c, off, hh, r, d, dlen, h0.t, deeper,
+                                              (int)(sizeof deeper / sizeof deeper[0]), "held end cull", &n_ties);
         }
     }
     printf("held end cull: %d contacts, %d cases (%d ties across triangles)\n", n_hits, n_cases, n_ties);
@@ -966,35 +983,12 @@ static void test_held_end_cull_local_matches_plain(void)
             fm_vec3_t seg[2], ta[3];
             seg[0] = V((float)c.x + off - (tris[a][0].x + off), (float)c.y - hh - tris[a][0].y, (float)c.z - tris[a][0].z);
             seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
-            for (int k = 0; k < 3; k++)
-                ta[k] = V(tris[a][k].x + off - (tris[a][0].x + off), tris[a][k].y - tris[a][0].y, tris[a][k].z - tris[a][0].z);
+            rel_tri(tris[a], off, ta);
             coll_prim_hit_t h0;
             if (!coll_tri_sweep_prep(seg, r, &d, ta, NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
             n_hits++;
-            for (int b = 0; b < 8; b++) {
-                fm_vec3_t sb[2], tb[3];
-                for (int k = 0; k < 2; k++)
-                    sb[k] = V((float)c.x + off - (tris[b][0].x + off), (float)c.y + (k ? hh : -hh) - tris[b][0].y,
-                              (float)c.z - tris[b][0].z);
-                for (int k = 0; k < 3; k++)
-                    tb[k] = V(tris[b][k].x + off - (tris[b][0].x + off), tris[b][k].y - tris[b][0].y, tris[b][k].z - tris[b][0].z);
-                for (int m = 0; m < (int)(sizeof deeper / sizeof deeper[0]); m++) {
-                    float t_max = h0.t + (float)(deeper[m] * r / (dlen > 1e-6 ? dlen : 1.0));
-                    coll_prim_hit_t hp, hb;
-                    memset(&hp, 0, sizeof hp);
-                    memset(&hb, 0, sizeof hb);
-                    bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
-                    bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
-                    if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
-                    if (!hits_equal(gp, &hp, gb, &hb)) {
-                        printf("held end cull (local): o %d s %d i %d a %d b %d m %d: plain %d t %.9g, held %d\n", o, split,
-                               i, a, b, m, gp, (double)hp.t, gb);
-                        dump_case(sb, r, d, tb);
-                    }
-                    TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
-                    n_cases++;
-                }
-            }
+            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 8, a, c, off, hh, r, d, dlen, h0.t, deeper,
+                                              (int)(sizeof deeper / sizeof deeper[0]), "held end cull (local)", NULL);
         }
     }
     printf("held end cull (local): %d contacts, %d cases\n", n_hits, n_cases);

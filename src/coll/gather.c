@@ -16,6 +16,21 @@ static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const col
     return !out;
 }
 
+/* Appends a kept triangle (the buffer has room: the callers checked). */
+static inline void gather_push(coll_gather_t *g, fm_vec3_t w0, fm_vec3_t e1, fm_vec3_t e2, fm_vec3_t lo, fm_vec3_t hi,
+                               const coll_mesh_instance_t *inst, uint32_t tri)
+{
+    coll_gather_tri_t *gt = &g->tris[g->ntris++];
+    gt->w0 = w0;
+    gt->e1 = e1;
+    gt->e2 = e2;
+    gt->lo = lo;
+    gt->hi = hi;
+    gt->inst = inst;
+    gt->tri = (int32_t)tri;
+    gt->prep.ready = false; /* filled by the first exact test */
+}
+
 /* The buffer is full and one more triangle (box lo..hi) meets the gathered box: shrinks the
  * box about its centre until the buffer has room or the new triangle is out, dropping the
  * kept triangles the smaller box misses (the walk's own test, so every triangle that meets
@@ -129,15 +144,7 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                 bhi = *w->lhi;
                 if (r == GATHER_SKIP) continue;
             }
-            coll_gather_tri_t *gt = &g->tris[g->ntris++];
-            gt->w0 = w0;
-            gt->e1 = e1;
-            gt->e2 = e2;
-            gt->lo = lo;
-            gt->hi = hi;
-            gt->inst = inst;
-            gt->tri = (int32_t)t;
-            gt->prep.ready = false; /* filled by the first exact test */
+            gather_push(g, w0, e1, e2, lo, hi, inst, t);
         }
     return true;
 }
@@ -270,15 +277,7 @@ CAND_INLINE void emit_tri(coll_gather_t *g, const coll_gather_cache_tri_t *ct, c
                tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
                tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
     if (out) return;
-    coll_gather_tri_t *gt = &g->tris[g->ntris++];
-    gt->w0 = w0;
-    gt->e1 = e1;
-    gt->e2 = e2;
-    gt->lo = lo;
-    gt->hi = hi;
-    gt->inst = inst;
-    gt->tri = (int32_t)ct->tri;
-    gt->prep.ready = false;
+    gather_push(g, w0, e1, e2, lo, hi, inst, ct->tri);
 }
 
 /* A cached triangle's local box meets a local box (tri_box_reject's test: all three
