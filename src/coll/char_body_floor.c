@@ -414,11 +414,15 @@ again:;
              * descends (half a radius): it falls on past that edge, and when what it meets
              * further down is a floor's face (a tile's top around the foot), that is the
              * first contact (once; soak s10 l161: the top edge of a ledge 0.82 m over tiles
-             * with 9 mm gaps between them, the foot in one, 43 mm below the tiles) */
+             * with 9 mm gaps between them, the foot in one, 43 mm below the tiles). Not a
+             * contact ahead of the body's motion: climbing stairs, the ball rolled off the
+             * nosing two risers ahead onto the next tread and lifted the foot there early,
+             * over the lower tread (soak s5 l315, 14 mm in a later step) */
             fm_vec3_t b0p = b0, fn;
             coll_sweep_hit_t h1p = h1;
             float d1p = d1;
-            if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r && drop_past_side(c, &b0p, len, &h1p, &d1p) &&
+            if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
+                !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) && drop_past_side(c, &b0p, len, &h1p, &d1p) &&
                 coll_cb_face_normal(&h1p, &fn) && v3_dot(fn, up) >= b->cos_floor_max_angle) {
                 b0 = b0p;
                 h1 = h1p;
