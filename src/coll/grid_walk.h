@@ -52,7 +52,7 @@ static inline uint32_t f_inf_bits(float x)
 static inline bool f_isfin(float x) { return f_inf_bits(x) == 0u; }
 static inline bool vfin(const fm_vec3_t *v) { return (f_inf_bits(v->x) | f_inf_bits(v->y) | f_inf_bits(v->z)) == 0u; }
 
-static inline bool xf_prepare(const coll_transform_t *xf, xf3_t *o)
+CAND_INLINE bool xf_prepare(const coll_transform_t *xf, xf3_t *o)
 {
     const fm_quat_t *q = &xf->rot;
     const fm_vec3_t *s = &xf->scale;
@@ -104,7 +104,7 @@ static inline fm_vec3_t mul3_abs(const float m[3][3], const fm_vec3_t *v)
  * centre of the mesh bounds: o_local = c + M^-1 (p - (pos + M c)), so a query near the
  * mesh only pushes a short vector through M^-1 and meshes whose local coordinates are
  * far from their own origin do not lose the condition number of M in precision. */
-static inline fm_vec3_t to_local_point(const xf3_t *x, const coll_transform_t *xf, const coll_mesh_t *m,
+CAND_INLINE fm_vec3_t to_local_point(const xf3_t *x, const coll_transform_t *xf, const coll_mesh_t *m,
                                 const fm_vec3_t *p)
 {
     fm_vec3_t d;
@@ -294,7 +294,7 @@ static inline bool tri_box_reject(const fm_vec3_t tri[3], const fm_vec3_t *lo, c
 }
 
 /* Conservative mesh-local box of a world-relative box (plus the grid margin). */
-static inline void local_box(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const fm_vec3_t *lo,
+CAND_INLINE void local_box(const coll_mesh_t *m, const xf3_t *x, const fm_vec3_t *o_l, const fm_vec3_t *lo,
                       const fm_vec3_t *hi, fm_vec3_t *llo, fm_vec3_t *lhi)
 {
     fm_vec3_t c, h;
@@ -464,7 +464,7 @@ static inline void grid_walk_init(grid_walk_t *w, const coll_mesh_t *m, const fm
 }
 
 /* A walk over every cell under the box; false when the box misses the mesh. */
-static inline bool grid_walk_box(grid_walk_t *w, const coll_mesh_t *m, const fm_vec3_t *llo, const fm_vec3_t *lhi,
+CAND_INLINE bool grid_walk_box(grid_walk_t *w, const coll_mesh_t *m, const fm_vec3_t *llo, const fm_vec3_t *lhi,
                                  seen_t *seen)
 {
     grid_walk_init(w, m, llo, lhi, seen);
