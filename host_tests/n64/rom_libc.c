@@ -125,8 +125,18 @@ char *strstr(const char *h, const char *n)
 }
 
 /* ------------------------------------------------------------------ process */
+/* atexit: a few handlers, run last-registered first by exit() (the soak's counters) */
+static void (*g_atexit[4])(void);
+static int g_natexit;
+int atexit(void (*fn)(void))
+{
+    if (g_natexit >= (int)(sizeof g_atexit / sizeof g_atexit[0])) return -1;
+    g_atexit[g_natexit++] = fn;
+    return 0;
+}
 void exit(int code)
 {
+    while (g_natexit > 0) g_atexit[--g_natexit]();
     rom_finish(code);
     for (;;) {}
 }
