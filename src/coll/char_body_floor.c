@@ -363,7 +363,7 @@ again:;
          * along it by a diameter the ball would pass over the far side of a gap a few
          * millimetres lower than this edge (a tile beside a tile, a block beside a block)
          * and meet whatever stands beyond (a ramp a metre away). */
-        const bool flat = n1u > 0.995f && v3_len(across) > 0.5f;
+        bool flat = n1u > 0.995f && v3_len(across) > 0.5f;
         /* The roll counts only within half a radius of descent (below), so on a tilted
          * contact it ends there: a shorter sweep meets fewer triangles and stays inside the
          * step's gathered box more often (tilts under 0.25, flat ones among them, keep the
@@ -392,6 +392,17 @@ again:;
                 h2 = h3;
             }
         }
+        /* An edge nearly under the centre (tilted less than asin sqrt 0.1 = 18 degrees: too
+         * level for drop_past_side's slide too), whose roll met nothing: the ball rolled
+         * along a nearly level tangent over the far side of the gap, which lies lower than
+         * the roll went, and on into nothing. It rolls off the edge and drops: as off a
+         * flat edge, moved off across up by a radius and dropped by half a radius, it meets
+         * that far side, when it is a floor's face (soak s13 l221: r 0.53, the foot 6 cm off the
+         * end of a 0.39 m block at a crack's mouth, a tile 0.17 m high 0.24 m ahead, the
+         * contact 0.993 along up; the foot stood on the floor between them, 108 mm under the
+         * ball resting on both). */
+        const bool level_off = !met && !flat && n1u * n1u >= 0.9f && v3_len(across) > 0.5f;
+        if (level_off) flat = true;
         if (flat) {
             /* The ball would roll off it and drop: move it off across up by a radius, then
              * down by half a radius; the far side of such a gap is met on the way. What
@@ -407,6 +418,14 @@ again:;
             if (!met && cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &h2)) {
                 met = true;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
+            }
+            /* (rolled off a nearly level edge: only a floor's face met there is the far side;
+             * anything else, and the roll's answer stands) */
+            fm_vec3_t fn;
+            if (level_off && !(met && isfinite(h2.t) && coll_cb_face_normal(&h2, &fn) &&
+                               v3_dot(fn, up) >= b->cos_floor_max_angle)) {
+                met = false;
+                flat = false;
             }
         }
         if (!met) {
