@@ -462,6 +462,9 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         c->ev->step += v3_dot(v3_sub(*pos, slid), c->up); /* a stair step redone: its height as done */
 }
 
+/** Contacts foot_ball_rests looks at (the deepest kept). */
+#define CB_REST_CONTACTS 16
+
 /** Contacts of the sweep capsule at pos (at most CB_MAX_CONTACTS). */
 static uint32_t overlaps_at(const cb_ctx_t *c, fm_vec3_t pos, coll_contact_t *ct)
 {
@@ -688,6 +691,28 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
     return false;
 }
 
+/* The full capsule's bottom ball (at the foot of the body at pos, grown by contact_eps)
+ * rests on something: a contact below its centre whose direction to the centre is within
+ * the walkable angle (a floor's face under it, or an edge under it; not a wall beside it,
+ * nor a face above its centre that the step zone is through). */
+static bool foot_ball_rests(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    const char_body_t *b = c->body;
+    const fm_vec3_t up = c->up, bc = v3_madd(cb_foot(c, pos), up, c->radius);
+    coll_contact_t ct[CB_REST_CONTACTS];
+    uint32_t n;
+    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, up, c->radius + c->contact_eps, 0.0f, ct, CB_REST_CONTACTS);
+    else n = coll_capsule_overlaps(c->scene, bc, up, c->radius + c->contact_eps, 0.0f, b->settings.read_mask,
+                                   b->settings.coll_types, ct, CB_REST_CONTACTS);
+    if (n > CB_REST_CONTACTS) n = CB_REST_CONTACTS;
+    for (uint32_t i = 0; i < n; i++) {
+        const fm_vec3_t d = v3_sub(bc, ct[i].point);
+        const float du = v3_dot(d, up);
+        if (v3_finite(d) && du > c->tiny && du >= b->cos_floor_max_angle * v3_len(d)) return true;
+    }
+    return false;
+}
+
 bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
                      bool rising)
 {
@@ -723,6 +748,18 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
     int first = 0;
     if (!stands && was_grounded && coll_cb_stand_search(c, &q, in_h, true, &first)) {
         *pos = start; /* nor lifted part of the way: that was no motion */
+        return true;
+    }
+    /* Airborne, nowhere to stand and no way out, and the full capsule's bottom ball rests on
+     * nothing: the floor the probe found over the foot is no support, the body is not
+     * standing on it. The game teleported a body (r 0.31, step 1.16, up tilted 50 degrees)
+     * into the solid under a V valley's slope; its sweep capsule fits in there, the slope's
+     * inside face is walkable for that up and crosses the step zone 1.03 m over the foot,
+     * the lift has no room, the search no place: it stood grounded with its foot 1.03 m in
+     * the slope (soak s13 l195). Where the ball does rest on something (a stair's nosings,
+     * s2 l193) it stays as it stands. */
+    if (!stands && !was_grounded && !foot_ball_rests(c, start)) {
+        *pos = start;
         return true;
     }
     return false;
