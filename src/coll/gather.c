@@ -142,7 +142,7 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                 uint32_t cd = codes[k];
                 if (!(cd & qx) || !(cd & qz)) continue;
             }
-            if (!grid_walk_take_box(w, lay, k, &t, v, &blo, &bhi)) continue;
+            if (!grid_walk_take_box_o(w, lay, k, &t, v, &blo, &bhi, coded)) continue;
             if (simple) { /* tri_rel_of's expressions for an identity transform */
                 fm_vec3_sub(&w0, &v[0], o_l);
                 fm_vec3_sub(&e1, &v[1], &v[0]);
