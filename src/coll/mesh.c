@@ -701,7 +701,7 @@ coll_err_t coll_mesh_build(void *buf, size_t buf_size, const float *verts, uint3
      * its vertices, but only those whose quarters its box misses; triangles as large as
      * their cells (a few big faces in coarse cells: over CODES_MAX_COVER quarters a ref on
      * average) leave too few (measured on the bench courses: the sample level as baked
-     * covers 5.2 quarters a ref, Jolt's terrain 3.4; the crack course's 6.4 and the real
+     * covers 4.9 quarters a ref, Jolt's terrain 3.4; the crack course's 6.4 and the real
      * stairs' 6.9 made those courses 0.3-1 % dearer with the codes). */
     if (codes && hc.cover <= CODES_MAX_COVER * (uint64_t)run) {
         coll_mesh_layout_t lc = coll_mesh_layout_of(flags | COLL_MESHF_RCODE, nverts, nt, ncells, run);
