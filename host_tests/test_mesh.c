@@ -326,20 +326,22 @@ static uint32_t native_checksum(const coll_mesh_t *m)
     const uint8_t *b = (const uint8_t *)m;
     uint64_t ncells = coll_mesh_cell_count(m);
     coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, ncells, m->nrefs);
-    const struct { uint64_t off, n; unsigned es; } s[5] = {
+    const struct { uint64_t off, n; unsigned es; } s[6] = {
         { l.off_verts, (uint64_t)m->nverts * 3u, (m->flags & COLL_MESHF_QUANT) ? 2u : 4u },
         { l.off_tris, (uint64_t)m->ntris * 3u, (m->flags & (COLL_MESHF_IDX16 | COLL_MESHF_IDXBLK)) ? 2u : 4u },
         { l.off_tbase, l.ntbase, 4u },
         { l.off_cells, ncells + 1u, 4u },
         { l.off_refs, m->nrefs, (m->flags & COLL_MESHF_REF16) ? 2u : 4u },
+        { l.off_codes, (m->flags & COLL_MESHF_RCODE) ? m->nrefs : 0u, 1u },
     };
     uint32_t h = 2166136261u, w;
     for (uint32_t i = 1; i < sizeof(struct coll_mesh_s) / 4u; i++)
         if (i != 4) { memcpy(&w, b + 4 * i, 4); h = (h ^ w) * 16777619u; }
-    for (int i = 0; i < 5; i++)
+    for (int i = 0; i < 6; i++)
         for (uint64_t k = 0; k < s[i].n; k++) {
             uint16_t u16;
-            if (s[i].es == 2) { memcpy(&u16, b + s[i].off + 2 * k, 2); w = u16; }
+            if (s[i].es == 1) w = b[s[i].off + k];
+            else if (s[i].es == 2) { memcpy(&u16, b + s[i].off + 2 * k, 2); w = u16; }
             else memcpy(&w, b + s[i].off + 4 * k, 4);
             h = (h ^ w) * 16777619u;
         }
@@ -359,7 +361,7 @@ static void test_block_indices_when_many_vertices(void)
         TEST_ASSERT_TRUE(m->flags & COLL_MESHF_IDXBLK);
         TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDX16);
         TEST_ASSERT_FALSE(m->flags & COLL_MESHF_REF16);
-        TEST_ASSERT_EQUAL_UINT32(4, m->version);
+        TEST_ASSERT_EQUAL_UINT32(COLL_MESH_VERSION, m->version);
         coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, m->nverts, m->ntris, coll_mesh_cell_count(m), m->nrefs);
         TEST_ASSERT_TRUE(l.ntbase == (nt + 63) / 64);
         TEST_ASSERT_TRUE(l.off_tbase == l.off_tris + ((6u * nt + 7u) & ~7u));
@@ -395,13 +397,24 @@ static void test_block_indices_when_many_vertices(void)
     m->version = 3;
     m->checksum = native_checksum(m);
     TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(m, coll_mesh_size(m), &lm));
-    m->version = 5;
+    m->version = COLL_MESH_VERSION + 1u;
     m->checksum = native_checksum(m);
     TEST_ASSERT_EQUAL_INT(COLL_ERR_VERSION, coll_mesh_load(m, coll_mesh_size(m), &lm));
-    /* a version 3 mesh (no block indices) still loads */
+    /* a version 3 mesh (no block indices, no sub-cell codes) still loads; sub-cell codes
+     * are version 5: a version 3 or 4 header with them is corrupt */
     nt = core_grid_level(g_verts, &nv, g_idx, 20, 20, 1.0f, 0, 0, 0);
     m = (coll_mesh_t *)(void *)build(nv, nt, NULL);
     TEST_ASSERT_FALSE(m->flags & COLL_MESHF_IDXBLK);
+    TEST_ASSERT_TRUE(m->flags & COLL_MESHF_RCODE);
+    for (uint32_t v = 3; v <= 4; v++) {
+        m->version = v;
+        m->checksum = native_checksum(m);
+        TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(m, coll_mesh_size(m), &lm));
+    }
+    nt = core_grid_level(g_verts, &nv, g_idx, 20, 20, 1.0f, 0, 0, 0);
+    coll_mesh_build_opts_t q = { 0.0f, COLL_MESH_QUANTIZE };
+    m = (coll_mesh_t *)(void *)build(nv, nt, &q);
+    TEST_ASSERT_FALSE(m->flags & (COLL_MESHF_IDXBLK | COLL_MESHF_RCODE));
     m->version = 3;
     m->checksum = native_checksum(m);
     TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(m, coll_mesh_size(m), &lm));

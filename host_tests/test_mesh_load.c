@@ -52,6 +52,8 @@ static void test_round_trip_big_endian_blob(void)
 {
     for (uint32_t flags = 0; flags < 2; flags++) {
         const coll_mesh_t *m = make_mesh(flags ? COLL_MESH_QUANTIZE : 0u, 10);
+        /* float: with the sub-cell codes (a dense grid), quantized: without */
+        TEST_ASSERT_EQUAL_INT(!flags, (m->flags & COLL_MESHF_RCODE) != 0u);
         const uint8_t *b = (const uint8_t *)g_blob;
         TEST_ASSERT_EQUAL_MEMORY("CMSH", b, 4); /* big-endian on disk, on any host */
         TEST_ASSERT_EQUAL_UINT8(0, b[4]);
@@ -194,19 +196,21 @@ static void forge_checksum(uint8_t *b, size_t size)
     if (ncells > size) return;
     /* version 4: with block indices (flag 16) a uint32 base per 64 triangles follows them */
     uint64_t tb = be32(b + 112) + (((uint64_t)ntris * 6u + 7u) & ~(uint64_t)7u);
-    uint64_t off[5] = { be32(b + 108), be32(b + 112), tb, be32(b + 116), be32(b + 120) };
-    uint64_t cnt[5] = { (uint64_t)nverts * 3, (uint64_t)ntris * 3, (flags & 16) ? ((uint64_t)ntris + 63) / 64 : 0,
-                        ncells + 1, nrefs };
-    uint32_t es[5] = { (flags & 1) ? 2u : 4u, (flags & 18) ? 2u : 4u, 4u, 4u, (flags & 4) ? 2u : 4u };
-    for (int i = 0; i < 5; i++)
+    /* version 5: with sub-cell codes (flag 32) a byte per ref follows the refs (8-aligned) */
+    uint64_t cb = be32(b + 120) + (((uint64_t)nrefs * ((flags & 4) ? 2u : 4u) + 7u) & ~(uint64_t)7u);
+    uint64_t off[6] = { be32(b + 108), be32(b + 112), tb, be32(b + 116), be32(b + 120), cb };
+    uint64_t cnt[6] = { (uint64_t)nverts * 3, (uint64_t)ntris * 3, (flags & 16) ? ((uint64_t)ntris + 63) / 64 : 0,
+                        ncells + 1, nrefs, (flags & 32) ? nrefs : 0 };
+    uint32_t es[6] = { (flags & 1) ? 2u : 4u, (flags & 18) ? 2u : 4u, 4u, 4u, (flags & 4) ? 2u : 4u, 1u };
+    for (int i = 0; i < 6; i++)
         if (off[i] + cnt[i] * es[i] > size) return;
     uint32_t h = 2166136261u;
     for (int w = 1; w < HDR_WORDS; w++)
         if (w != 4) h = (h ^ be32(b + 4 * w)) * 16777619u;
-    for (int i = 0; i < 5; i++)
+    for (int i = 0; i < 6; i++)
         for (uint64_t k = 0; k < cnt[i]; k++) {
             const uint8_t *p = b + off[i] + k * es[i];
-            uint32_t v = es[i] == 2 ? (uint32_t)(p[0] << 8 | p[1]) : be32(p);
+            uint32_t v = es[i] == 1 ? p[0] : es[i] == 2 ? (uint32_t)(p[0] << 8 | p[1]) : be32(p);
             h = (h ^ v) * 16777619u;
         }
     put_be32(b + 16, h);
@@ -316,6 +320,25 @@ static void test_corrupt_fields_with_valid_checksum(void)
     TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
     memcpy(g_work, g_blob, g_blob_size);
     put_be32(b + off_cells + 4, 0xFFFFu);
+    forge_checksum(b, g_blob_size);
+    TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
+    /* sub-cell codes (version 5): each nibble a run of one to four quarters; on a version 4
+     * header, or on a hashed grid, the flag itself is corrupt */
+    TEST_ASSERT_TRUE(be32((uint8_t *)g_blob + 8) & COLL_MESHF_RCODE);
+    uint32_t nrefs = be32((uint8_t *)g_blob + 28), off_codes = off_refs + ((nrefs * 2u + 7u) & ~7u);
+    static const uint8_t bad_codes[] = { 0x00, 0x0F, 0xF0, 0x5F, 0xF9, 0xAF };
+    for (size_t i = 0; i < sizeof bad_codes; i++) {
+        memcpy(g_work, g_blob, g_blob_size);
+        b[off_codes + nrefs / 2u] = bad_codes[i];
+        forge_checksum(b, g_blob_size);
+        TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
+    }
+    memcpy(g_work, g_blob, g_blob_size);
+    b[off_codes + nrefs / 2u] = 0x36; /* another valid code: loads */
+    forge_checksum(b, g_blob_size);
+    TEST_ASSERT_EQUAL_INT(COLL_OK, coll_mesh_load(g_work, g_blob_size, &l));
+    memcpy(g_work, g_blob, g_blob_size);
+    put_be32(b + 4, 4);
     forge_checksum(b, g_blob_size);
     TEST_ASSERT_EQUAL_INT(COLL_ERR_CORRUPT, coll_mesh_load(g_work, g_blob_size, &l));
     memcpy(g_work, g_blob, g_blob_size);

@@ -1699,6 +1699,160 @@ static void test_gather_cache_equals_fresh_gather(void)
     TEST_ASSERT_TRUE(removed > 0u && masks > 0u);
 }
 
+/* The sub-cell codes (COLL_MESHF_RCODE) change nothing but the work: every ref's code is
+ * the quarters of its triangle's box grown by the grid margin in its cell (X bits 0-3, Z
+ * bits 4-7), and a gather on a coded mesh is bit for bit the gather on the same mesh with
+ * its codes ignored (a copy with the flag cleared): the same triangles in the same order,
+ * placement, shape and box, over random worlds (rotated and scaled instances take the
+ * generic walk, identity ones the coded 16-bit one; far from the origin; boxes from a
+ * body's size to a few metres). It fails when the walk's quarters of its box are those of
+ * the first cell in every cell (no superset in the cells after it), or without the margin
+ * in the codes' boxes. */
+static uint64_t g_twinbuf[2][(1u << 19) / 8];
+
+static void check_codes(const coll_mesh_t *m, uint32_t *partial)
+{
+    const uint8_t *codes = coll_mesh_codes(m);
+    TEST_ASSERT_NOT_NULL(codes);
+    const uint32_t *cells = coll_mesh_cells(m);
+    float inv4 = 4.0f / m->cell_size;
+    for (uint32_t z = 0; z < m->dims[2]; z++)
+        for (uint32_t y = 0; y < m->dims[1]; y++)
+            for (uint32_t x = 0; x < m->dims[0]; x++) {
+                uint32_t ci = coll_mesh_cell_index(m, x, y, z);
+                float cx = m->grid_origin[0] + (float)(int32_t)x * m->cell_size;
+                float cz = m->grid_origin[2] + (float)(int32_t)z * m->cell_size;
+                for (uint32_t k = cells[ci]; k < cells[ci + 1]; k++) {
+                    fm_vec3_t v[3];
+                    coll_mesh_triangle(m, coll_mesh_ref(m, k), v);
+                    float lo[3], hi[3];
+                    for (int a = 0; a < 3; a++) {
+                        lo[a] = f_min(v[0].v[a], f_min(v[1].v[a], v[2].v[a])) - m->grid_margin;
+                        hi[a] = f_max(v[0].v[a], f_max(v[1].v[a], v[2].v[a])) + m->grid_margin;
+                    }
+                    TEST_ASSERT_EQUAL_UINT(coll_mesh_ref_code(lo[0], hi[0], lo[2], hi[2], cx, cz, inv4), codes[k]);
+                    *partial += codes[k] != 0xFFu;
+                }
+            }
+}
+
+/* A float mesh on a dense grid (so it has codes): a floor-like field of triangles over a
+ * 24 x 24 m area a few metres high, walls and small clutter among them, far from the origin
+ * in its own frame when off is. */
+static const coll_mesh_t *coded_mesh(core_rng_t *r, int slot, double off)
+{
+    uint32_t nt = 60 + core_rng_u32(r) % 400, nv = 0;
+    for (uint32_t t = 0; t < nt; t++) {
+        int kind = (int)(core_rng_u32(r) % 3);
+        double c[3] = { off + core_rng_range(r, -12, 12), off + core_rng_range(r, 0, 3), off + core_rng_range(r, -12, 12) };
+        double s = kind == 2 ? 0.1 : core_rng_range(r, 0.3, 3);
+        for (int k = 0; k < 3; k++)
+            for (int a = 0; a < 3; a++) {
+                double e = k == 0 ? 0.0 : core_rng_range(r, -1, 1) * s;
+                if (kind == 0 && a == 1) e *= 0.05; /* floor */
+                if (kind == 1 && a == (k == 1 ? 0 : 2)) e *= 0.02; /* upright */
+                g_verts[3 * (nv + (uint32_t)k) + a] = (float)(c[a] + e);
+            }
+        g_idx[3 * t] = nv; g_idx[3 * t + 1] = nv + 1; g_idx[3 * t + 2] = nv + 2;
+        nv += 3;
+    }
+    coll_mesh_build_opts_t o = { core_rng_u32(r) % 3 ? (float)core_rng_range(r, 1.0, 6.0) : 0.0f, 0u };
+    return build_mesh(slot, nv, nt, &o);
+}
+
+static void test_gather_codes_change_nothing(void)
+{
+    core_rng_t r;
+    core_rng_seed(&r, 1717);
+    static coll_gather_t g, h;
+    static coll_scene_t twin;
+    static coll_mesh_instance_t tinst[3];
+    uint32_t coded = 0, partial = 0, compared = 0, kept = 0;
+    for (int wi = 0; wi < N_WORLDS; wi++) {
+        memset(&g_w, 0, sizeof g_w);
+        coll_scene_init(&g_w.scene);
+        coll_scene_init(&twin);
+        double off = core_rng_u32(&r) % 3 == 0 ? core_rng_range(&r, 1500, 2000) : 0.0;
+        const coll_mesh_t *ms[2] = { coded_mesh(&r, 0, off), coded_mesh(&r, 1, 0.0) };
+        for (int i = 0; i < 2; i++) {
+            if (!(ms[i]->flags & COLL_MESHF_RCODE)) {
+                TEST_ASSERT_TRUE((ms[i]->flags & COLL_MESHF_HASH) != 0u);
+                continue;
+            }
+            check_codes(ms[i], &partial);
+            coded++;
+        }
+        int ninst = 1 + (int)(core_rng_u32(&r) % 3);
+        for (int i = 0; i < ninst; i++) {
+            coll_mesh_instance_t *in = &g_w.inst[i];
+            int slot = i == 1 ? 1 : 0;
+            in->mesh = ms[slot];
+            double b[3] = { 0, 0, 0 };
+            random_xf(&r, &in->xf, b);
+            if (core_rng_u32(&r) % 2) { /* the common instance: no rotation, unit scale */
+                in->xf.rot = (fm_quat_t){{ 0, 0, 0, 1 }};
+                in->xf.scale = (fm_vec3_t){{ 1, 1, 1 }};
+            }
+            in->write_mask = i == 2 ? 2 : 1;
+            in->id = (uint16_t)(100 + i);
+            TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&g_w.scene, in));
+            tinst[i] = *in;
+            if (ms[slot]->flags & COLL_MESHF_RCODE) { /* the twin: the same bytes, the codes ignored */
+                memcpy(g_twinbuf[slot], ms[slot], ms[slot]->total_size);
+                uint32_t fl = ms[slot]->flags & ~(uint32_t)COLL_MESHF_RCODE;
+                memcpy((uint8_t *)g_twinbuf[slot] + offsetof(struct coll_mesh_s, flags), &fl, sizeof fl);
+                tinst[i].mesh = (const coll_mesh_t *)(const void *)g_twinbuf[slot];
+            }
+            TEST_ASSERT_EQUAL_INT(COLL_OK, coll_scene_add_mesh(&twin, &tinst[i]));
+        }
+        for (int a = 0; a < 3; a++) { g_w.lo[a] = 1e300; g_w.hi[a] = -1e300; }
+        for (int i = 0; i < ninst; i++)
+            for (uint32_t t = 0; t < coll_mesh_triangle_count(g_w.inst[i].mesh); t++) {
+                core_d3 w[3];
+                core_world_tri(&g_w.inst[i], t, w);
+                for (int k = 0; k < 3; k++) {
+                    double v[3] = { w[k].x, w[k].y, w[k].z };
+                    for (int a = 0; a < 3; a++) { g_w.lo[a] = fmin(g_w.lo[a], v[a]); g_w.hi[a] = fmax(g_w.hi[a], v[a]); }
+                }
+            }
+        for (int q = 0; q < 40; q++) {
+            fm_vec3_t c = to_f(core_rng_u32(&r) % 2 ? random_surface_point(&r) : random_point_in_region(&r, 1.0));
+            fm_vec3_t lo, hi;
+            double big = core_rng_u32(&r) % 3 ? 0.8 : 3.0;
+            for (int a = 0; a < 3; a++) {
+                lo.v[a] = (float)(c.v[a] - core_rng_range(&r, 0.2, big));
+                hi.v[a] = (float)(c.v[a] + core_rng_range(&r, 0.2, big));
+            }
+            uint8_t mask = core_rng_u32(&r) % 4 ? 0xFF : 2;
+            ASSERT_NO_ALLOC(coll_gather_begin(&g, &g_w.scene, lo, hi, mask, COLL_TYPE_MESH));
+            coll_gather_begin(&h, &twin, lo, hi, mask, COLL_TYPE_MESH);
+            TEST_ASSERT_EQUAL_INT(h.valid, g.valid);
+            if (!g.valid) continue;
+            TEST_ASSERT_EQUAL_MEMORY(&h.lo, &g.lo, sizeof g.lo);
+            TEST_ASSERT_EQUAL_MEMORY(&h.hi, &g.hi, sizeof g.hi);
+            TEST_ASSERT_EQUAL_UINT(h.ntris, g.ntris);
+            for (uint16_t k = 0; k < g.ntris; k++) {
+                const coll_gather_tri_t *x = &g.tris[k], *y = &h.tris[k];
+                TEST_ASSERT_EQUAL_INT(y->inst - tinst, x->inst - g_w.inst);
+                TEST_ASSERT_EQUAL_INT(y->tri, x->tri);
+                TEST_ASSERT_EQUAL_MEMORY(&y->w0, &x->w0, sizeof x->w0);
+                TEST_ASSERT_EQUAL_MEMORY(&y->e1, &x->e1, sizeof x->e1);
+                TEST_ASSERT_EQUAL_MEMORY(&y->e2, &x->e2, sizeof x->e2);
+                TEST_ASSERT_EQUAL_MEMORY(&y->lo, &x->lo, sizeof x->lo);
+                TEST_ASSERT_EQUAL_MEMORY(&y->hi, &x->hi, sizeof x->hi);
+            }
+            compared++;
+            kept += g.ntris;
+        }
+    }
+    printf("codes: %u coded meshes, %u partial codes, %u gathers compared, %u triangles\n", coded, partial, compared,
+           kept);
+    TEST_ASSERT_TRUE(coded > N_WORLDS / 2);
+    TEST_ASSERT_TRUE(partial > 100u * coded);
+    TEST_ASSERT_TRUE(compared > N_WORLDS * 30);
+    TEST_ASSERT_TRUE(kept > compared);
+}
+
 static void test_grid_kinds_covered(void)
 {
     printf("grids built: %u dense, %u hashed\n", g_dense_built, g_hashed_built);
@@ -1728,6 +1882,7 @@ int main(void)
     RUN_TEST(test_gather_keeps_the_triangles_meeting_its_box);
     RUN_TEST(test_sweeps_grazing_a_plane_agree_with_the_exact_test);
     RUN_TEST(test_gathered_sweep_above_a_floor_plane);
+    RUN_TEST(test_gather_codes_change_nothing);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);
     return UNITY_END();

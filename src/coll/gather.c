@@ -100,17 +100,49 @@ CAND_INLINE bool tri_axis_box(float w, float a1, float a2, float glo, float ghi,
  * unit scale), simple a constant true (the kept triangle's relative form in straight
  * code); false when the buffer overflowed. The walk's box is kept in locals (blo, bhi:
  * reloaded only after gather_shrink, the one place that changes it), so the per-entry test
- * reads it from registers, not through the walk after each kept triangle's stores. */
+ * reads it from registers, not through the walk after each kept triangle's stores.
+ *
+ * coded (a dense grid with sub-cell codes, COLL_MESHF_RCODE): each cell entered gets the
+ * quarters of the walk's box in it across X and Z (coll_mesh_quarter, the builder's
+ * function): from its low side's quarter in the first cell of the walk's range on that
+ * axis, else 0, to its high side's in the last, else 3 (in a cell between, the box covers
+ * the whole cell; all four is a superset either way). An entry whose code shares no
+ * quarter with them on either axis is rejected from its code byte alone: its triangle's
+ * box (grown by the grid margin) lies wholly on one side of the walk's box on that axis
+ * (the quarter is monotone), so the box test below would reject it too. The same
+ * triangles, in the same order; the dedup sees only what passes the box test, as before.
+ * A box shrunk during the walk keeps the quarters of the larger one (a superset). */
 CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_instance_t *inst, const xf3_t *x,
-                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay, const bool simple)
+                             const fm_vec3_t *o_l, seen_t *seen, const uint32_t lay, const bool simple,
+                             const bool coded)
 {
     const coll_scene_t *scene = g->scene;
     fm_vec3_t blo = *w->llo, bhi = *w->lhi;
-    while (grid_walk_next_cell(w))
+    const coll_mesh_t *m = w->m;
+    const uint8_t *codes = NULL;
+    uint32_t qx0 = 0u, qx1 = 0u, qz0 = 0u, qz1 = 0u; /* the box's quarters in its first / last cells */
+    if (coded) {
+        codes = coll_mesh_codes(m);
+        const float inv4 = 4.0f / m->cell_size;
+        qx0 = coll_mesh_quarter(blo.x, m->grid_origin[0] + (float)(int32_t)w->clo[0] * m->cell_size, inv4);
+        qx1 = coll_mesh_quarter(bhi.x, m->grid_origin[0] + (float)(int32_t)w->chi[0] * m->cell_size, inv4);
+        qz0 = coll_mesh_quarter(blo.z, m->grid_origin[2] + (float)(int32_t)w->clo[2] * m->cell_size, inv4);
+        qz1 = coll_mesh_quarter(bhi.z, m->grid_origin[2] + (float)(int32_t)w->chi[2] * m->cell_size, inv4);
+    }
+    while (grid_walk_next_cell(w)) {
+        uint32_t qx = 0u, qz = 0u;
+        if (coded) {
+            qx = coll_mesh_quarter_bits(w->c[0] == w->clo[0] ? qx0 : 0u, w->c[0] == w->chi[0] ? qx1 : 3u);
+            qz = coll_mesh_quarter_bits(w->c[2] == w->clo[2] ? qz0 : 0u, w->c[2] == w->chi[2] ? qz1 : 3u) << 4;
+        }
         for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
             uint32_t t;
             fm_vec3_t w0, e1, e2, v[3], lo, hi;
-            if (!grid_walk_take_box(w, lay, k, &t, v, &blo, &bhi)) continue;
+            if (coded) {
+                uint32_t cd = codes[k];
+                if (!(cd & qx) || !(cd & qz)) continue;
+            }
+            if (!grid_walk_take_box_o(w, lay, k, &t, v, &blo, &bhi, coded)) continue;
             if (simple) { /* tri_rel_of's expressions for an identity transform */
                 fm_vec3_sub(&w0, &v[0], o_l);
                 fm_vec3_sub(&e1, &v[1], &v[0]);
@@ -146,6 +178,7 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             }
             gather_push(g, w0, e1, e2, lo, hi, inst, t);
         }
+    }
     return true;
 }
 
@@ -181,15 +214,18 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
         grid_walk_t w;
         if (!grid_walk_box(&w, m, &llo, &lhi, &seen)) continue;
         /* the baker's small-mesh layouts (16-bit indices and refs; float or quantized
-         * vertices) under an identity transform get their own loops, any other the
+         * vertices) under an identity transform get their own loops (float: with the
+         * sub-cell codes of a dense grid, or without: a hashed grid's), any other the
          * generic one */
         const uint32_t I16 = COLL_MESHF_IDX16 | COLL_MESHF_REF16;
         bool ok;
         uint32_t lay = grid_walk_layout(&w);
-        if (lay == I16 && x.simple) ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16, true);
+        bool coded = (m->flags & COLL_MESHF_RCODE) && !w.walk_all;
+        if (lay == I16 && x.simple && coded) ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16, true, true);
+        else if (lay == I16 && x.simple) ok = gather_walk(g, &w, inst, &x, &o_l, &seen, I16, true, false);
         else if (lay == (COLL_MESHF_QUANT | I16) && x.simple)
-            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16, true);
-        else ok = gather_walk(g, &w, inst, &x, &o_l, &seen, lay, x.simple);
+            ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16, true, false);
+        else ok = gather_walk(g, &w, inst, &x, &o_l, &seen, lay, x.simple, coded);
         if (!ok) return;
         grid_walk_end(&w, scene);
     }

@@ -376,8 +376,11 @@ CAND_INLINE void view_idx_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t
     }
 }
 
-CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, const fm_vec3_t *llo,
-                              const fm_vec3_t *lhi, fm_vec3_t v[3])
+/* (yfirst: the float test's axes in the order Y, X, Z, for a walk whose entries passed the
+ * sub-cell codes' X and Z test already: what is left for the box test to reject is mostly
+ * off along Y. The same answer in either order.) */
+CAND_INLINE bool cand_tri_lay_o(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, const fm_vec3_t *llo,
+                                const fm_vec3_t *lhi, fm_vec3_t v[3], const bool yfirst)
 {
     if (lay & COLL_MESHF_QUANT) {
         uint32_t ix[3];
@@ -395,16 +398,29 @@ CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t
     const uint32_t i0 = ix[0], i1 = ix[1], i2 = ix[2];
     const float *vs = (const float *)(const void *)mv->verts;
     const float *a = vs + 3u * i0, *b = vs + 3u * i1, *c = vs + 3u * i2;
-    float lo = llo->x, hi = lhi->x;
+    float lo, hi;
+    if (yfirst) {
+        lo = llo->y; hi = lhi->y;
+        if ((a[1] < lo && b[1] < lo && c[1] < lo) || (a[1] > hi && b[1] > hi && c[1] > hi)) return false;
+    }
+    lo = llo->x; hi = lhi->x;
     if ((a[0] < lo && b[0] < lo && c[0] < lo) || (a[0] > hi && b[0] > hi && c[0] > hi)) return false;
     lo = llo->z; hi = lhi->z;
     if ((a[2] < lo && b[2] < lo && c[2] < lo) || (a[2] > hi && b[2] > hi && c[2] > hi)) return false;
-    lo = llo->y; hi = lhi->y;
-    if ((a[1] < lo && b[1] < lo && c[1] < lo) || (a[1] > hi && b[1] > hi && c[1] > hi)) return false;
+    if (!yfirst) {
+        lo = llo->y; hi = lhi->y;
+        if ((a[1] < lo && b[1] < lo && c[1] < lo) || (a[1] > hi && b[1] > hi && c[1] > hi)) return false;
+    }
     v[0].x = a[0]; v[0].y = a[1]; v[0].z = a[2];
     v[1].x = b[0]; v[1].y = b[1]; v[1].z = b[2];
     v[2].x = c[0]; v[2].y = c[1]; v[2].z = c[2];
     return true;
+}
+
+CAND_INLINE bool cand_tri_lay(const coll_mesh_view_t *mv, uint32_t lay, uint32_t t, const fm_vec3_t *llo,
+                              const fm_vec3_t *lhi, fm_vec3_t v[3])
+{
+    return cand_tri_lay_o(mv, lay, t, llo, lhi, v, false);
 }
 
 CAND_INLINE bool cand_tri(const coll_mesh_view_t *mv, uint32_t t, const fm_vec3_t *llo, const fm_vec3_t *lhi,
@@ -557,11 +573,11 @@ CAND_INLINE bool grid_walk_take_lay(grid_walk_t *w, uint32_t lay, uint32_t k, ui
 /* grid_walk_take_lay with the walk's box given (llo..lhi: *w->llo..*w->lhi, or a copy of it
  * the caller keeps in locals, so that the per-entry test does not reload it through the
  * walk's pointers after every store the compiler cannot tell apart from them). */
-CAND_INLINE bool grid_walk_take_box(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3],
-                                    const fm_vec3_t *llo, const fm_vec3_t *lhi)
+CAND_INLINE bool grid_walk_take_box_o(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3],
+                                      const fm_vec3_t *llo, const fm_vec3_t *lhi, const bool yfirst)
 {
     *t = view_ref_lay(&w->mv, lay, k);
-    if (!cand_tri_lay(&w->mv, lay, *t, llo, lhi, v)) return false;
+    if (!cand_tri_lay_o(&w->mv, lay, *t, llo, lhi, v, yfirst)) return false;
     if (!w->dedup) return true;
     int sc = seen_check(w->seen, *t);
     if (sc == SEEN_BEFORE) return false;
@@ -571,6 +587,12 @@ CAND_INLINE bool grid_walk_take_box(grid_walk_t *w, uint32_t lay, uint32_t k, ui
         if (listed_earlier(w->m, w->walk_all, clo, chi, w->c[0], w->c[1], w->c[2], *t)) return false;
     }
     return true;
+}
+
+CAND_INLINE bool grid_walk_take_box(grid_walk_t *w, uint32_t lay, uint32_t k, uint32_t *t, fm_vec3_t v[3],
+                                    const fm_vec3_t *llo, const fm_vec3_t *lhi)
+{
+    return grid_walk_take_box_o(w, lay, k, t, v, llo, lhi, false);
 }
 
 CAND_INLINE bool grid_walk_take(grid_walk_t *w, uint32_t k, uint32_t *t, fm_vec3_t v[3])

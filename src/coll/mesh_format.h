@@ -24,6 +24,14 @@
  *                was registered from, ascending), so fine cells cost memory only where
  *                there are triangles; queries test every candidate exactly anyway.
  *     refs       nrefs triangle indices, uint16 with COLL_MESHF_REF16, else uint32
+ *     codes      with COLL_MESHF_RCODE (version 5) only: nrefs bytes, one per ref: where in
+ *                its cell the triangle lies, across the cell's X and Z in quarters
+ *                (coll_mesh_ref_code): bits 0-3 the X quarters, bits 4-7 the Z quarters its
+ *                box grown by grid_margin reaches (clamped to the cell). A query rejects a
+ *                ref whose quarters miss its own box's quarters in the cell without reading
+ *                the triangle (exactly: its box test would reject it too). Dense grids of
+ *                float meshes only (the builder adds them where the blob stays within 24
+ *                bytes a triangle; quantized and hashed meshes have none).
  *
  * Every section starts at an 8-byte aligned offset that is a pure function of the counts
  * and flags (coll_mesh_layout_of()); loaders recompute it and demand equality; the gaps
@@ -50,9 +58,9 @@
 #define COLL_MESH_MAGIC_NATIVE 0x434D534Eu /**< "CMSN": native byte order, ready to use */
 /** 2: hashed grid (COLL_MESHF_HASH, nbuckets). 3: the grid's registration margin is stored
  *  (grid_margin), so the queries use what the builder used. 4: block-based 16-bit vertex
- *  indices (COLL_MESHF_IDXBLK). Version 3 blobs (which never have that flag) still load;
+ *  indices (COLL_MESHF_IDXBLK). 5: per-ref sub-cell codes (COLL_MESHF_RCODE). Version 3 blobs (which never have that flag) still load;
  *  older ones are refused (COLL_ERR_VERSION: bake them again). */
-#define COLL_MESH_VERSION      4u
+#define COLL_MESH_VERSION      5u
 #define COLL_MESH_VERSION_MIN  3u
 /** Triangles per block of COLL_MESHF_IDXBLK (one uint32 base each). */
 #define COLL_MESH_TRI_BLOCK_SHIFT 6u
@@ -65,7 +73,8 @@ enum {
     COLL_MESHF_HASH  = 1u << 3, /**< cells are nbuckets hash buckets, not the dense grid */
     COLL_MESHF_IDXBLK = 1u << 4, /**< uint16 vertex indices from a uint32 base per block of
                                       COLL_MESH_TRI_BLOCK triangles (version 4; not with IDX16) */
-    COLL_MESHF_ALL   = 31u,
+    COLL_MESHF_RCODE = 1u << 5, /**< a sub-cell code byte per ref (version 5; dense grid only) */
+    COLL_MESHF_ALL   = 63u,
 };
 
 /** Header. All fields are 32-bit words (floats are IEEE-754 binary32). */
@@ -98,7 +107,7 @@ _Static_assert(sizeof(struct coll_mesh_s) == 136, "on-disk mesh header is 136 by
 
 /** Offsets of a layout, computed from the counts (64-bit so nothing overflows). */
 typedef struct {
-    uint64_t off_verts, off_tris, off_tbase, off_cells, off_refs, total;
+    uint64_t off_verts, off_tris, off_tbase, off_cells, off_refs, off_codes, total;
     uint64_t ntbase; /**< tri bases (COLL_MESHF_IDXBLK), else 0 (and off_tbase = off_cells) */
 } coll_mesh_layout_t;
 
@@ -120,7 +129,8 @@ static inline coll_mesh_layout_t coll_mesh_layout_of(uint32_t flags, uint64_t nv
     l.ntbase    = (flags & COLL_MESHF_IDXBLK) ? coll_mesh_tri_blocks(ntris) : 0u;
     l.off_cells = COLL_MESH_ALIGN8(l.off_tbase + l.ntbase * 4u);
     l.off_refs  = COLL_MESH_ALIGN8(l.off_cells + (ncells + 1u) * 4u);
-    l.total     = COLL_MESH_ALIGN8(l.off_refs + nrefs * ((flags & COLL_MESHF_REF16) ? 2u : 4u));
+    l.off_codes = COLL_MESH_ALIGN8(l.off_refs + nrefs * ((flags & COLL_MESHF_REF16) ? 2u : 4u));
+    l.total     = COLL_MESH_ALIGN8(l.off_codes + ((flags & COLL_MESHF_RCODE) ? nrefs : 0u));
 #undef COLL_MESH_ALIGN8
     return l;
 }
@@ -168,6 +178,39 @@ static inline uint32_t coll_mesh_cell_coord(float x, float origin, float inv, ui
     if (f >= (float)(int32_t)dim) return dim - 1u;
     uint32_t c = (uint32_t)f;
     return c < dim ? c : dim - 1u;
+}
+
+/**
+ * Sub-cell quarter (0..3) of local coordinate x along an axis in a cell whose low corner on
+ * that axis is lo (grid_origin + c * cell_size, computed as (float)(int32_t)c * cell_size),
+ * inv4 = 4 / cell_size; clamped. Monotone in x: a box's quarters cover the quarters of
+ * every box inside it, so two boxes whose quarter ranges are disjoint are disjoint.
+ */
+static inline uint32_t coll_mesh_quarter(float x, float lo, float inv4)
+{
+    float f = (x - lo) * inv4;
+    if (!(f > 0.0f)) return 0u;
+    if (f >= 3.0f) return 3u;
+    return (uint32_t)(int32_t)f;
+}
+
+/** The quarters a..b (a <= b) of one axis as bits a..b of a nibble. */
+static inline uint32_t coll_mesh_quarter_bits(uint32_t a, uint32_t b) { return (2u << b) - (1u << a); }
+
+/** A ref's code (COLL_MESHF_RCODE) or a query's: the X quarters of lo..hi in bits 0-3, the
+ *  Z quarters in bits 4-7, in the cell whose low corner is c (see coll_mesh_quarter). */
+static inline uint32_t coll_mesh_ref_code(float lox, float hix, float loz, float hiz, float cx, float cz, float inv4)
+{
+    return coll_mesh_quarter_bits(coll_mesh_quarter(lox, cx, inv4), coll_mesh_quarter(hix, cx, inv4)) |
+           coll_mesh_quarter_bits(coll_mesh_quarter(loz, cz, inv4), coll_mesh_quarter(hiz, cz, inv4)) << 4;
+}
+
+/** The code bytes (COLL_MESHF_RCODE), or NULL. */
+static inline const uint8_t *coll_mesh_codes(const coll_mesh_t *m)
+{
+    if (!(m->flags & COLL_MESHF_RCODE)) return NULL;
+    coll_mesh_layout_t l = coll_mesh_layout_of(m->flags, 0u, 0u, 0u, m->nrefs);
+    return (const uint8_t *)m + m->off_refs + (l.off_codes - l.off_refs);
 }
 
 /** Grid cell triangles: refs[begin..end). */
