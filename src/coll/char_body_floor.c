@@ -1192,7 +1192,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
              * search's reach; grounded there, it stood inside the tile). A floor the ball
              * rests on (its centre above it) still holds the body: with no way out it stays
              * standing (s2 l193). */
-            if (!fits && s.found && -s.gap > c->radius) s.found = false;
+            if (!fits && s.found && !was_grounded && -s.gap > c->radius) s.found = false;
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
