@@ -1185,14 +1185,6 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 else s.found = false;
                 fits = !s.found || stand_on(c, pos, s.gap, s.normal);
             }
-            /* In the air, no room to be lifted onto a floor above the full capsule's bottom
-             * ball's centre (the foot deep in a tile under an overhang): that ball is inside
-             * the floor, not resting on it, and the body does not stand on it (soak s4 l325:
-             * r 0.105, the foot 138 mm inside a tile, no place to stand within the stand
-             * search's reach; grounded there, it stood inside the tile). A floor the ball
-             * rests on (its centre above it) still holds the body: with no way out it stays
-             * standing (s2 l193). */
-            if (!fits && s.found && !was_grounded && -s.gap > c->radius) s.found = false;
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
