@@ -739,6 +739,46 @@ static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00814, soak_check_footing(&lvl, s, deeper));
 }
 
+/* The footing oracle and the edge of the floor under the foot (soak seed 10 level 402: up
+ * tilted 45 degrees, r 0.73, a staircase whose treads (44.5 degrees off up) and whose side
+ * (45.6 degrees off up, one plane for every step) are both walkable). The foot stands on a
+ * tread 4 cm inside the staircase's side, 8.5 cm before the next riser; up leans out over
+ * the side. The full ball overlaps the tread's edge (the convex ridge between the tread
+ * and the side below it: the tread's closest point to the ball's centre, and the side's),
+ * and in the step zone the next step's corner and the step after's edge. The side's
+ * contact at the ridge made the surround with those two: 8.25 mm. It touches the ball
+ * where the tread the foot stands on does: the floor under the foot, no side of a gap.
+ * Without the tread (the foot over nothing), the ridge is a contact again and fails. */
+static void test_oracle_footing_ridge_of_the_floor_under_the_foot(void)
+{
+    static soak_frame_t fr[8];
+    soak_replay_t rp;
+    memset(&rp, 0, sizeof rp);
+    rp.frames = fr;
+    rp.cap = 8;
+    int line = 0;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s10_l402_footing.replay", &rp, &line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    const char_body_settings_t *s = &rp.settings;
+    const fm_vec3_t p = V(-0x1.c1ab42p+0f, 0x1.f0c6cep+0f, 0x1.de40cp-1f); /* main's body, frame 3 */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
+    /* 3 mm into the tread: below it, not standing on it; the ridge counts again, 8.25 + 3 mm */
+    const fm_vec3_t sunk = V(p.x - 0.003f * s->up.x, p.y - 0.003f * s->up.y, p.z - 0.003f * s->up.z);
+    TEST_ASSERT_DOUBLE_WITHIN(2e-4, 0.01125, soak_check_footing(&lvl, s, sunk));
+    /* the tread (y 2.4711) hidden: the ridge is the side's contact alone, the surround is back */
+    uint32_t hidden = 0;
+    for (uint32_t i = 0; i < lvl.nwtris; i++) {
+        soak_wtri_t *w = &lvl.wtris[i];
+        if (fabs(w->v[0][1] - 2.4711) < 1e-4 && fabs(w->v[1][1] - 2.4711) < 1e-4 && fabs(w->v[2][1] - 2.4711) < 1e-4 &&
+            fabs(w->v[0][0] + 1.0) < 2.0) {
+            w->mask = 0;
+            hidden++;
+        }
+    }
+    TEST_ASSERT_TRUE(hidden >= 1);
+    TEST_ASSERT_DOUBLE_WITHIN(2e-4, 0.00825, soak_check_footing(&lvl, s, p));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -1058,6 +1098,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);
     RUN_TEST(test_oracle_footing_out_held_by_the_slope_under_the_foot);
     RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
+    RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

@@ -513,6 +513,30 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
         if (hold < 0) hold = 0;
     }
+    /* The points of the floor the foot stands on (its triangles in case 1's planes) closest
+     * to the ball's centre, where the ball overlaps it: a walkable contact whose closest
+     * point is one of them touches the ball exactly where that floor does, at the edge it
+     * shares with it (a box's top edge, the box's side below it walkable under a tilted up:
+     * a convex ridge). It is the floor under the foot, not a side of a gap (soak s10 l402:
+     * the foot on a stair's tread 4 cm inside the staircase's side, up tilted 45 degrees
+     * over that side; the tread's edge, through the side face, made the surround with the
+     * next two steps' corners in the step zone: 8.25 mm). A face across a concave crease
+     * from that floor touches the ball elsewhere than the floor does: it still counts. */
+    enum { MAXF = 16 };
+    double fpt[MAXF][3];
+    int nf = 0;
+    for (uint32_t i = 0; i < lvl->nwtris && non > 0 && nf < MAXF; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s) || dist3(bc, w->c) > w->rad + r) continue;
+        double n[3], allow;
+        if (!tri_walkable(w, s, up, n, &allow) || inside_face(w, up)) continue;
+        bool stood_on = false;
+        for (int k = 0; k < non && !stood_on; k++)
+            stood_on = dot3(n, onn[k]) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ond[k]) < 1e-6;
+        if (!stood_on) continue;
+        closest_pt_tri(fpt[nf], bc, w->v[0], w->v[1], w->v[2]);
+        if (dist3(fpt[nf], bc) < r) nf++;
+    }
     enum { MAXC = 64 };
     double cu[MAXC][3], cex[MAXC];
     int32_t ctri[MAXC];
@@ -530,6 +554,9 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double c[3], d[3];
         closest_pt_tri(c, bc, w->v[0], w->v[1], w->v[2]);
         if (dist3(c, bc) >= r) continue;
+        bool floors = false; /* touches the ball where the floor under the foot does (above) */
+        for (int k = 0; k < nf && !floors; k++) floors = dist3(c, fpt[k]) < 1e-9;
+        if (floors) continue;
         sub3(d, bc, w->v[0]);
         if (dot3(n, d) <= 0) continue; /* ball centre below its plane: not resting on it */
         sub3(d, c, bc);

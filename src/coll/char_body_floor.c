@@ -339,9 +339,33 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
                                       d1 * n1u <= cb_len_tol(c, CB_MARGIN) && steep_face(c, &h1));
     for (int k = 0; k < (over_floor ? 2 : 1) && slide && n1u < b->cos_floor_max_angle; k++) {
+        const coll_sweep_hit_t h0 = h1;
+        const float d0 = d1;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
         if (!(n1u > 0.02f)) return false;
+        /* Over a floor, slid down past a higher piece's edge (not a wall face) onto a
+         * walkable face leaning back towards it, within half a radius of descent and a
+         * diameter across up: the two hold the ball between them, a wedge, as the roll
+         * along the edge's tangent finds it when there is no floor under the foot. The
+         * ball rests on the edge (the higher contact), as there. Rolled on down that face
+         * the ball went out of the wedge's open end, beside the edge's piece, onto the
+         * floor under the foot, and the foot stood on it, 95 mm inside both (soak s10
+         * l392: a block's corner 0.48 m high and a stair's tread 15 degrees off up, half
+         * under the floor, 176 degrees apart around the foot; the frame before, landing
+         * with no floor in reach, the roll held the ball in that wedge). */
+        if (over_floor && k == 0 && n1u >= b->cos_floor_max_angle && !steep_face(c, &h0)) {
+            const fm_vec3_t s0 = v3_reject(h0.normal, up), s1 = v3_reject(h1.normal, up);
+            const float l0 = v3_len(s0), l1 = v3_len(s1);
+            const float c0 = v3_dot(v3_sub(h0.point, foot), up), c1 = v3_dot(v3_sub(h1.point, foot), up);
+            if (l1 > 1e-3f && v3_dot(s0, s1) < -0.05f * l0 * l1 && d1 - d0 <= 0.5f * r &&
+                v3_len(v3_reject(v3_sub(h1.point, h0.point), up)) < 2.0f * r &&
+                -c1 <= floor_gap - cb_len_tol(c, CB_STEP_EPS)) {
+                fm_vec3_t wn = v3_norm(v3_add(h0.normal, h1.normal));
+                if (v3_dot(wn, up) < b->cos_floor_max_angle) wn = up;
+                return held_at(f_min(c0, c1), reach, d0 - c->step, wn, h1.point, &h0, out, far_out);
+            }
+        }
     }
     int past = 0; /* drops past a first contact beside the sweep capsule (below) */
     bool rolled_off = false; /* dropped on past the first contact its roll fell off (below) */

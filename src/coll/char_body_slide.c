@@ -326,6 +326,39 @@ static bool no_backwards(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_
     return true;
 }
 
+/* fall_on runs only when a slide in the air is stopped dead: out of the slide loop */
+#if defined(__GNUC__)
+#define FALL_ON_COLD __attribute__((noinline, cold))
+#else
+#define FALL_ON_COLD
+#endif
+
+/**
+ * Stopped dead in the air (nothing of the motion is left: rem) while falling, the input
+ * across up pushing the body into a corner whose only way on is up a crease blocked above
+ * (a walkable edge or vertex under the ball, a wall, a face over it): the input does not
+ * hold the body up against gravity. The fall alone (the motion's part along up, want's)
+ * slides on, with a sweep of its own; the velocity keeps its part along up, clipped the
+ * same way. Else the body hung at rest 1.1 m over the floor for ever, its velocity clipped
+ * to 0 every step (soak s9 l80: r 0.97, max_slides 2, 11 m/s into a soup's vertex 67
+ * degrees off up, the room wall beside it, a soup face over it). True when it slides on.
+ */
+static FALL_ON_COLD bool fall_on(const cb_ctx_t *c, fm_vec3_t want, fm_vec3_t vel0, const fm_vec3_t *planes, int np,
+                                fm_vec3_t *rem, fm_vec3_t *vel)
+{
+    const float fall = v3_dot(want, c->up);
+    if (v3_len(*rem) > c->tiny || !(fall < 0.0f) || !(v3_len(v3_reject(want, c->up)) > c->tiny)) return false;
+    const fm_vec3_t wf = v3_scale(c->up, fall);
+    const fm_vec3_t r = no_climb(c, wf, clip_planes(wf, planes, np), planes, np);
+    if (!(v3_len(r) > c->tiny)) return false;
+    *rem = r;
+    if (vel) {
+        const fm_vec3_t vf = v3_scale(c->up, v3_dot(vel0, c->up));
+        *vel = no_climb(c, vf, clip_planes(vf, planes, np), planes, np);
+    }
+    return true;
+}
+
 void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
 {
     const fm_vec3_t start = *pos;
@@ -345,6 +378,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     fm_vec3_t untopped = *pos;                /* where that top-up started */
     fm_vec3_t corr = v3(0.0f, 0.0f, 0.0f);    /* top-up and nudges since the last swept or verified move */
     int slides = b->settings.max_slides;
+    bool fell = false; /* stopped dead in the air, the fall alone slid on (below) */
+    bool under_edge = false, over_face = false; /* contacts met in the air (the same) */
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
         if (!(len > c->tiny)) break;
@@ -455,6 +490,14 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         if (!grounded) {
             rem = no_climb(c, want, rem, planes, np);
             if (vel) *vel = no_climb(c, vel0, *vel, planes, np);
+            /* stopped dead, wedged by the input: the fall alone slides on, once (fall_on) */
+            const float hn = v3_dot(hit.normal, c->up);
+            if (hn >= b->cos_floor_max_angle && !coll_cb_face_normal(&hit, &fn)) under_edge = true; /* an edge */
+            if (hn < 0.0f) over_face = true;
+            if (under_edge && over_face && !fell && fall_on(c, want, vel0, planes, np, &rem, vel)) {
+                fell = true;
+                if (it + 1 >= slides) slides++;
+            }
         }
     }
     const fm_vec3_t slid = *pos;
