@@ -876,7 +876,7 @@ bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_
 }
 
 static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3], coll_tri_prep_t *prep,
-                        coll_prim_hit_t *hit)
+                        coll_prim_hit_t *hit, bool *clear)
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_room_ok(prim_room_bits(r) | prim_room3(seg[0]) | prim_room3(seg[1]))) return false;
@@ -911,12 +911,23 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
             float mag = v3_abs_sum(seg[0]) + v3_abs_sum(seg[1]) + v3_abs_sum(t.v[0]) + v3_abs_sum(t.v[1]) + v3_abs_sum(t.v[2]);
             sep -= 1e-5f * v3_abs_sum(u) * mag;
             float rr = rin * 1.0001f + 1e-7f;
-            if (sep > 0.0f && sep * sep > rr * rr * uu) return false;
+            if (sep > 0.0f && sep * sep > rr * rr * uu) {
+                /* clear of rin by the allowance (1e-5 of the coordinates' magnitude), far
+                 * more than the closest pair's rounding: tri_sweep's pair at t_max = 0 is no
+                 * overlap either */
+                if (clear) *clear = true;
+                return false;
+            }
         }
     }
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&t, &seg[0], &seg[1], &ps, &pt);
-    if (!(d2 < rin * rin)) return false;
+    if (!(d2 < rin * rin)) {
+        /* (tri_sweep with t_max = 0 computes this very pair: the same expressions on the
+         * same values, its heights over the face included, and stops on it) */
+        if (clear) *clear = true;
+        return false;
+    }
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
     return true;
 }
@@ -924,13 +935,20 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                    coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, NULL, hit);
+    return tri_overlap(seg, r, tri, NULL, hit, NULL);
 }
 
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                         coll_tri_prep_t *p, coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, p, hit);
+    return tri_overlap(seg, r, tri, p, hit, NULL);
+}
+
+bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear)
+{
+    *clear = false;
+    return tri_overlap(seg, r, tri, p, hit, clear);
 }
 
 /* ---------------------------------------------------------------- ray */
