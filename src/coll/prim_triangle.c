@@ -650,6 +650,26 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
+/* tri_sweep's plane cull at rin, for confirm: the swept capsule, at heights lo..hi over the
+ * face's plane over the whole motion, that stays farther than the touch tolerance from it (a
+ * ball or capsule resting against a wall, moved along it or away: the crack rule's drop
+ * beside a wall the slide stopped at, in a V corner) never goes deeper than the tolerance
+ * into the triangle, which is no hit. The allowance is 1e-6 of the heights' terms (the unit
+ * normal times the ends' offsets from the first vertex, and the motion), far above their
+ * rounding (a few float epsilons of those terms). Before the axes and the closest pair,
+ * which find the same. Out of line: rarely called (its caller tests a necessary condition). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool plane_rin_separated(const sweep_ctx_t *c, float lo, float hi, float r, float t_max, bool moving)
+{
+    float rc = (r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r)) * 1.0001f + 1e-7f; /* tri_sweep's rin */
+    if (!(lo > rc || hi < -rc)) return false;
+    float err = v3_abs_sum(v3_sub(c->a, c->tri.v[0])) + v3_abs_sum(v3_sub(c->b, c->tri.v[0])) +
+                (moving ? v3_abs_sum(c->d) * t_max : 0.0f);
+    return f_max(lo, -hi) - 1e-6f * err > rc;
+}
+
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
@@ -686,6 +706,11 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
         float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
+        /* With confirm, the same cull at rin (plane_rin_separated; first its necessary
+         * condition, rin being at least r less COLL_PRIM_TOUCH_TOL) */
+        if (confirm && (lo > r - COLL_PRIM_TOUCH_TOL || hi < COLL_PRIM_TOUCH_TOL - r) &&
+            plane_rin_separated(&c, lo, hi, r, t_max, moving))
+            return false;
         /* Far: the start beyond the offset plane, with room for the closest pair's rounding
          * (its distance is at least the height). Then there is neither an overlap nor a
          * contact at t = 0, and the start's closest pair would serve only the cull on its
