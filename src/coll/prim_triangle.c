@@ -918,6 +918,20 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
      * stairs_real -2.0 %, stairs -0.3 %, V-corner +1.1 % (walls the capsule touches). */
     if (t.has_face) {
         float hab[2] = { v3_dot(t.n, v3_sub(seg[0], t.v[0])), v3_dot(t.n, v3_sub(seg[1], t.v[0])) };
+        /* The face's plane at rin (tri_sweep's plane_rin_separated, without motion): a
+         * segment farther than rin from the plane, on one side of it (a capsule resting
+         * against a wall within the touch tolerance: the recovery's look in a V corner), is
+         * farther from the triangle: no overlap, without the closest pair. The allowance is
+         * 1e-6 of the heights' terms, far above their rounding. */
+        {
+            float lo = f_min(hab[0], hab[1]), hi = f_max(hab[0], hab[1]);
+            float rc = rin * 1.0001f + 1e-7f;
+            if ((lo > rc || hi < -rc) &&
+                f_max(lo, -hi) - 1e-6f * (v3_abs_sum(v3_sub(seg[0], t.v[0])) + v3_abs_sum(v3_sub(seg[1], t.v[0]))) > rc) {
+                if (clear) *clear = true;
+                return false;
+            }
+        }
         fm_vec3_t p = fabsf(hab[0]) <= fabsf(hab[1]) ? seg[0] : seg[1];
         float bestl = 3.0e38f;
         fm_vec3_t u = v3(0.0f, 0.0f, 0.0f);
