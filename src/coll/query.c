@@ -540,17 +540,23 @@ static void contact_add(contacts_t *c, const coll_prim_hit_t *ph, const coll_mes
 /* The capsule segment (relative to the triangle's first vertex, shape[0] = 0) lies
  * entirely on one side of the triangle's plane, farther than r (with a relative and a
  * rounding allowance): no overlap is possible, without any closest-point work. */
-static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[3])
+/* 1: rejected; 2: not farther than r but farther than rin (r less the touch tolerance) with
+ * the same allowance: no overlap either, the exact test's closest pair would find it clear
+ * (coll_capsule_triangle_overlap_clear's *clear: a capsule resting against a wall); 0: neither. */
+static int plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[3])
 {
     fm_vec3_t n;
     fm_vec3_cross(&n, &shape[1], &shape[2]);
     float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]);
-    if (!(d0 * d1 > 0.0f)) return false;
+    if (!(d0 * d1 > 0.0f)) return 0;
     float mn = f_min(d0 * d0, d1 * d1);
     float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
                fabsf(seg[1].z);
+    float nn = fm_vec3_len2(&n);
     float rr = r * 1.001f + 1e-6f * l1 + 1e-7f;
-    return mn > rr * rr * fm_vec3_len2(&n);
+    if (mn > rr * rr * nn) return 1;
+    float rc = (r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r)) * 1.0001f + 1e-6f * l1 + 1e-7f;
+    return mn > rc * rc * nn ? 2 : 0;
 }
 
 /* One candidate triangle t of inst (w0, shape, u as for sweep_tri) against the overlap query;
@@ -562,7 +568,8 @@ static bool overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, 
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
-    if (plane_rejects(q->r, seg, shape)) return false;
+    int pr = plane_rejects(q->r, seg, shape);
+    if (pr) return pr == 2 && gt; /* (2: clear of rin: no overlap, remembered as clear) */
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     bool clear = false;
