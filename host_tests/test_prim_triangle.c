@@ -925,6 +925,118 @@ static void test_held_end_cull_matches_plain(void)
     TEST_ASSERT_TRUE(n_hits > 500);
 }
 
+/* The plane cull at rin (tri_sweep's plane_rin_separated, perf16): a ball or capsule that
+ * rests against a wall within the touch tolerance and moves along it or away never goes
+ * deeper than the tolerance, which is no hit; it is dropped before the closest pair. The
+ * sweep still reports a hit exactly when the motion takes the capsule deeper than rin
+ * (r less the touch tolerance) into the triangle, by the double-precision reference (a band
+ * of 1e-6 r about rin left out): walls of two triangles, spheres and capsules whose
+ * least height over the wall's plane over the motion is r - 2 tol .. r + tol, moved along
+ * the wall, a little away and a little into it, near the first vertex and 100 m and 300 m
+ * away. It fails with the cull's threshold loosened to 0.999 rin. */
+static void test_plane_rin_cull_agrees_with_reference(void)
+{
+    const float offs[] = { 0.0f, 100.0f, 300.0f };
+    /* a wall in the plane z = 0 (normal +z), x and y in -1 .. 1 */
+    const fm_vec3_t wall[2][3] = { { V(-1, -1, 0), V(1, -1, 0), V(1, 1, 0) }, { V(-1, -1, 0), V(1, 1, 0), V(-1, 1, 0) } };
+    int n_cases = 0, n_hits = 0, n_culled = 0;
+    for (int o = 0; o < 3; o++)
+    for (int i = 0; i < 2000; i++) {
+        float off = offs[o];
+        float r = (float)rnd_range(0.05, 0.6);
+        float hh = rnd() < 0.4 ? 0.0f : (float)rnd_range(0.1, 0.5);
+        double tol = fmin(1e-4, r / 4.0), rin = r - tol;
+        /* the least height over the plane over the motion, and the motion's part along the normal */
+        double hmin = r + tol * rnd_range(-2.0, 1.0);
+        int kind = i % 3; /* along, away, into */
+        double dz = kind == 0 ? 0.0 : (kind == 1 ? rnd_range(0.0, 0.05) : -rnd_range(0.0, 3.0 * tol));
+        double h0 = dz < 0.0 ? hmin - dz : hmin;
+        prim_ref_v3 c = { rnd_range(-0.4, 0.4), rnd_range(-0.3, 0.3), h0 };
+        prim_ref_v3 along = { rnd_range(-1, 1), rnd_range(-1, 1), 0 };
+        along = prim_ref_scale(along, rnd_range(0.02, 0.4) / fmax(prim_ref_len(along), 1e-9));
+        fm_vec3_t d = V((float)along.x, (float)along.y, (float)dz);
+        bool hit = false;
+        double ref_min = 1e30;
+        for (int t = 0; t < 2; t++) {
+            fm_vec3_t seg[2], rt[3];
+            for (int k = 0; k < 2; k++)
+                seg[k] = V((float)c.x + off - (wall[t][0].x + off), (float)c.y + (k ? hh : -hh) - wall[t][0].y,
+                           (float)c.z - wall[t][0].z);
+            rel_tri(wall[t], off, rt);
+            coll_prim_hit_t h;
+            hit |= coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, false, &h);
+            prim_ref_captri_t ctx;
+            ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = R(d);
+            for (int k = 0; k < 3; k++) ctx.tri[k] = R(rt[k]);
+            prim_ref_sweep_t ref;
+            prim_ref_sweep(prim_ref_captri_fn, &ctx, r, 1.0, &ref);
+            if (ref.fmin < ref_min) ref_min = ref.fmin;
+        }
+        if (fabs(ref_min - rin) < 1e-6 * r) continue; /* at rin: either answer */
+        n_cases++;
+        if (hit != (ref_min < rin)) {
+            printf("plane rin cull: r %.9g hh %.9g off %g hmin %.9g (rin %.9g) dz %.9g: hit %d, reference least "
+                   "distance %.9g\n", (double)r, (double)hh, (double)off, hmin, rin, dz, hit, ref_min);
+        }
+        TEST_ASSERT_EQUAL(ref_min < rin, hit);
+        n_hits += hit;
+        n_culled += !hit && hmin > rin * 1.0001 + 1e-6;
+    }
+    printf("plane cull at rin: %d cases, %d hits, %d clear of rin by the plane\n", n_cases, n_hits, n_culled);
+    TEST_ASSERT_TRUE(n_hits > 500 && n_culled > 500);
+}
+
+/* The overlap's plane cull at rin (tri_overlap, perf16): a capsule whose segment lies
+ * farther than rin from a wall's plane, on one side, is no overlap without its closest
+ * pair. The overlap is reported exactly when the reference distance is under rin (r less
+ * the touch tolerance; a band of 1e-6 r about rin left out): spheres and capsules, upright
+ * or tilted, at heights r - 2 tol .. r + tol over a wall of two triangles, near the first
+ * vertex and 100 m and 300 m away. It fails with the cull's threshold loosened to 0.999 rin. */
+static void test_overlap_plane_rin_cull_agrees_with_reference(void)
+{
+    const float offs[] = { 0.0f, 100.0f, 300.0f };
+    const fm_vec3_t wall[2][3] = { { V(-1, -1, 0), V(1, -1, 0), V(1, 1, 0) }, { V(-1, -1, 0), V(1, 1, 0), V(-1, 1, 0) } };
+    int n_cases = 0, n_over = 0, n_clear = 0;
+    for (int o = 0; o < 3; o++)
+    for (int i = 0; i < 2000; i++) {
+        float off = offs[o];
+        float r = (float)rnd_range(0.05, 0.6);
+        double tol = fmin(1e-4, r / 4.0), rin = r - tol;
+        double hh = rnd() < 0.3 ? 0.0 : rnd_range(0.05, 0.5);
+        /* the segment's lower end at height hmin, the other up to 2 tol higher (tilted) */
+        double hmin = r + tol * rnd_range(-2.0, 1.0), tilt = rnd() < 0.5 ? 0.0 : rnd_range(0.0, 2.0 * tol);
+        prim_ref_v3 c = { rnd_range(-0.4, 0.4), rnd_range(-0.3, 0.3), hmin + 0.5 * tilt };
+        prim_ref_v3 ax = { rnd_range(-1, 1), rnd_range(-1, 1), 0 };
+        ax = prim_ref_scale(ax, hh / fmax(prim_ref_len(ax), 1e-9));
+        ax.z = hh > 0.0 ? 0.5 * tilt : 0.0;
+        bool over = false;
+        double ref_min = 1e30;
+        for (int t = 0; t < 2; t++) {
+            fm_vec3_t seg[2], rt[3];
+            for (int k = 0; k < 2; k++) {
+                prim_ref_v3 e = k ? prim_ref_add(c, ax) : prim_ref_sub(c, ax);
+                seg[k] = V((float)e.x + off - (wall[t][0].x + off), (float)e.y - wall[t][0].y, (float)e.z - wall[t][0].z);
+            }
+            rel_tri(wall[t], off, rt);
+            coll_prim_hit_t h;
+            over |= coll_capsule_triangle_overlap(seg, r, rt, &h);
+            prim_ref_v3 rtr[3] = { R(rt[0]), R(rt[1]), R(rt[2]) }, ps, pt;
+            double dist = prim_ref_seg_tri(R(seg[0]), R(seg[1]), rtr, &ps, &pt);
+            if (dist < ref_min) ref_min = dist;
+        }
+        if (fabs(ref_min - rin) < 1e-6 * r) continue; /* at rin: either answer */
+        n_cases++;
+        if (over != (ref_min < rin))
+            printf("overlap plane rin cull: r %.9g off %g hmin %.9g (rin %.9g): overlap %d, reference distance %.9g\n",
+                   (double)r, (double)off, hmin, rin, over, ref_min);
+        TEST_ASSERT_EQUAL(ref_min < rin, over);
+        n_over += over;
+        n_clear += !over && hmin > rin * 1.0001 + 1e-6;
+    }
+    printf("overlap plane cull at rin: %d cases, %d overlaps, %d clear of rin by the plane\n", n_cases, n_over, n_clear);
+    TEST_ASSERT_TRUE(n_over > 500 && n_clear > 500);
+}
+
 /* The end cull in large coordinates (tri_sweep's sweep_separated_at: the end's closest pair
  * measured from its point on the triangle, the axis made perpendicular to the edge that point
  * lies on, its allowance the rounding of those local terms): the held sweep still answers what
@@ -1298,6 +1410,8 @@ int main(void)
     RUN_TEST(test_far_start_edge_axis_cull_cases);
     RUN_TEST(test_overlap_boundary_axis_cull);
     RUN_TEST(test_held_end_cull_matches_plain);
+    RUN_TEST(test_plane_rin_cull_agrees_with_reference);
+    RUN_TEST(test_overlap_plane_rin_cull_agrees_with_reference);
     RUN_TEST(test_held_end_cull_local_matches_plain);
     RUN_TEST(test_start_pair_local_cull_rolls);
     return UNITY_END();

@@ -1515,6 +1515,115 @@ static void test_gathered_sweep_above_a_floor_plane(void)
     TEST_ASSERT_TRUE(above_calls * 2 < plain_calls);
 }
 
+/* The recovery's overlap query remembers the gathered triangles it found clear of the
+ * capsule (coll_gather_capsule_overlaps_m: closest pair no overlap, or a separating axis);
+ * the slide's first sweep from the same place, once it holds a hit at t = 0, skips them
+ * (coll_gather_capsule_sweep_m): their test over t_max = 0 would compute the same pair and
+ * find nothing (perf16; the V-corner course, a capsule wedged into two walls, tested 4 wall
+ * triangles twice a step). The same answer bit for bit as the plain gathered sweep and the
+ * scene's, for capsules touching two walls of a V (each within 2e-4 r inside to 4e-3 r
+ * outside of touching), swept into, along and away from them; fewer triangle sweeps. */
+static void test_gathered_sweep_memo_matches_plain(void)
+{
+    /* two walls 3 m high meeting at x = z = 0 at 60 degrees (the bench's V-corner), a floor */
+    const float ca = 0.8660254f, sa = 0.5f, L = 2.5f, H = 3.0f;
+    const fm_vec3_t da = {{ -sa, 0.0f, -ca }}, db = {{ sa, 0.0f, -ca }}; /* along each wall, away from the corner */
+    uint32_t nv = 0, nt = 0;
+    const fm_vec3_t dirs[2] = { da, db };
+    for (int w = 0; w < 2; w++) {
+        float ex = dirs[w].x * L, ez = dirs[w].z * L;
+        float v[4][3] = { { 0, 0, 0 }, { ex, 0, ez }, { ex, H, ez }, { 0, H, 0 } };
+        for (int k = 0; k < 4; k++)
+            for (int j = 0; j < 3; j++) g_verts[3 * (nv + (uint32_t)k) + (uint32_t)j] = v[k][j];
+        uint32_t q[6] = { nv, nv + 1, nv + 2, nv, nv + 2, nv + 3 };
+        if (w == 1) { q[1] = nv + 2; q[2] = nv + 1; q[4] = nv + 3; q[5] = nv + 2; }
+        for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = q[k];
+        nv += 4;
+        nt += 2;
+    }
+    float fv[4][3] = { { -3, 0, 1 }, { 3, 0, 1 }, { 3, 0, -3 }, { -3, 0, -3 } };
+    for (int k = 0; k < 4; k++)
+        for (int j = 0; j < 3; j++) g_verts[3 * (nv + (uint32_t)k) + (uint32_t)j] = fv[k][j];
+    uint32_t fq[6] = { nv, nv + 2, nv + 1, nv, nv + 3, nv + 2 };
+    for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = fq[k];
+    nv += 4;
+    nt += 2;
+    const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+    coll_scene_t s;
+    coll_query_stats_t st;
+    coll_mesh_instance_t inst;
+    scene_of_one_mesh(&s, &st, &inst, m);
+    /* the walls' inward normals (across up) */
+    const fm_vec3_t na = {{ ca, 0.0f, -sa }}, nb = {{ -ca, 0.0f, -sa }};
+    core_rng_t rng;
+    core_rng_seed(&rng, 1616);
+    static coll_gather_t g;
+    const float r = 0.5f, ihh = 0.375f;
+    int cases = 0, held0 = 0, calls_plain = 0, calls_memo = 0;
+    for (int i = 0; i < 3000; i++) {
+        /* distances to the two walls' planes */
+        float dA = r * (float)core_rng_range(&rng, 0.9996, 1.001), dB = r * (float)core_rng_range(&rng, 0.9996, 1.001);
+        if (core_rng_range(&rng, 0, 1) < 0.3) dB = r * (float)core_rng_range(&rng, 1.0, 1.3);
+        /* the point at those distances: na.p = dA, nb.p = dB (p across up) */
+        float det = na.x * nb.z - na.z * nb.x;
+        float px = (dA * nb.z - dB * na.z) / det, pz = (na.x * dB - nb.x * dA) / det;
+        fm_vec3_t c = {{ px, (float)core_rng_range(&rng, 0.9, 1.3), pz }};
+        /* into the corner, along a wall, away, or anywhere, 0.02-0.3 m */
+        int kind = i % 4;
+        fm_vec3_t d;
+        if (kind == 0) d = (fm_vec3_t){{ (float)core_rng_range(&rng, -0.2, 0.2), 0.0f, 1.0f }};
+        else if (kind == 1) d = (i & 4) ? da : db;
+        else if (kind == 2) d = (fm_vec3_t){{ (float)core_rng_range(&rng, -1, 1), 0.0f, -1.0f }};
+        else d = (fm_vec3_t){{ (float)core_rng_range(&rng, -1, 1), (float)core_rng_range(&rng, -0.3, 0.3),
+                               (float)core_rng_range(&rng, -1, 1) }};
+        fm_vec3_scale(&d, &d, (float)core_rng_range(&rng, 0.02, 0.3) / fm_vec3_len(&d));
+        fm_vec3_t lo = {{ c.x - 1.5f, c.y - 1.5f, c.z - 1.5f }}, hi = {{ c.x + 1.5f, c.y + 1.5f, c.z + 1.5f }};
+        coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        TEST_ASSERT_TRUE(g.valid);
+        coll_contact_t ct[8];
+        coll_gather_memo_t memo;
+        memo.g = NULL;
+        (void)coll_gather_capsule_overlaps_m(&g, c, UP, r, ihh, ct, 8, &memo);
+        /* every third sweep from a place a little deeper into the walls than the overlap
+         * query looked: the memo is not this capsule's */
+        if (i % 3 == 2) {
+            c.x -= 2e-4f * (na.x + nb.x);
+            c.z -= 2e-4f * (na.z + nb.z);
+        }
+        coll_sweep_hit_t h0, h1, h2;
+        bool f0 = coll_capsule_sweep(&s, c, UP, r, ihh, d, 0xFF, COLL_TYPE_MESH, &h0);
+        bool f1 = coll_gather_capsule_sweep(&g, c, UP, r, ihh, d, &h1);
+        bool f2;
+        ASSERT_NO_ALLOC(f2 = coll_gather_capsule_sweep_m(&g, c, UP, r, ihh, d, NULL, &memo, &h2));
+        TEST_ASSERT_EQUAL(f1, f2);
+        TEST_ASSERT_EQUAL(f0, f2);
+        cases++;
+        if (f1) {
+            TEST_ASSERT_EQUAL_MEMORY(&h1.t, &h2.t, sizeof h1.t);
+            TEST_ASSERT_EQUAL_MEMORY(&h1.depth, &h2.depth, sizeof h1.depth);
+            TEST_ASSERT_EQUAL_MEMORY(&h1.normal, &h2.normal, sizeof h1.normal);
+            TEST_ASSERT_EQUAL_MEMORY(&h1.point, &h2.point, sizeof h1.point);
+            TEST_ASSERT_EQUAL_INT32(h1.triangle, h2.triangle);
+            TEST_ASSERT_EQUAL_INT32(h0.triangle, h2.triangle);
+            TEST_ASSERT_EQUAL_FLOAT(h0.t, h2.t);
+            if (h1.t == 0.0f) held0++;
+        }
+        /* the triangle sweeps made, plain and with the memo */
+        coll_set_tri_sweep_method(counting_method, NULL);
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep(&g, c, UP, r, ihh, d, &h1);
+        calls_plain += g_method_calls;
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep_m(&g, c, UP, r, ihh, d, NULL, &memo, &h2);
+        calls_memo += g_method_calls;
+        coll_set_tri_sweep_method(NULL, NULL);
+    }
+    printf("capsules in a V corner: %d sweeps (%d held at t = 0), triangle sweeps %d -> %d with the overlap's memo\n",
+           cases, held0, calls_plain, calls_memo);
+    TEST_ASSERT_TRUE(held0 > 100 && held0 < cases - 100);
+    TEST_ASSERT_TRUE(calls_memo + 100 < calls_plain);
+}
+
 /* Capsule sweeps whose swept volume passes within 0.3 % of r of a tilted floor's plane, on
  * either side of touching: the scene's sweep (its plane cull before the exact test
  * included) finds a hit exactly when the exact triangle test does on some triangle. */
@@ -1883,6 +1992,7 @@ int main(void)
     RUN_TEST(test_sweeps_grazing_a_plane_agree_with_the_exact_test);
     RUN_TEST(test_gathered_sweep_above_a_floor_plane);
     RUN_TEST(test_gather_codes_change_nothing);
+    RUN_TEST(test_gathered_sweep_memo_matches_plain);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);
     return UNITY_END();

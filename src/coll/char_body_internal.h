@@ -86,9 +86,13 @@ typedef struct {
 } cb_down_t;
 
 /** The step's memory of its queries (cb_ctx_t.mem, always present): the stair step's down
- *  sweep and its foot ray (the probe's, when the body stays there). */
+ *  sweep and its foot ray (the probe's, when the body stays there); what the last overlap
+ *  query on the step's gather learnt, for a sweep from the same place (coll_gather_memo_t:
+ *  the recovery's overlap and the slide's first sweep). */
 typedef struct {
     cb_down_t down;
+    coll_gather_memo_t pairs;
+    bool remember; ///< the recovery's first look fills `pairs` (the last step met a wall)
     bool ray_valid;
     bool ray_found;
     fm_vec3_t ray_origin;
@@ -138,6 +142,16 @@ static inline bool cb_sweep(const cb_ctx_t *c, fm_vec3_t center, float radius, f
     return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
                               c->body->settings.coll_types, hit);
 }
+/* cb_sweep for the slide's sweeps of the sweep capsule: one from where the recovery's
+ * overlap query just looked skips what that query found clear (coll_gather_memo_t); the
+ * same answer. */
+static inline bool cb_sweep_slide(const cb_ctx_t *c, fm_vec3_t center, fm_vec3_t disp, coll_sweep_hit_t *hit)
+{
+    if (c->gather && coll_gather_memo_for(&c->mem->pairs, c->gather, center, c->up, c->radius, c->sweep_ihh))
+        return coll_gather_capsule_sweep_m(c->gather, center, c->up, c->radius, c->sweep_ihh, disp, NULL,
+                                           &c->mem->pairs, hit);
+    return cb_sweep(c, center, c->radius, c->sweep_ihh, disp, hit);
+}
 /* cb_sweep for a sweep the caller knows stays above a plane (coll_gather_above_t): on the
  * gather, the triangles lying under it are not tested; the answer is cb_sweep's. */
 static inline bool cb_sweep_above(const cb_ctx_t *c, fm_vec3_t center, float radius, float ihh, fm_vec3_t disp,
@@ -146,6 +160,16 @@ static inline bool cb_sweep_above(const cb_ctx_t *c, fm_vec3_t center, float rad
     if (c->gather) return coll_gather_capsule_sweep_above(c->gather, center, c->up, radius, ihh, disp, above, hit);
     return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
                               c->body->settings.coll_types, hit);
+}
+/* cb_overlaps for the recovery's first look: what it finds clear is remembered for the
+ * slide's first sweep from there (cb_sweep_slide). */
+static inline uint32_t cb_overlaps_remember(const cb_ctx_t *c, fm_vec3_t center, coll_contact_t *out, uint32_t max_out)
+{
+    if (c->gather)
+        return coll_gather_capsule_overlaps_m(c->gather, center, c->up, c->radius, c->sweep_ihh, out, max_out,
+                                              &c->mem->pairs);
+    return coll_capsule_overlaps(c->scene, center, c->up, c->radius, c->sweep_ihh, c->body->settings.read_mask,
+                                 c->body->settings.coll_types, out, max_out);
 }
 static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_contact_t *out, uint32_t max_out)
 {

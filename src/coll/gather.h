@@ -101,4 +101,55 @@ bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3
 uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                       float inner_half_height, coll_contact_t *out, uint32_t max_out);
 
+/** Gathered triangles a memo keeps (COLL_GATHER_MEMO_MAX: more are not kept, only tested). */
+#define COLL_GATHER_MEMO_MAX 16
+
+/**
+ * What the last overlap query on a gather learnt (coll_gather_capsule_overlaps_m): the
+ * capsule (centre, axis, radius, inner half height: the same values bit for bit) and the
+ * gathered triangles whose closest pair to it the exact test computed and found no overlap
+ * (clear of the touch tolerance). A sweep of that capsule from that very place that holds
+ * a hit at t = 0 (the slide's first sweep after the recovery's overlap, into a wall it
+ * touches: its later candidates are tested over t_max = 0) would test each such triangle
+ * only to compute the same pair and find nothing (no motion, no overlap): it skips them.
+ * g NULL: nothing known. The caller keeps it (the step's memory) and passes it to both. An
+ * overlap query that found no such triangle leaves the record as it was: what it says about
+ * its own capsule stays true (the same values, the same pairs).
+ */
+typedef struct {
+    const coll_gather_t *g;
+    fm_vec3_t center, axis;
+    float radius, ihh;
+    uint8_t n;
+    uint8_t clear[COLL_GATHER_MEMO_MAX]; ///< indices into g->tris
+} coll_gather_memo_t;
+
+/* The bits of a and b are the same (not ==: -0 and 0 differ, and may round apart later). */
+static inline bool coll_same_bits(float a, float b)
+{
+    union { float f; uint32_t u; } x = { a }, y = { b }; /* (the console build has no memcpy inline) */
+    return x.u == y.u;
+}
+
+/** The memo is of gather g and of this very capsule (the same values bit for bit): its clear
+ *  triangles' closest pairs are the ones a sweep of it from there would compute. */
+static inline bool coll_gather_memo_for(const coll_gather_memo_t *memo, const coll_gather_t *g, fm_vec3_t center,
+                                        fm_vec3_t axis, float radius, float ihh)
+{
+    return memo->g == g && memo->n > 0 && coll_same_bits(memo->center.x, center.x) &&
+           coll_same_bits(memo->center.y, center.y) && coll_same_bits(memo->center.z, center.z) &&
+           coll_same_bits(memo->radius, radius) && coll_same_bits(memo->ihh, ihh) &&
+           coll_same_bits(memo->axis.x, axis.x) && coll_same_bits(memo->axis.y, axis.y) &&
+           coll_same_bits(memo->axis.z, axis.z);
+}
+
+/** coll_gather_capsule_sweep(_above) (above may be NULL) using memo (may be NULL). */
+bool coll_gather_capsule_sweep_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                                 float inner_half_height, fm_vec3_t displacement, const coll_gather_above_t *above,
+                                 const coll_gather_memo_t *memo, coll_sweep_hit_t *hit);
+/** coll_gather_capsule_overlaps, filling memo (may be NULL) with what it learnt. */
+uint32_t coll_gather_capsule_overlaps_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                                        float inner_half_height, coll_contact_t *out, uint32_t max_out,
+                                        coll_gather_memo_t *memo);
+
 #endif

@@ -650,6 +650,26 @@ static bool sweep_features(const sweep_ctx_t *c, float r, float t_max, bool any,
     return best->hit;
 }
 
+/* tri_sweep's plane cull at rin, for confirm: the swept capsule, at heights lo..hi over the
+ * face's plane over the whole motion, that stays farther than the touch tolerance from it (a
+ * ball or capsule resting against a wall, moved along it or away: the crack rule's drop
+ * beside a wall the slide stopped at, in a V corner) never goes deeper than the tolerance
+ * into the triangle, which is no hit. The allowance is 1e-6 of the heights' terms (the unit
+ * normal times the ends' offsets from the first vertex, and the motion), far above their
+ * rounding (a few float epsilons of those terms). Before the axes and the closest pair,
+ * which find the same. Out of line: rarely called (its caller tests a necessary condition). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static bool plane_rin_separated(const sweep_ctx_t *c, float lo, float hi, float r, float t_max, bool moving)
+{
+    float rc = (r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r)) * 1.0001f + 1e-7f; /* tri_sweep's rin */
+    if (!(lo > rc || hi < -rc)) return false;
+    float err = v3_abs_sum(v3_sub(c->a, c->tri.v[0])) + v3_abs_sum(v3_sub(c->b, c->tri.v[0])) +
+                (moving ? v3_abs_sum(c->d) * t_max : 0.0f);
+    return f_max(lo, -hi) - 1e-6f * err > rc;
+}
+
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
  * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
  * one at t_max already; its refinement and confirmation would be wasted). */
@@ -686,6 +706,11 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         float lo = f_min(f_min(ha, hb), f_min(ha + dd, hb + dd));
         float hi = f_max(f_max(ha, hb), f_max(ha + dd, hb + dd));
         if (lo > r || hi < -r) return false;
+        /* With confirm, the same cull at rin (plane_rin_separated; first its necessary
+         * condition, rin being at least r less COLL_PRIM_TOUCH_TOL) */
+        if (confirm && (lo > r - COLL_PRIM_TOUCH_TOL || hi < COLL_PRIM_TOUCH_TOL - r) &&
+            plane_rin_separated(&c, lo, hi, r, t_max, moving))
+            return false;
         /* Far: the start beyond the offset plane, with room for the closest pair's rounding
          * (its distance is at least the height). Then there is neither an overlap nor a
          * contact at t = 0, and the start's closest pair would serve only the cull on its
@@ -876,7 +901,7 @@ bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_
 }
 
 static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3], coll_tri_prep_t *prep,
-                        coll_prim_hit_t *hit)
+                        coll_prim_hit_t *hit, bool *clear)
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_room_ok(prim_room_bits(r) | prim_room3(seg[0]) | prim_room3(seg[1]))) return false;
@@ -893,6 +918,20 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
      * stairs_real -2.0 %, stairs -0.3 %, V-corner +1.1 % (walls the capsule touches). */
     if (t.has_face) {
         float hab[2] = { v3_dot(t.n, v3_sub(seg[0], t.v[0])), v3_dot(t.n, v3_sub(seg[1], t.v[0])) };
+        /* The face's plane at rin (tri_sweep's plane_rin_separated, without motion): a
+         * segment farther than rin from the plane, on one side of it (a capsule resting
+         * against a wall within the touch tolerance: the recovery's look in a V corner), is
+         * farther from the triangle: no overlap, without the closest pair. The allowance is
+         * 1e-6 of the heights' terms, far above their rounding. */
+        {
+            float lo = f_min(hab[0], hab[1]), hi = f_max(hab[0], hab[1]);
+            float rc = rin * 1.0001f + 1e-7f;
+            if ((lo > rc || hi < -rc) &&
+                f_max(lo, -hi) - 1e-6f * (v3_abs_sum(v3_sub(seg[0], t.v[0])) + v3_abs_sum(v3_sub(seg[1], t.v[0]))) > rc) {
+                if (clear) *clear = true;
+                return false;
+            }
+        }
         fm_vec3_t p = fabsf(hab[0]) <= fabsf(hab[1]) ? seg[0] : seg[1];
         float bestl = 3.0e38f;
         fm_vec3_t u = v3(0.0f, 0.0f, 0.0f);
@@ -911,12 +950,23 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
             float mag = v3_abs_sum(seg[0]) + v3_abs_sum(seg[1]) + v3_abs_sum(t.v[0]) + v3_abs_sum(t.v[1]) + v3_abs_sum(t.v[2]);
             sep -= 1e-5f * v3_abs_sum(u) * mag;
             float rr = rin * 1.0001f + 1e-7f;
-            if (sep > 0.0f && sep * sep > rr * rr * uu) return false;
+            if (sep > 0.0f && sep * sep > rr * rr * uu) {
+                /* clear of rin by the allowance (1e-5 of the coordinates' magnitude), far
+                 * more than the closest pair's rounding: tri_sweep's pair at t_max = 0 is no
+                 * overlap either */
+                if (clear) *clear = true;
+                return false;
+            }
         }
     }
     fm_vec3_t ps, pt;
     float d2 = seg_tri_closest(&t, &seg[0], &seg[1], &ps, &pt);
-    if (!(d2 < rin * rin)) return false;
+    if (!(d2 < rin * rin)) {
+        /* (tri_sweep with t_max = 0 computes this very pair: the same expressions on the
+         * same values, its heights over the face included, and stops on it) */
+        if (clear) *clear = true;
+        return false;
+    }
     overlap_result(&t, seg[0], seg[1], r, d2, ps, pt, hit);
     return true;
 }
@@ -924,13 +974,20 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                    coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, NULL, hit);
+    return tri_overlap(seg, r, tri, NULL, hit, NULL);
 }
 
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                         coll_tri_prep_t *p, coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, p, hit);
+    return tri_overlap(seg, r, tri, p, hit, NULL);
+}
+
+bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
+                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear)
+{
+    *clear = false;
+    return tri_overlap(seg, r, tri, p, hit, clear);
 }
 
 /* ---------------------------------------------------------------- ray */

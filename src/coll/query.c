@@ -540,35 +540,46 @@ static void contact_add(contacts_t *c, const coll_prim_hit_t *ph, const coll_mes
 /* The capsule segment (relative to the triangle's first vertex, shape[0] = 0) lies
  * entirely on one side of the triangle's plane, farther than r (with a relative and a
  * rounding allowance): no overlap is possible, without any closest-point work. */
-static bool plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[3])
+/* 1: rejected; 2: not farther than r but farther than rin (r less the touch tolerance) with
+ * the same allowance: no overlap either, the exact test's closest pair would find it clear
+ * (coll_capsule_triangle_overlap_clear's *clear: a capsule resting against a wall); 0: neither. */
+static int plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[3])
 {
     fm_vec3_t n;
     fm_vec3_cross(&n, &shape[1], &shape[2]);
     float d0 = fm_vec3_dot(&n, &seg[0]), d1 = fm_vec3_dot(&n, &seg[1]);
-    if (!(d0 * d1 > 0.0f)) return false;
+    if (!(d0 * d1 > 0.0f)) return 0;
     float mn = f_min(d0 * d0, d1 * d1);
     float l1 = fabsf(seg[0].x) + fabsf(seg[0].y) + fabsf(seg[0].z) + fabsf(seg[1].x) + fabsf(seg[1].y) +
                fabsf(seg[1].z);
+    float nn = fm_vec3_len2(&n);
     float rr = r * 1.001f + 1e-6f * l1 + 1e-7f;
-    return mn > rr * rr * fm_vec3_len2(&n);
+    if (mn > rr * rr * nn) return 1;
+    float rc = (r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r)) * 1.0001f + 1e-6f * l1 + 1e-7f;
+    return mn > rc * rc * nn ? 2 : 0;
 }
 
-/* One candidate triangle t of inst (w0, shape, u as for sweep_tri) against the overlap query. */
-static void overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
+/* One candidate triangle t of inst (w0, shape, u as for sweep_tri) against the overlap query;
+ * true when the exact test computed its closest pair and found no overlap
+ * (coll_capsule_triangle_overlap_clear; gathered triangles only). */
+static bool overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
                         const fm_vec3_t shape[3], const fm_vec3_t *u, coll_gather_tri_t *gt, contacts_t *c)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
-    if (plane_rejects(q->r, seg, shape)) return;
-    if (!one_way_capsule(u, shape, seg, q->r)) return;
+    int pr = plane_rejects(q->r, seg, shape);
+    if (pr) return pr == 2 && gt; /* (2: clear of rin: no overlap, remembered as clear) */
+    if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
-    bool got = gt ? coll_capsule_triangle_overlap_prep(seg, q->r, shape, &gt->prep, &ph)
+    bool clear = false;
+    bool got = gt ? coll_capsule_triangle_overlap_clear(seg, q->r, shape, &gt->prep, &ph, &clear)
                   : coll_capsule_triangle_overlap(seg, q->r, shape, &ph);
     if (got && ph.depth > 0.0f) {
         fm_vec3_add(&ph.point, &ph.point, w0);
         contact_add(c, &ph, inst, NULL, t);
     }
+    return clear;
 }
 
 static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const capsule_q_t *q,
@@ -703,18 +714,39 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
     return ray_result(&rb, &origin, hit);
 }
 
+/* The memo is of this gather and of this very capsule (coll_gather_memo_for); NULL when not. */
+CAND_INLINE const coll_gather_memo_t *memo_for(const coll_gather_memo_t *memo, const coll_gather_t *g,
+                                               const fm_vec3_t *center, const fm_vec3_t *axis, float radius,
+                                               float ihh)
+{
+    return memo && coll_gather_memo_for(memo, g, *center, *axis, radius, ihh) ? memo : NULL;
+}
+
+CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
+{
+    for (uint8_t i = 0; i < memo->n; i++)
+        if (memo->clear[i] == k) return true;
+    return false;
+}
+
 /* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;
- * lo..hi: its box swept to sb's limit) into sb. */
+ * lo..hi: its box swept to sb's limit) into sb. memo: memo_for's (NULL: none). */
 CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
                                    fm_vec3_t lo, fm_vec3_t hi, const coll_gather_above_t *above,
-                                   const fm_vec3_t *center, best_hit_t *sb)
+                                   const fm_vec3_t *center, const coll_gather_memo_t *memo, best_hit_t *sb)
 {
     fm_vec3_t glo, ghi, ap;
     gather_box(rel, &lo, &hi, &glo, &ghi);
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
+    /* (memo: set once a hit at t = 0 is held, below) */
+    const coll_gather_memo_t *skip = NULL;
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
+        /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
+         * computes the closest pair at the start and, no overlap, stops: the memo's overlap
+         * query computed that pair (the same values) and found no overlap. */
+        if (skip && memo_clear(skip, k)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
@@ -736,6 +768,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
         if (sweep_tri(q, gt->inst, gt->tri, &w0, shape, &u, tilted, gt, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
+            if (sb->best == 0.0f) skip = memo;
         }
     }
 }
@@ -773,7 +806,7 @@ __attribute__((noinline)) /* (out of the common path's code) */
 #endif
 static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                  float inner_half_height, fm_vec3_t displacement, const capsule_q_t *q,
-                                 const fm_vec3_t *rel, coll_sweep_hit_t *hit)
+                                 const fm_vec3_t *rel, const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
 {
     if ((g->types & COLL_TYPE_MESH) && g->valid) {
         float covered = gather_covered_part(g, rel, q);
@@ -782,7 +815,7 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
             best_init(&sb, covered);
             fm_vec3_t lo, hi;
             swept_box(q, covered, &lo, &hi);
-            gather_sweep_scan(g, q, rel, lo, hi, NULL, NULL, &sb);
+            gather_sweep_scan(g, q, rel, lo, hi, NULL, NULL, memo, &sb);
             if (sb.have) {
                 STATS_ADD(g->scene, gather_queries);
                 if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, q, g->read_mask, &sb);
@@ -797,7 +830,8 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
 
 CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                       float inner_half_height, fm_vec3_t displacement,
-                                      const coll_gather_above_t *above, coll_sweep_hit_t *hit)
+                                      const coll_gather_above_t *above, const coll_gather_memo_t *memo,
+                                      coll_sweep_hit_t *hit)
 {
     if (!g || !g->scene) return false;
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement)) return false;
@@ -806,12 +840,13 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
     fm_vec3_t rel, lo, hi;
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 1.0f, &lo, &hi);
+    memo = memo_for(memo, g, &center, &axis, radius, inner_half_height);
     if (!(g->types & COLL_TYPE_MESH) || !g->valid || !gather_inside(g, &rel, &lo, &hi))
-        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, hit);
+        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, memo, hit);
     STATS_ADD(g->scene, gather_queries);
     best_hit_t sb;
     best_init(&sb, 1.0f);
-    gather_sweep_scan(g, &q, &rel, lo, hi, above, &center, &sb);
+    gather_sweep_scan(g, &q, &rel, lo, hi, above, &center, memo, &sb);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
 }
@@ -819,18 +854,26 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
 bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, NULL, hit);
 }
 
 bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                      float inner_half_height, fm_vec3_t displacement,
                                      const coll_gather_above_t *above, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, NULL, hit);
 }
 
-uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
-                                      float inner_half_height, coll_contact_t *out, uint32_t max_out)
+bool coll_gather_capsule_sweep_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                 float inner_half_height, fm_vec3_t displacement, const coll_gather_above_t *above,
+                                 const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
+{
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, memo, hit);
+}
+
+CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                             float inner_half_height, coll_contact_t *out, uint32_t max_out,
+                                             coll_gather_memo_t *memo)
 {
     if (!g || !g->scene) return 0;
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
@@ -843,15 +886,45 @@ uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec
     if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
         return coll_capsule_overlaps(g->scene, center, axis, radius, inner_half_height, g->read_mask, g->types, out,
                                      max_out);
+    /* (the memo's old record is replaced as this one is written: its key, below) */
     contacts_t c = { out, max_out, 0, 0, center };
     fm_vec3_t glo, ghi;
     gather_box(&rel, &lo, &hi, &glo, &ghi);
+    uint32_t nm = 0;
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
-        overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &g->tris[k], &c);
+        if (overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &g->tris[k], &c) && memo &&
+            nm < COLL_GATHER_MEMO_MAX)
+            memo->clear[nm++] = (uint8_t)k;
+    }
+    /* (not for a near-zero inner half height: tri_sweep makes such a segment its midpoint,
+     * the overlap test does not) */
+    if (nm > 0) {
+        memo->g = NULL;
+        if (inner_half_height == 0.0f || inner_half_height > 1e-6f) {
+            memo->g = g;
+            memo->center = center;
+            memo->axis = axis;
+            memo->radius = radius;
+            memo->ihh = inner_half_height;
+            memo->n = (uint8_t)nm;
+        }
     }
     if (g->types & COLL_TYPE_BODY) overlap_bodies(g->scene, &q, g->read_mask, &c);
     return c.total;
+}
+
+uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                      float inner_half_height, coll_contact_t *out, uint32_t max_out)
+{
+    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, NULL);
+}
+
+uint32_t coll_gather_capsule_overlaps_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                        float inner_half_height, coll_contact_t *out, uint32_t max_out,
+                                        coll_gather_memo_t *memo)
+{
+    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, memo);
 }
