@@ -394,8 +394,6 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     mem.down.valid = false;
     mem.ray_valid = false;
     mem.pairs.g = NULL;
-    /* the last step's slide met a wall: this one's may start against it (cb_overlaps_remember) */
-    mem.remember = (body->events.flags & CHAR_BODY_EVENT_HIT_WALL) != 0;
     c.mem = &mem;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */

@@ -92,7 +92,6 @@ typedef struct {
 typedef struct {
     cb_down_t down;
     coll_gather_memo_t pairs;
-    bool remember; ///< the recovery's first look fills `pairs` (the last step met a wall)
     bool ray_valid;
     bool ray_found;
     fm_vec3_t ray_origin;

@@ -811,10 +811,9 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
-    /* (remembered, when the last step's slide met a wall: the slide's first sweep starts
-     * here when nothing pushes the body out, maybe against that wall) */
-    uint32_t n0 = c->mem->remember ? cb_overlaps_remember(c, cb_sweep_center(c, *pos), ct0, CB_MAX_CONTACTS)
-                                   : cb_overlaps(c, cb_sweep_center(c, *pos), ct0, CB_MAX_CONTACTS);
+    /* (remembered: the slide's first sweep starts here when nothing pushes the body out,
+     * maybe against a wall touched at the start: the V corner's wedged steps) */
+    uint32_t n0 = cb_overlaps_remember(c, cb_sweep_center(c, *pos), ct0, CB_MAX_CONTACTS);
     if (n0 > CB_MAX_CONTACTS) n0 = CB_MAX_CONTACTS;
     uint32_t n = n0;
     for (uint32_t i = 0; i < n; i++) ct[i] = ct0[i];
