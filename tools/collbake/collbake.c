@@ -687,7 +687,7 @@ static double cost_of(const coll_mesh_t *m, const cost_pt_t *pts, uint32_t n)
 typedef struct { float cell; double cost, cost_runtime; uint32_t points; int tried; } cell_choice_t;
 
 /* The automatic cell for this level and layout: the runtime's choice, or a cheaper
- * candidate (0.75 m .. 6 m in steps of 1.25, built as explicit cells) within the cap. */
+ * candidate (0.75 m .. 6 m in steps of 1.125: the estimate is sensitive to how the cells fall on the level, so a fine set of candidates, built as explicit cells) within the cap. */
 static float choose_cell(const welded_t *w, int quant, cell_choice_t *cc)
 {
     memset(cc, 0, sizeof *cc);
@@ -705,7 +705,7 @@ static float choose_cell(const welded_t *w, int quant, cell_choice_t *cc)
         if (cap > abs_cap) cap = abs_cap > (double)m->total_size ? abs_cap : (double)m->total_size;
         cc->cost = cc->cost_runtime = cost_of(m, pts, n);
         cc->cell = m->cell_size;
-        for (float c = 0.75f; c <= 6.0f; c *= 1.25f) {
+        for (float c = 0.75f; c <= 6.0f; c *= 1.125f) {
             bo.cell_size = c;
             if (coll_mesh_build(block, need, w->v, w->nv, w->idx, w->nt, &bo, &m) != COLL_OK) continue;
             cc->tried++;
