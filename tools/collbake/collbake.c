@@ -705,7 +705,12 @@ static float choose_cell(const welded_t *w, int quant, cell_choice_t *cc)
         if (cap > abs_cap) cap = abs_cap > (double)m->total_size ? abs_cap : (double)m->total_size;
         cc->cost = cc->cost_runtime = cost_of(m, pts, n);
         cc->cell = m->cell_size;
-        for (float c = 0.75f; c <= 6.0f; c *= 1.125f) {
+        /* Only a hashed choice is replaced: that is where the estimate's gain was measured
+         * (real maps: cells sharing buckets); between dense grids its differences are
+         * within what the walk model misses (the per-ref codes of dense float grids, the
+         * scene queries' cell walks), and a dense grid it rated cheaper measured dearer. */
+        bool hashed = (m->flags & COLL_MESHF_HASH) != 0;
+        for (float c = 0.75f; hashed && c <= 6.0f; c *= 1.125f) {
             bo.cell_size = c;
             if (coll_mesh_build(block, need, w->v, w->nv, w->idx, w->nt, &bo, &m) != COLL_OK) continue;
             cc->tried++;

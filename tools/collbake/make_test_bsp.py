@@ -130,6 +130,12 @@ def main():
     open(os.path.join(out, "lossy.obj"), "w").write(
         "v 0 0 0\nv 1 0 0\nv 0 0 1\nv 0.00001 0 0\nv 0 0.00001 0\nf 1 2 3\nf 1 4 5\nf 1 4 2\nf 5 1 4\n")
     open(os.path.join(out, "cluster.obj"), "w").write(cluster_obj())
+    # a 4 x 4 m floor of 1 m quads: the runtime's automatic grid is dense (--cell-choice cost keeps it)
+    open(os.path.join(out, "floor.obj"), "w").write(
+        "".join("v %d 0 %d\n" % (x, z) for z in range(5) for x in range(5)) +
+        "".join("f %d %d %d\nf %d %d %d\n" % (1 + x + 5 * z, 1 + x + 5 * (z + 1), 2 + x + 5 * (z + 1),
+                                                1 + x + 5 * z, 2 + x + 5 * (z + 1), 2 + x + 5 * z)
+                for z in range(4) for x in range(4)))
 
 
 def cluster_obj():

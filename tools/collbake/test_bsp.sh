@@ -7,7 +7,8 @@
 #  - randomly corrupted copies bake or are refused, never crash (ASan + UBSan build);
 #  - a bake that keeps under half its input triangles is refused; --min-kept 0 bakes it;
 #  - --cell-choice cost picks a cheaper-estimated cell than the runtime's on a level with a
-#    dense cluster (within 10 % more bytes), the default is the runtime's, --cell-size wins.
+#    dense cluster (within 10 % more bytes), keeps a dense runtime grid (floor.obj), the
+#    default is the runtime's, --cell-size wins.
 # Usage: test_bsp.sh COLLBAKE OUTDIR. Writes OUTDIR/results.tsv (ok|FAIL, name, detail),
 # read by host_tests/test_bake_roundtrip.c; exits 1 when any line is FAIL.
 set -u
@@ -112,7 +113,10 @@ if "$bake" "$f" -o "$out/cl_rt.coll" --report "$out/cl_rt.report" > "$out/cl_rt.
        awk -v k="$k" -v k0="$k0" -v b="$cost_b" -v b0="$rt_b" 'BEGIN { exit !(k > 0 && k < 0.9 * k0 && b <= 1.1 * b0) }' &&
        [ "$(rv "$out/cl_cost.report" triangles)" = "$(rv "$out/cl_rt.report" triangles)" ] &&
        grep -q "automatic, --cell-choice cost" "$out/cl_cost.log" &&
-       near "$(rv "$out/cl_4.report" cell_size)" 4 && [ "$(rv "$out/cl_4.report" cell_choice)" = explicit ]; then
+       near "$(rv "$out/cl_4.report" cell_size)" 4 && [ "$(rv "$out/cl_4.report" cell_choice)" = explicit ] &&
+       "$bake" "$out/in/floor.obj" -o "$out/fl_rt.coll" > "$out/fl_rt.log" 2>&1 &&
+       "$bake" --cell-choice cost "$out/in/floor.obj" -o "$out/fl_cost.coll" > "$out/fl_cost.log" 2>&1 &&
+       grep -q "the runtime's choice:" "$out/fl_cost.log" && cmp -s "$out/fl_rt.coll" "$out/fl_cost.coll"; then
         put ok cell_choice "runtime cell $rt_cell ($rt_b bytes, walk $k0), cost: $cost_cell ($cost_b bytes, walk $k)"
     else
         put FAIL cell_choice "runtime cell $rt_cell ($rt_b bytes), cost: $cost_cell ($cost_b bytes, walk $k vs $k0)"
