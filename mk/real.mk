@@ -25,8 +25,13 @@ $(REAL_DIR)/%.bsp: | $(REAL_PK3)
 	@mkdir -p $(@D)
 	unzip -p $(REAL_PK3) maps/$*.bsp > $@.tmp && test -s $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; echo "ERROR: maps/$*.bsp not in $(REAL_PK3)"; exit 1; }
 
-$(REAL_DIR)/%.coll: $(REAL_DIR)/%.bsp $(COLLBAKE)
-	$(COLLBAKE) $< -o $@ --dump-raw $(REAL_DIR)/$*.raw --report $(REAL_DIR)/$*.report
+# The grid cell: collbake's estimate of a character step's grid walk (--cell-choice cost),
+# not only memory: on these maps the runtime's automatic choice is a fine hashed grid
+# (oa_dm5: 1 m, 16384 buckets) that costs 1-5 % more per step (docs/BENCHMARKS.md, perf18).
+REAL_BAKE_ARGS ?= --cell-choice cost
+
+$(REAL_DIR)/%.coll: $(REAL_DIR)/%.bsp $(COLLBAKE) mk/real.mk
+	$(COLLBAKE) $(REAL_BAKE_ARGS) $< -o $@ --dump-raw $(REAL_DIR)/$*.raw --report $(REAL_DIR)/$*.report
 
 .PHONY: real-levels soak-real soak-real-one bsp-test
 real-levels: $(REAL_COLLS)

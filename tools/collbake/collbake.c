@@ -44,7 +44,10 @@ typedef struct {
     float cell_size, scale, weld, max_quant_error;
     double bsp_unit, min_kept;
     int quantize, verbose, bsp_all_models;
+    int cell_choice; /* CELL_CHOICE_*: how the automatic cell is chosen */
 } opts_t;
+
+enum { CELL_CHOICE_RUNTIME, CELL_CHOICE_COST };
 
 static const char *g_file = "collbake";
 
@@ -101,6 +104,9 @@ static void usage(FILE *f)
         "into a collision-mesh blob for coll_mesh_load(). Node transforms are applied.\n"
         "  -o FILE             output blob (big-endian, checksummed)\n"
         "  --cell-size M       grid cell edge in meters (default: automatic)\n"
+        "  --cell-choice C     how the automatic cell is chosen: runtime (default: coll_mesh_build's own,\n"
+        "                      for memory) or cost (that one or a candidate cell whose grid a character\n"
+        "                      step is estimated to walk cheaper, within 10 %% more bytes)\n"
         "  --scale S           uniform scale after node transforms (0.01 for a centimeter level)\n"
         "  --only PATTERN      bake only meshes whose node, an ancestor node or the mesh itself has a\n"
         "                      name matching this fnmatch pattern, e.g. '*_coll' (repeatable; default all)\n"
@@ -147,6 +153,12 @@ static void parse_args(int argc, char **argv, opts_t *o)
         else if (!strcmp(a, "--dump-raw") && next) { o->dump_raw = next; i++; }
         else if (!strcmp(a, "--report") && next) { o->report = next; i++; }
         else if (!strcmp(a, "--cell-size")) { o->cell_size = parse_float(a, next, 0.0f); i++; }
+        else if (!strcmp(a, "--cell-choice") && next) {
+            if (!strcmp(next, "cost")) o->cell_choice = CELL_CHOICE_COST;
+            else if (!strcmp(next, "runtime")) o->cell_choice = CELL_CHOICE_RUNTIME;
+            else die("--cell-choice is cost or runtime, got '%s'", next);
+            i++;
+        }
         else if (!strcmp(a, "--scale")) {
             o->scale = parse_float(a, next, 0.0f); i++;
             if (!(o->scale > 0.0f)) die("--scale must be > 0");
@@ -581,9 +593,9 @@ static void dump_raw(const char *path, const welded_t *w)
 }
 
 /* Builds with the runtime's own builder; returns the mesh (in a malloc'd aligned block). */
-static const coll_mesh_t *build(const welded_t *w, const opts_t *o, int quant, void **block)
+static const coll_mesh_t *build(const welded_t *w, float cell, int quant, void **block)
 {
-    coll_mesh_build_opts_t bo = { o->cell_size, quant ? (uint32_t)COLL_MESH_QUANTIZE : 0u };
+    coll_mesh_build_opts_t bo = { cell, quant ? (uint32_t)COLL_MESH_QUANTIZE : 0u };
     size_t need = coll_mesh_build_size(w->nv, w->nt, &bo);
     if (need == 0) die("level too large for the format (%u vertices, %u triangles exceed 4 GB blobs)", w->nv, w->nt);
     *block = xalloc8(need);
@@ -591,6 +603,126 @@ static const coll_mesh_t *build(const welded_t *w, const opts_t *o, int quant, v
     coll_err_t err = coll_mesh_build(*block, need, w->v, w->nv, w->idx, w->nt, &bo, &m);
     if (err != COLL_OK) die("coll_mesh_build failed: %s", coll_strerror(err));
     return m;
+}
+
+/* ---- the automatic cell, by estimated query cost -------------------------------------
+ * The runtime's automatic cell (coll_mesh_build, cell_size 0) is chosen for memory: the
+ * finest cell whose grid fits a byte budget per triangle, hashed when a dense grid of that
+ * cell has too many cells. On real maps (small detail triangles packed in a few spots) that
+ * hashed fine grid walks more cell entries per query than a dense slightly coarser one. The
+ * bake can afford to look: it builds a few candidate grids with the runtime's builder (so
+ * the chosen grid is exactly the runtime's for that cell) and estimates what a character
+ * step's gather walks in each: the cells and cell entries under a character-sized box
+ * standing on the level's walkable triangles (COST_* below, area-weighted sample points),
+ * weighted by what the walk pays per cell and per entry (x86, gather.c: about 12 and 9
+ * instructions). The cheapest candidate within the memory cap wins; the runtime's own
+ * choice is a candidate, so the estimate never picks a grid it rates worse. */
+#define COST_SAMPLES 4096      /* sample points on walkable triangles (up to) */
+#define COST_HALF_W 0.6f       /* the box: a 0.4 m radius capsule with a step's reach, */
+#define COST_BELOW 0.6f        /* from the floor's snap reach below the foot */
+#define COST_ABOVE 2.0f        /* to above the head (1.8 m) */
+#define COST_PER_CELL 12.0
+#define COST_PER_ENTRY 9.0
+#define COST_MAX_GROWTH 1.10   /* a candidate may take up to 10 % more bytes than the runtime's choice */
+
+typedef struct { float p[3]; } cost_pt_t;
+
+/* Area-weighted points on the upward-facing triangles (normal within 60 degrees of +Y):
+ * every triangle's share of COST_SAMPLES by its area, carried over (deterministic). */
+static uint32_t cost_points(const welded_t *w, cost_pt_t *pts, uint32_t max)
+{
+    double total = 0.0;
+    for (int pass = 0; pass < 2; pass++) {
+        double acc = 0.0;
+        uint32_t n = 0;
+        for (uint32_t t = 0; t < w->nt; t++) {
+            const float *a = &w->v[3 * w->idx[3 * t]], *b = &w->v[3 * w->idx[3 * t + 1]], *c = &w->v[3 * w->idx[3 * t + 2]];
+            double e1[3], e2[3], cr[3];
+            for (int k = 0; k < 3; k++) { e1[k] = (double)b[k] - a[k]; e2[k] = (double)c[k] - a[k]; }
+            cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
+            cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
+            cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+            double len = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+            if (!(len > 0.0) || cr[1] < 0.5 * len) continue;
+            if (pass == 0) { total += len; continue; }
+            acc += len * (double)max / total;
+            /* points at fixed barycentric spots (the centroid first) */
+            static const float bary[4][2] = { { 1.0f / 3, 1.0f / 3 }, { 0.6f, 0.2f }, { 0.2f, 0.6f }, { 0.2f, 0.2f } };
+            for (int j = 0; acc >= 1.0 && n < max; j++, acc -= 1.0) {
+                float u = bary[j & 3][0], v = bary[j & 3][1];
+                for (int k = 0; k < 3; k++) pts[n].p[k] = a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]);
+                n++;
+            }
+        }
+        if (pass == 1) return n;
+        if (!(total > 0.0)) return 0;
+    }
+    return 0;
+}
+
+/* Estimated walk cost of the sample boxes on mesh m (sum over the boxes). */
+static double cost_of(const coll_mesh_t *m, const cost_pt_t *pts, uint32_t n)
+{
+    const uint32_t *cells = coll_mesh_cells(m);
+    float inv = 1.0f / m->cell_size;
+    double cost = 0.0;
+    for (uint32_t i = 0; i < n; i++) {
+        float lo[3] = { pts[i].p[0] - COST_HALF_W, pts[i].p[1] - COST_BELOW, pts[i].p[2] - COST_HALF_W };
+        float hi[3] = { pts[i].p[0] + COST_HALF_W, pts[i].p[1] + COST_ABOVE, pts[i].p[2] + COST_HALF_W };
+        uint32_t cl[3], ch[3];
+        for (int a = 0; a < 3; a++) {
+            cl[a] = coll_mesh_cell_coord(lo[a] - m->grid_margin, m->bmin[a], inv, m->dims[a]);
+            ch[a] = coll_mesh_cell_coord(hi[a] + m->grid_margin, m->bmin[a], inv, m->dims[a]);
+        }
+        for (uint32_t z = cl[2]; z <= ch[2]; z++)
+            for (uint32_t y = cl[1]; y <= ch[1]; y++)
+                for (uint32_t x = cl[0]; x <= ch[0]; x++) {
+                    uint32_t e = coll_mesh_cell_index(m, x, y, z);
+                    cost += COST_PER_CELL + COST_PER_ENTRY * (double)(cells[e + 1] - cells[e]);
+                }
+    }
+    return cost;
+}
+
+typedef struct { float cell; double cost, cost_runtime; uint32_t points; int tried; } cell_choice_t;
+
+/* The automatic cell for this level and layout: the runtime's choice, or a cheaper
+ * candidate (0.75 m .. 6 m in steps of 1.125: the estimate is sensitive to how the cells fall on the level, so a fine set of candidates, built as explicit cells) within the cap. */
+static float choose_cell(const welded_t *w, int quant, cell_choice_t *cc)
+{
+    memset(cc, 0, sizeof *cc);
+    cost_pt_t *pts = xmalloc(sizeof(cost_pt_t) * COST_SAMPLES);
+    uint32_t n = cost_points(w, pts, COST_SAMPLES);
+    coll_mesh_build_opts_t bo = { 0.0f, quant ? (uint32_t)COLL_MESH_QUANTIZE : 0u };
+    size_t need = coll_mesh_build_size(w->nv, w->nt, &bo);
+    void *block = need ? xalloc8(need) : NULL;
+    const coll_mesh_t *m = NULL;
+    float best = 0.0f;
+    if (n && block && coll_mesh_build(block, need, w->v, w->nv, w->idx, w->nt, &bo, &m) == COLL_OK) {
+        /* the cap: 10 % over the runtime's choice, and within 22 (float) or 13.5 (quantized)
+         * bytes a triangle (the memory targets are 24 and 14) unless the runtime's is over */
+        double cap = (double)m->total_size * COST_MAX_GROWTH, abs_cap = (quant ? 13.5 : 22.0) * (double)m->ntris;
+        if (cap > abs_cap) cap = abs_cap > (double)m->total_size ? abs_cap : (double)m->total_size;
+        cc->cost = cc->cost_runtime = cost_of(m, pts, n);
+        cc->cell = m->cell_size;
+        /* Only a hashed choice is replaced: that is where the estimate's gain was measured
+         * (real maps: cells sharing buckets); between dense grids its differences are
+         * within what the walk model misses (the per-ref codes of dense float grids, the
+         * scene queries' cell walks), and a dense grid it rated cheaper measured dearer. */
+        bool hashed = (m->flags & COLL_MESHF_HASH) != 0;
+        for (float c = 0.75f; hashed && c <= 6.0f; c *= 1.125f) {
+            bo.cell_size = c;
+            if (coll_mesh_build(block, need, w->v, w->nv, w->idx, w->nt, &bo, &m) != COLL_OK) continue;
+            cc->tried++;
+            if ((double)m->total_size > cap || m->cell_size != c) continue;
+            double k = cost_of(m, pts, n);
+            if (k < cc->cost) { cc->cost = k; cc->cell = c; best = c; }
+        }
+    }
+    cc->points = n;
+    free(block);
+    free(pts);
+    return best; /* 0: the runtime's own choice */
 }
 
 /* Worst distance between a welded float vertex and its stored (quantized) value. */
@@ -655,12 +787,19 @@ int main(int argc, char **argv)
             (double)o.weld, w.degenerate, w.duplicate, 100.0 * o.min_kept);
 
     void *fblock = NULL, *qblock = NULL;
-    const coll_mesh_t *fm = build(&w, &o, 0, &fblock);
+    /* the automatic cell: the runtime's choice unless a cheaper one is estimated (choose_cell) */
+    cell_choice_t fcc, qcc, *cc = NULL;
+    float fcell = o.cell_size, qcell = o.cell_size;
+    if (!(o.cell_size > 0.0f) && o.cell_choice == CELL_CHOICE_COST) {
+        fcell = choose_cell(&w, 0, &fcc);
+        if (o.quantize) qcell = choose_cell(&w, 1, &qcc);
+    }
+    const coll_mesh_t *fm = build(&w, fcell, 0, &fblock);
     const coll_mesh_t *m = fm;
     double qerr = 0.0;
     int quantized = 0;
     if (o.quantize) {
-        const coll_mesh_t *qm = build(&w, &o, 1, &qblock);
+        const coll_mesh_t *qm = build(&w, qcell, 1, &qblock);
         qerr = quant_error(qm, &w);
         if (qerr > o.max_quant_error) {
             warn("quantization error %.4f m exceeds --max-quant-error %.4f m (level %.1f m across): "
@@ -669,10 +808,12 @@ int main(int argc, char **argv)
         } else {
             m = qm;
             quantized = 1;
+            if (!(o.cell_size > 0.0f) && o.cell_choice == CELL_CHOICE_COST) cc = &qcc;
             if (qm->ntris != fm->ntris)
                 warn("%u triangles collapsed by quantization", fm->ntris - qm->ntris);
         }
     }
+    if (!quantized && !(o.cell_size > 0.0f) && o.cell_choice == CELL_CHOICE_COST) cc = &fcc;
     if (fm->ntris != w.nt)
         warn("the runtime builder dropped %u more degenerate triangles", w.nt - fm->ntris);
 
@@ -727,10 +868,16 @@ int main(int argc, char **argv)
            (double)(m->bmax[2] - m->bmin[2]));
     printf("  grid       cell %.3f m (%s), %u x %u x %u %s %llu %s, %llu non-empty\n", (double)m->cell_size,
            o.cell_size > 0.0f ? (m->cell_size == o.cell_size ? "--cell-size" : "grown from --cell-size to fit")
-                              : "automatic",
+                              : cc ? "automatic, --cell-choice cost" : "automatic",
            m->dims[0], m->dims[1], m->dims[2], (m->flags & COLL_MESHF_HASH) ? "hashed into" : "=",
            (unsigned long long)gs.ncells, (m->flags & COLL_MESHF_HASH) ? "buckets" : "cells",
            (unsigned long long)gs.nonempty);
+    if (cc)
+        printf("  cell cost  %s: estimated %.0f x86 instructions of grid walk per character step (%u points on "
+               "walkable triangles), the runtime's choice %.0f; %d candidates\n",
+               cc->cell > 0.0f && cc->cost < cc->cost_runtime ? "a cheaper candidate" : "the runtime's choice",
+               cc->points ? cc->cost / cc->points : 0.0, cc->points, cc->points ? cc->cost_runtime / cc->points : 0.0,
+               cc->tried);
     printf("  per cell   max %u triangles, mean %.2f over non-empty cells; %u refs (%.2f cells per triangle)\n",
            gs.max_per_cell, gs.mean_per_nonempty, m->nrefs, m->ntris ? (double)m->nrefs / m->ntris : 0.0);
     printf("  size       %u bytes, %.1f bytes/triangle (header %u, vertices %llu, triangles %llu with %s indices, "
@@ -774,11 +921,12 @@ int main(int argc, char **argv)
         int n = snprintf(txt, 4096,
             "input %s\ntriangles_in %u\ntriangles %u\nvertices %u\nbounds %.9g %.9g %.9g %.9g %.9g %.9g\n"
             "cell_size %.9g\ncell_size_requested %.9g\ncells %llu\nmax_per_cell %u\nbytes %u\nquantized %d\nquant_error %.9g\n"
-            "slivers %u\nnonmanifold_edges %u\nbig_triangles %u\n",
+            "slivers %u\nnonmanifold_edges %u\nbig_triangles %u\ncell_choice %s\ncell_walk_cost %.1f\ncell_walk_cost_runtime %.1f\n",
             base_name(o.input), w.in_tris, m->ntris, m->nverts, (double)m->bmin[0], (double)m->bmin[1],
             (double)m->bmin[2], (double)m->bmax[0], (double)m->bmax[1], (double)m->bmax[2], (double)m->cell_size,
             (double)o.cell_size, (unsigned long long)gs.ncells, gs.max_per_cell, m->total_size, quantized, qerr, ss.slivers,
-            ss.nonmanifold, gs.big_tris);
+            ss.nonmanifold, gs.big_tris, o.cell_size > 0.0f ? "explicit" : cc ? "cost" : "runtime",
+            cc && cc->points ? cc->cost / cc->points : 0.0, cc && cc->points ? cc->cost_runtime / cc->points : 0.0);
         write_file(o.report, txt, (size_t)n);
         free(txt);
     }

@@ -129,6 +129,36 @@ def main():
     # the loss rule: 1 good triangle and 3 that weld away (99 % of 4 lost)
     open(os.path.join(out, "lossy.obj"), "w").write(
         "v 0 0 0\nv 1 0 0\nv 0 0 1\nv 0.00001 0 0\nv 0 0.00001 0\nf 1 2 3\nf 1 4 5\nf 1 4 2\nf 5 1 4\n")
+    open(os.path.join(out, "cluster.obj"), "w").write(cluster_obj())
+    # a 4 x 4 m floor of 1 m quads: the runtime's automatic grid is dense (--cell-choice cost keeps it)
+    open(os.path.join(out, "floor.obj"), "w").write(
+        "".join("v %d 0 %d\n" % (x, z) for z in range(5) for x in range(5)) +
+        "".join("f %d %d %d\nf %d %d %d\n" % (1 + x + 5 * z, 1 + x + 5 * (z + 1), 2 + x + 5 * (z + 1),
+                                                1 + x + 5 * z, 2 + x + 5 * (z + 1), 2 + x + 5 * z)
+                for z in range(4) for x in range(4)))
+
+
+def cluster_obj():
+    """--cell-choice cost: a 40 x 10 x 40 m room of 1 m quads (floor and ceiling) with a dense
+    cluster of 4000 small triangles (20 layers of 10 x 10 quads of 0.2 m) in its middle; the
+    runtime's automatic cell is a fine hashed grid there (1.25 m, 8192 buckets)."""
+    vs, fs = [], []
+
+    def quad(a, b, c, d):
+        i = len(vs)
+        vs.extend([a, b, c, d])
+        fs.append((i + 1, i + 2, i + 3))
+        fs.append((i + 1, i + 3, i + 4))
+    for x in range(40):
+        for z in range(40):
+            quad((x, 0, z), (x, 0, z + 1), (x + 1, 0, z + 1), (x + 1, 0, z))
+            quad((x, 10, z), (x + 1, 10, z), (x + 1, 10, z + 1), (x, 10, z + 1))
+    for k in range(20):
+        for i in range(10):
+            for j in range(10):
+                x, y, z = 19 + 0.2 * i, 0.5 + 0.1 * k, 19 + 0.2 * j
+                quad((x, y, z), (x, y, z + 0.2), (x + 0.2, y, z + 0.2), (x + 0.2, y, z))
+    return "".join("v %g %g %g\n" % v for v in vs) + "".join("f %d %d %d\n" % f for f in fs)
 
 
 if __name__ == "__main__":

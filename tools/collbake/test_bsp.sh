@@ -5,7 +5,10 @@
 #  - every broken variant (truncations, bad version, lumps outside the file, bad indexes,
 #    bad patches, NaN vertices, ...) is refused: exit 1, an "ERROR: <file>:" line, no output;
 #  - randomly corrupted copies bake or are refused, never crash (ASan + UBSan build);
-#  - a bake that keeps under half its input triangles is refused; --min-kept 0 bakes it.
+#  - a bake that keeps under half its input triangles is refused; --min-kept 0 bakes it;
+#  - --cell-choice cost picks a cheaper-estimated cell than the runtime's on a level with a
+#    dense cluster (within 10 % more bytes), keeps a dense runtime grid (floor.obj), the
+#    default is the runtime's, --cell-size wins.
 # Usage: test_bsp.sh COLLBAKE OUTDIR. Writes OUTDIR/results.tsv (ok|FAIL, name, detail),
 # read by host_tests/test_bake_roundtrip.c; exits 1 when any line is FAIL.
 set -u
@@ -94,6 +97,32 @@ if "$bake" --min-kept 0 "$f" -o "$out/lossy0.coll" > "$out/lossy0.log" 2>&1 && [
     put ok loss_rule_override "--min-kept 0 bakes it"
 else
     put FAIL loss_rule_override "$(grep -m1 ERROR "$out/lossy0.log")"
+fi
+
+# ---- the automatic cell by estimated cost (--cell-choice cost, collbake.c choose_cell)
+f="$out/in/cluster.obj"
+if "$bake" "$f" -o "$out/cl_rt.coll" --report "$out/cl_rt.report" > "$out/cl_rt.log" 2>&1 &&
+   "$bake" --cell-choice runtime "$f" -o "$out/cl_rt2.coll" > "$out/cl_rt2.log" 2>&1 &&
+   "$bake" --cell-choice cost "$f" -o "$out/cl_cost.coll" --report "$out/cl_cost.report" > "$out/cl_cost.log" 2>&1 &&
+   "$bake" --cell-choice cost --cell-size 4 "$f" -o "$out/cl_4.coll" --report "$out/cl_4.report" > "$out/cl_4.log" 2>&1; then
+    rt_cell=$(rv "$out/cl_rt.report" cell_size); cost_cell=$(rv "$out/cl_cost.report" cell_size)
+    rt_b=$(rv "$out/cl_rt.report" bytes); cost_b=$(rv "$out/cl_cost.report" bytes)
+    k=$(rv "$out/cl_cost.report" cell_walk_cost); k0=$(rv "$out/cl_cost.report" cell_walk_cost_runtime)
+    if cmp -s "$out/cl_rt.coll" "$out/cl_rt2.coll" && [ "$(rv "$out/cl_rt.report" cell_choice)" = runtime ] &&
+       [ "$(rv "$out/cl_cost.report" cell_choice)" = cost ] && ! near "$rt_cell" "$cost_cell" &&
+       awk -v k="$k" -v k0="$k0" -v b="$cost_b" -v b0="$rt_b" 'BEGIN { exit !(k > 0 && k < 0.9 * k0 && b <= 1.1 * b0) }' &&
+       [ "$(rv "$out/cl_cost.report" triangles)" = "$(rv "$out/cl_rt.report" triangles)" ] &&
+       grep -q "automatic, --cell-choice cost" "$out/cl_cost.log" &&
+       near "$(rv "$out/cl_4.report" cell_size)" 4 && [ "$(rv "$out/cl_4.report" cell_choice)" = explicit ] &&
+       "$bake" "$out/in/floor.obj" -o "$out/fl_rt.coll" > "$out/fl_rt.log" 2>&1 &&
+       "$bake" --cell-choice cost "$out/in/floor.obj" -o "$out/fl_cost.coll" > "$out/fl_cost.log" 2>&1 &&
+       grep -q "the runtime's choice:" "$out/fl_cost.log" && cmp -s "$out/fl_rt.coll" "$out/fl_cost.coll"; then
+        put ok cell_choice "runtime cell $rt_cell ($rt_b bytes, walk $k0), cost: $cost_cell ($cost_b bytes, walk $k)"
+    else
+        put FAIL cell_choice "runtime cell $rt_cell ($rt_b bytes), cost: $cost_cell ($cost_b bytes, walk $k vs $k0)"
+    fi
+else
+    put FAIL cell_choice "did not bake: $(cat "$out"/cl_*.log | grep -m1 ERROR)"
 fi
 
 n=$(wc -l < "$res")
