@@ -307,8 +307,9 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
     for (int k = 0; k < 3; k++) { dh[k] = d[k] - up[k] * dup; inh[k] = in[k] - up[k] * iup; }
     bool grounded1 = char_body_is_on_floor(b);
     /* every excuse of the state checks, plus: started overlapping (the recover push-out
-     * moves the body without velocity), or ended in an excused overlap */
-    bool excused = m->excuse || m->pen0 || sim->excused;
+     * moves the body without velocity), or ended in an excused overlap, or started or
+     * ended wholly inside a closed solid */
+    bool excused = m->excuse || m->pen0 || sim->excused || sim->inside0 || sim->inside;
     double inl = dlen3(inh);
     /* walking: on a walkable floor and not launched off it by the game this step (a jump) */
     bool walking = !excused && m->grounded0 && !m->steep0 && !m->launched && isfinite(inl) && inl > 1e-6;
@@ -443,6 +444,18 @@ int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
     int32_t tri = -1;
     double raw = 0;
     double pen = soak_check_static_pen(sim->lvl, s, &sweep, &tri, &raw);
+    /* Wholly inside a closed solid (the game teleported the body into a staircase's block,
+     * soak s4 l325, or a ramp, s9 l185): the centre of the sweep capsule inside one, no face
+     * of it within the radius (the distance check above sees nothing). The body is in
+     * geometry: the behaviour oracles give no verdict on a step that starts or ends there
+     * (the inside faces of overlapping blocks are no floors a player stands on). */
+    {
+        double mid[3];
+        for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+        sim->inside0 = sim->inside;
+        sim->inside = pen <= SOAK_PEN_TOL && soak_check_inside_closed(sim->lvl, s, mid);
+        if (sim->inside) sim->st.inside_frames++;
+    }
     sim->last_pen = pen;
     sim->last_raw = raw;
     sim->last_tri = tri;
