@@ -208,7 +208,7 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
     for (int k = SOAK_FAIL_DIRECTION; k < SOAK_FAIL_COUNT; k++)
         printf(" %s %llu", soak_fail_name(k), (unsigned long long)st->oracle_frames[k]);
     if (st->left_level) printf("; fell out of the level's bounds: %llu", (unsigned long long)st->left_level);
-    printf("; frames inside a closed solid (no verdict): %llu\n", (unsigned long long)st->inside_frames);
+    printf("; oracle failures withheld inside a closed solid: %llu\n", (unsigned long long)st->inside_frames);
     printf("%s: excused penetration frames %llu (teleport/up change/mover; max %.1f mm), stuck >%d frames: %llu, "
            "left the room while recovering: %llu, on floor %.1f%%, steep %.1f%%",
            what, (unsigned long long)st->soft_pen_frames, st->max_soft_pen * 1000.0, SOAK_RECOVER_FRAMES,

@@ -246,7 +246,8 @@ const char *soak_fail_name(int kind);
 typedef struct {
     uint64_t frames, hard[SOAK_FAIL_COUNT];
     uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
-    uint64_t inside_frames;       ///< frames wholly inside a closed solid (no oracle verdict)
+    uint64_t inside_frames;       ///< oracle failures withheld: the step started or ended wholly
+                                  ///< inside a closed solid
     uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
     uint64_t excused_escapes;     ///< left the room while recovering from an excused overlap
     uint64_t on_floor_frames, steep_frames;
@@ -282,8 +283,6 @@ typedef struct {
     uint32_t frame;
     bool excused;
     bool escaped;                 ///< left the room after an excused overlap: checks end
-    bool inside, inside0;         ///< the sweep capsule's centre inside a closed solid after the
-                                  ///< last step, and before it (no oracle verdict)
     uint32_t excused_frames;
     uint32_t last_teleport, last_up, last_mover; ///< frame numbers of the last excuse events (+1)
     int checks;                   ///< SOAK_CHECKS_* (soak_sim_begin: current)
