@@ -739,6 +739,85 @@ static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00814, soak_check_footing(&lvl, s, deeper));
 }
 
+/* A body wholly inside a closed solid is in geometry (branch foot15). Soak s4 l325: the
+ * game teleported a grounded body (r 0.105) into a staircase's step block (top 4.9563,
+ * front face 12 mm beside its capsule, 1.3 mm over its head): no face within its radius,
+ * so the distance check saw nothing, and the footing oracle judged the tread of the
+ * overlapping block under it (the inside faces of a staircase's blocks): 137.95 mm. The
+ * signed crossings count the blocks around a point; the sweep capsule's centre inside one
+ * is a penetration (excused after the teleport: no oracle verdict while it is in there).
+ * Soak s9 l185: a ramp whose quads have vertices of their own and whose two sides were
+ * wound inwards is closed by position, and the checker's copy is wound outwards. */
+static void test_checker_inside_a_closed_solid(void)
+{
+    static soak_frame_t fr[8];
+    soak_replay_t rp;
+    memset(&rp, 0, sizeof rp);
+    rp.frames = fr;
+    rp.cap = 8;
+    int line = 0;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s4_l325b_footing.replay", &rp, &line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    const char_body_settings_t *s = &rp.settings;
+    soak_capsule_t full, sweep;
+    const fm_vec3_t in = V(-0x1.a489bep+1f, 0x1.18cf3cp+2f, 0x1.99074ap+0f); /* the body after the teleport */
+    soak_capsules_at(s, in, &full, &sweep);
+    double mid[3];
+    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+    int32_t tri = -1;
+    double raw = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* no face near */
+    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, mid));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.13795, soak_check_footing(&lvl, s, in)); /* what the oracle said */
+    double above[3] = {mid[0], 5.2, mid[2]};          /* over the step's top (4.9563) */
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, above));
+    double front[3] = {mid[0], mid[1], 1.40};          /* 8 cm in front of its front face */
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, front));
+    double two[3] = {mid[0], 4.0, 2.2};               /* inside the first eight blocks */
+    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, two));
+    double room[3] = {0.0, 12.0, 0.0};
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, room));
+    /* the oracle on that state: no verdict (inside), a step out of it neither (it started
+     * inside); 0.25 m back (out of the block, under its front face, over the tread below,
+     * the foot 138 mm in the next step's block): outside, judged, fails as before */
+    soak_sim_begin(&osim, &lvl, s, in);
+    osim.excused = false;
+    osim.oracles = 1u << SOAK_FAIL_FOOTING;
+    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = 1;
+    osim.body.floor_normal = V(0, 1, 0);
+    const fm_vec3_t z = V(0, 0, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, in, z, z, true, false, false));
+    TEST_ASSERT_EQUAL_UINT64(1, osim.st.inside_frames);
+    const fm_vec3_t out = V(in.x, in.y, in.z - 0.25f);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, out, z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(out, out, z, z, true, false, false));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.13795, soak_check_footing(&lvl, s, out));
+    soak_capsules_at(s, out, &full, &sweep);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* clear there too */
+    soak_replay_result_t res;
+    /* the replay (teleported into it): no footing verdict, passes */
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s4_l325b_footing.replay", &rp, &line));
+    soak_replay_run(&rp, &lvl, &res);
+    TEST_ASSERT_EQUAL_INT(0, res.fails);
+
+    /* s9 l185: the ramp (triangles 460-467) is closed, wound outwards */
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s9_l185_footing.replay", &rp, &line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    for (uint32_t i = 460; i <= 467; i++) {
+        const soak_wtri_t *w = &lvl.wtris[i];
+        TEST_ASSERT_EQUAL_UINT8(1, w->closed);
+        double c[3] = {7.7, 5.0, 7.4}, e1[3], e2[3], n[3], d[3]; /* a point inside the ramp */
+        for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        TEST_ASSERT_TRUE(n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0); /* faces away from the inside */
+    }
+    soak_capsules_at(&rp.settings, rp.start, &full, &sweep);
+    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, &rp.settings, mid));
+    double under[3] = {7.04, 3.0, 8.17};               /* under the floating ramp */
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, &rp.settings, under));
+}
+
 /* The footing oracle and the edge of the floor under the foot (soak seed 10 level 402: up
  * tilted 45 degrees, r 0.73, a staircase whose treads (44.5 degrees off up) and whose side
  * (45.6 degrees off up, one plane for every step) are both walkable). The foot stands on a
@@ -1099,6 +1178,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_out_held_by_the_slope_under_the_foot);
     RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
     RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
+    RUN_TEST(test_checker_inside_a_closed_solid);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

@@ -183,6 +183,7 @@ static void add_stats(soak_stats_t *a, const soak_stats_t *b)
     a->frames += b->frames;
     for (int k = 0; k < SOAK_FAIL_COUNT; k++) a->hard[k] += b->hard[k];
     a->soft_pen_frames += b->soft_pen_frames;
+    a->inside_frames += b->inside_frames;
     a->stuck_events += b->stuck_events;
     a->excused_escapes += b->excused_escapes;
     a->body_pen_frames += b->body_pen_frames;
@@ -207,7 +208,7 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
     for (int k = SOAK_FAIL_DIRECTION; k < SOAK_FAIL_COUNT; k++)
         printf(" %s %llu", soak_fail_name(k), (unsigned long long)st->oracle_frames[k]);
     if (st->left_level) printf("; fell out of the level's bounds: %llu", (unsigned long long)st->left_level);
-    printf("\n");
+    printf("; oracle failures withheld inside a closed solid: %llu\n", (unsigned long long)st->inside_frames);
     printf("%s: excused penetration frames %llu (teleport/up change/mover; max %.1f mm), stuck >%d frames: %llu, "
            "left the room while recovering: %llu, on floor %.1f%%, steep %.1f%%",
            what, (unsigned long long)st->soft_pen_frames, st->max_soft_pen * 1000.0, SOAK_RECOVER_FRAMES,

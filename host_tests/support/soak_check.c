@@ -174,6 +174,43 @@ double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t
     return best;
 }
 
+/* Signed crossings of the ray from p along dir with the seen triangles of closed pieces:
+ * +1 leaving through a front face (by winding: the outside of its solid), -1 entering. The
+ * sum is the number of closed solids (boxes of a staircase overlap: each counts) around p. */
+static int closed_winding(const soak_level_t *lvl, const char_body_settings_t *s, const double p[3], const double dir[3])
+{
+    int wn = 0;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!w->closed || !tri_seen(w->mask, s)) continue;
+        double e1[3], e2[3], h[3], q[3], t0[3];
+        sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
+        cross3(h, dir, e2);
+        double det = dot3(e1, h);
+        if (fabs(det) < 1e-14) continue;
+        sub3(t0, p, w->v[0]);
+        double u = dot3(t0, h) / det;
+        if (u < 0 || u > 1) continue;
+        cross3(q, t0, e1);
+        double v = dot3(dir, q) / det;
+        if (v < 0 || u + v > 1) continue;
+        if (dot3(e2, q) / det <= 0) continue;
+        double n[3];
+        cross3(n, e1, e2);
+        wn += dot3(n, dir) > 0 ? 1 : -1;
+    }
+    return wn;
+}
+
+bool soak_check_inside_closed(const soak_level_t *lvl, const char_body_settings_t *s, const double p[3])
+{
+    /* two rays in directions no generated edge or face lies along: both must agree (a ray
+     * through an edge shared by two triangles counts it twice or not at all) */
+    static const double d1[3] = {0.3713906763541037, 0.8121168928170934, 0.4501390297069412};
+    static const double d2[3] = {-0.5773502691896258, -0.6172133998483676, 0.5345224838248488};
+    return closed_winding(lvl, s, p, d1) > 0 && closed_winding(lvl, s, p, d2) > 0;
+}
+
 /* double transform of a point by an instance transform */
 static void xf_point(double out[3], const coll_transform_t *xf, const double lp[3])
 {

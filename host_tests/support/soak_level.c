@@ -422,6 +422,65 @@ static void wtri_bound(soak_wtri_t *w)
     w->rad = rad;
 }
 
+#define SOAK_FLIP_MAX_TRIS 32
+
+/* Local position of vertex j of the piece's triangle t. */
+static const float *tri_vert(const soak_level_t *l, const soak_piece_t *p, uint32_t t, int j)
+{
+    return l->verts + (size_t)(p->first_vert + l->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
+}
+static bool same_pos(const float *a, const float *b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
+/* A piece of at most SOAK_FLIP_MAX_TRIS triangles whose every edge (by position) is shared
+ * by exactly one other of its triangles, which can be wound consistently: true, with
+ * flip[t] set for the triangles to turn over so that all face out (positive volume). */
+static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool *flip)
+{
+    const uint32_t n = p->ntris;
+    if (n < 4 || n > SOAK_FLIP_MAX_TRIS) return false;
+    int nb[SOAK_FLIP_MAX_TRIS][3];
+    bool same[SOAK_FLIP_MAX_TRIS][3]; /* the neighbour has the edge in the same direction */
+    for (uint32_t t = 0; t < n; t++)
+        for (int j = 0; j < 3; j++) {
+            const float *a = tri_vert(l, p, t, j), *b = tri_vert(l, p, t, (j + 1) % 3);
+            int found = 0;
+            for (uint32_t u = 0; u < n; u++) {
+                if (u == t) continue;
+                for (int k = 0; k < 3; k++) {
+                    const float *c = tri_vert(l, p, u, k), *d = tri_vert(l, p, u, (k + 1) % 3);
+                    bool fw = same_pos(a, c) && same_pos(b, d), bw = same_pos(a, d) && same_pos(b, c);
+                    if (fw || bw) { found++; nb[t][j] = (int)u; same[t][j] = fw; }
+                }
+            }
+            if (found != 1) return false;
+        }
+    /* flood the orientation from triangle 0 */
+    int state[SOAK_FLIP_MAX_TRIS], stack[SOAK_FLIP_MAX_TRIS], sp = 0;
+    for (uint32_t t = 0; t < n; t++) state[t] = -1;
+    state[0] = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        int t = stack[--sp];
+        for (int j = 0; j < 3; j++) {
+            int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
+            if (state[u] < 0) { state[u] = want; stack[sp++] = u; }
+            else if (state[u] != want) return false; /* not orientable */
+        }
+    }
+    double vol = 0;
+    for (uint32_t t = 0; t < n; t++) {
+        if (state[t] < 0) return false; /* more than one shell */
+        const float *a = tri_vert(l, p, t, 0), *b = tri_vert(l, p, t, 1), *c = tri_vert(l, p, t, 2);
+        double v = (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
+                   (double)a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
+                   (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
+        vol += state[t] ? -v : v;
+    }
+    if (!(fabs(vol) > 1e-9)) return false;
+    for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol < 0);
+    return true;
+}
+
 /* World-space double copy of a static piece's triangles (the checker's data). */
 static void world_tris(soak_level_t *l, const soak_piece_t *p)
 {
@@ -444,15 +503,22 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
                 }
             closed = same == 1 && rev == 1;
         }
+    /* Not closed by its indices: a solid built of quads with vertices of their own and its
+     * sides wound the other way (the ramp: soak s9 l185) is still closed when every edge,
+     * by position, is shared by exactly two of its triangles: the checker's copy is then
+     * wound consistently, outwards (flip[t]: its second and third vertices swapped). */
+    bool flip[SOAK_FLIP_MAX_TRIS] = {false};
+    if (!closed) closed = orient_by_position(l, p, flip);
     /* a mirroring scale turns the winding inside out */
     if (sc.x * sc.y * sc.z < 0) closed = false;
     for (uint32_t t = 0; t < p->ntris && l->nwtris < SOAK_MAX_TRIS; t++) {
         soak_wtri_t *w = &l->wtris[l->nwtris++];
-        for (int j = 0; j < 3; j++) {
+        for (int jj = 0; jj < 3; jj++) {
+            const int j = closed && t < SOAK_FLIP_MAX_TRIS && flip[t] && jj > 0 ? 3 - jj : jj;
             const float *v = l->verts + (size_t)(p->first_vert + l->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
             dv3 lv = v3((double)v[0] * sc.x, (double)v[1] * sc.y, (double)v[2] * sc.z);
             dv3 wv = v_add(pos, q_rot(q, lv));
-            w->v[j][0] = wv.x; w->v[j][1] = wv.y; w->v[j][2] = wv.z;
+            w->v[jj][0] = wv.x; w->v[jj][1] = wv.y; w->v[jj][2] = wv.z;
         }
         wtri_bound(w);
         w->mask = p->inst.write_mask;

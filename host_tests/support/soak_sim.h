@@ -191,6 +191,11 @@ void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule
  *  tri_out: index in lvl->wtris; raw_out: the raw depth of that triangle. */
 double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
                              const soak_capsule_t *cap, int32_t *tri_out, double *raw_out);
+/** True when p lies inside a closed static solid (a piece whose every edge is shared
+ *  once reversed: boxes, tile fields, stair blocks), by the signed crossings of two rays
+ *  with its seen triangles. A capsule whose centre is inside one and that overlaps none of
+ *  its faces is wholly in it: in geometry, though no face is within its radius. */
+bool soak_check_inside_closed(const soak_level_t *lvl, const char_body_settings_t *s, const double p[3]);
 /** Deepest penetration of cap into a seen static collider body (sphere, capsule, box; exact
  *  in double; cylinders are skipped); 0 when none. Reported, not a failure. */
 double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap);
@@ -241,6 +246,8 @@ const char *soak_fail_name(int kind);
 typedef struct {
     uint64_t frames, hard[SOAK_FAIL_COUNT];
     uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
+    uint64_t inside_frames;       ///< oracle failures withheld: the step started or ended wholly
+                                  ///< inside a closed solid
     uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
     uint64_t excused_escapes;     ///< left the room while recovering from an excused overlap
     uint64_t on_floor_frames, steep_frames;
