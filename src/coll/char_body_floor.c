@@ -753,9 +753,17 @@ static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
     }
     /* a piece's edge, not a face: the ball resting on a face (a rolling terrain's next
      * triangle in a concave spot, everywhere on Jolt's heightfield: the pass and the full
-     * rule there cost 14 % of the scene and found nothing) is no tile's corner */
+     * rule there cost 14 % of the scene and found nothing) is no tile's corner. Unless
+     * that face is walkable, above the step zone and of another piece than the floor: the
+     * body walked (dt 0.12) into a narrow crack between two tiles 67 mm high beside a
+     * triangle soup, the ball's first contact a soup face 0.55 m up (54 degrees off up,
+     * walkable to 63), and the foot stood on the floor in the crack, 67 mm under the tiles
+     * (soak s17 l53). */
     fm_vec3_t fn;
-    if (coll_cb_face_normal(edge, &fn)) return false;
+    if (coll_cb_face_normal(edge, &fn) &&
+        !(v3_dot(rel, up) > c->step && edge->instance != under->instance &&
+          v3_dot(fn, up) >= c->body->cos_floor_max_angle))
+        return false;
     return piece_beyond_at(c, pos, edge, under, 0.02f);
 }
 
