@@ -858,6 +858,42 @@ static void test_oracle_footing_ridge_of_the_floor_under_the_foot(void)
     TEST_ASSERT_DOUBLE_WITHIN(2e-4, 0.00825, soak_check_footing(&lvl, s, p));
 }
 
+/* s16 l147: a tile's top as two triangles, the foot 8 mm beside its edge, a slope's corner
+ * on the other side. The second triangle's closest point (the tile's corner, 0.12 m across)
+ * is no closest point of the tile's top: it made a surround the edge alone does not. */
+static void test_oracle_footing_split_face_is_one_contact(void)
+{
+    static soak_frame_t fr[8];
+    soak_replay_t rp;
+    memset(&rp, 0, sizeof rp);
+    rp.frames = fr;
+    rp.cap = 8;
+    int line = 0;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s16_l147_footing.replay", &rp, &line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    const char_body_settings_t *s = &rp.settings;
+    const fm_vec3_t p = V(-0x1.053416p+4f, 0x1p-27f, 0x1.21bc16p+4f); /* main's body, frame 1 (43.07 mm before) */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
+    /* the tile top's triangle beyond the diagonal hidden (both copies of the piece): the edge
+     * and the slope's corner alone, the same answer */
+    uint32_t hidden = 0;
+    for (uint32_t i = 0; i < lvl.nwtris; i++) {
+        soak_wtri_t *w = &lvl.wtris[i];
+        bool top = true, corner = false, far = false;
+        for (int v = 0; v < 3; v++) {
+            top = top && fabs(w->v[v][1] - 0.0477) < 1e-4;
+            corner = corner || (fabs(w->v[v][0] + 16.4440) < 1e-3 && fabs(w->v[v][2] - 18.1204) < 1e-3);
+            far = far || (fabs(w->v[v][0] + 16.3976) < 1e-3 && fabs(w->v[v][2] - 19.3653) < 1e-3);
+        }
+        if (top && corner && far) {
+            w->mask = 0;
+            hidden++;
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32(2, hidden);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -1179,6 +1215,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
     RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
     RUN_TEST(test_checker_inside_a_closed_solid);
+    RUN_TEST(test_oracle_footing_split_face_is_one_contact);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

@@ -471,6 +471,33 @@ static bool contacts_on_one_ledge(const soak_level_t *lvl, const double e1[3], c
     return widest > M_PI + SOAK_LEDGE_GAP;
 }
 
+/* Footing, case 2: the contact c (the point of walkable triangle w, plane normal n, closest
+ * to the ball's centre bc) is no closest point of the face w is part of: another seen
+ * triangle in w's plane contains c and has a point closer to bc (strictly; a triangle is
+ * convex, so the distance falls from c into it: c is no local minimum of the face's
+ * distance). A face split into triangles touches the ball where the face is closest, not
+ * at a diagonal's end: a tile's top as two triangles, the foot 8 mm beside its edge, the
+ * second triangle's closest point was the tile's corner 0.12 m across, and with a slope's
+ * corner on the other side it completed a surround the tile's edge alone does not make
+ * (soak s16 l147: 43 mm). Identical copies (a duplicated piece) are no closer: kept. */
+static bool coplanar_closer(const soak_level_t *lvl, const char_body_settings_t *s, const double up[3],
+                            const soak_wtri_t *w, const double n[3], const double c[3], const double bc[3], double r)
+{
+    const double dc = dist3(c, bc), off = dot3(n, w->v[0]);
+    for (uint32_t j = 0; j < lvl->nwtris; j++) {
+        const soak_wtri_t *o = &lvl->wtris[j];
+        if (o == w || !tri_seen(o->mask, s) || dist3(bc, o->c) > o->rad + r) continue;
+        double on[3], allow;
+        if (!tri_walkable(o, s, up, on, &allow) || inside_face(o, up)) continue;
+        if (!(fabs(dot3(n, on)) > 1 - 1e-9) || !(fabs(dot3(n, o->v[0]) - off) < 1e-6)) continue;
+        if (!(pt_tri_dist(c, o) < 1e-9)) continue;
+        double q[3];
+        closest_pt_tri(q, bc, o->v[0], o->v[1], o->v[2]);
+        if (dist3(q, bc) < dc - 1e-9) return true;
+    }
+    return false;
+}
+
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
 {
     soak_footing_tri = soak_footing_tri2 = -1;
@@ -594,6 +621,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         bool floors = false; /* touches the ball where the floor under the foot does (above) */
         for (int k = 0; k < nf && !floors; k++) floors = dist3(c, fpt[k]) < 1e-9;
         if (floors) continue;
+        if (coplanar_closer(lvl, s, up, w, n, c, bc, r)) continue;
         sub3(d, bc, w->v[0]);
         if (dot3(n, d) <= 0) continue; /* ball centre below its plane: not resting on it */
         sub3(d, c, bc);

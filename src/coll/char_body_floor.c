@@ -340,9 +340,24 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                                       d1 * n1u <= cb_len_tol(c, CB_MARGIN) && steep_face(c, &h1));
     for (int k = 0; k < (over_floor ? 2 : 1) && slide && n1u < b->cos_floor_max_angle; k++) {
         const coll_sweep_hit_t h0 = h1;
-        const float d0 = d1;
+        const float d0 = d1, n0u = n1u;
+        const fm_vec3_t b0_0 = b0;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
+        /* Over a floor, the slide past a steep contact ran into a wall beside the ball (a
+         * face along up): the wall stops it, the ball stays on that contact and the roll
+         * below decides (it rolls on along a wall). In a crack 1.13 m wide between two
+         * blocks 0.44 m high (r 0.86, floor angle 40.6 degrees) both edges hold the ball
+         * 41.4 degrees off up, steeper than walkable; at the crack's mouth against the room
+         * wall the slide off one edge met the wall, the rule gave up, and the foot stood on
+         * the floor in the crack, 221 mm under the ball resting on both (soak s15 l315). */
+        if (over_floor && !(n1u > 0.02f) && n1u > -0.1f && steep_face(c, &h1)) {
+            h1 = h0;
+            d1 = d0;
+            n1u = n0u;
+            b0 = b0_0;
+            break;
+        }
         if (!(n1u > 0.02f)) return false;
         /* Over a floor, slid down past a higher piece's edge (not a wall face) onto a
          * walkable face leaning back towards it, within half a radius of descent and a
@@ -738,9 +753,17 @@ static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
     }
     /* a piece's edge, not a face: the ball resting on a face (a rolling terrain's next
      * triangle in a concave spot, everywhere on Jolt's heightfield: the pass and the full
-     * rule there cost 14 % of the scene and found nothing) is no tile's corner */
+     * rule there cost 14 % of the scene and found nothing) is no tile's corner. Unless
+     * that face is walkable, above the step zone and of another piece than the floor: the
+     * body walked (dt 0.12) into a narrow crack between two tiles 67 mm high beside a
+     * triangle soup, the ball's first contact a soup face 0.55 m up (54 degrees off up,
+     * walkable to 63), and the foot stood on the floor in the crack, 67 mm under the tiles
+     * (soak s17 l53). */
     fm_vec3_t fn;
-    if (coll_cb_face_normal(edge, &fn)) return false;
+    if (coll_cb_face_normal(edge, &fn) &&
+        !(v3_dot(rel, up) > c->step && edge->instance != under->instance &&
+          v3_dot(fn, up) >= c->body->cos_floor_max_angle))
+        return false;
     return piece_beyond_at(c, pos, edge, under, 0.02f);
 }
 
