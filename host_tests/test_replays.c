@@ -333,6 +333,23 @@ static void test_oracle_progress_wall_end_between_samples(void)
     TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(0, 0, 0), V(4.0f, 0, 0)));
 }
 
+/* The ball resting on a 19 mm edge 0.1255 m beside the foot (14.5 degrees off up), the foot
+ * 3 mm over the floor under it (soak s17 l7: step 0, r 0.84, an 11 degree contact, 58 %;
+ * s18 l352: held by a crack's edge 4.6 mm over the lower floor, 89.8 %). The capsule raised
+ * by 1 cm clears the edge by 9.7 mm, the one lowered by 2 mm meets it: the edge passed for
+ * the floor. The floor under the foot must be the one the lowered capsule meets: no
+ * verdict; on the floor itself the verdict stands. */
+static void test_oracle_progress_foot_held_over_the_floor(void)
+{
+    oracle_setup(SOAK_FAIL_PROGRESS);
+    const char_body_settings_t *s = &osim.body.settings;
+    const double q[2][4][3] = {{{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}},
+                               {{0.1255, 0.019, -5}, {5, 0.019, -5}, {5, 0.019, 5}, {0.1255, 0.019, 5}}};
+    checker_two_quads(q);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(0, 0.003f, 0), V(0, 0, 0.0333f)));
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-1.0f, 0, 0), V(0, 0, 0.0333f)));
+}
+
 /* Two floor quads at y = 0 with a gap between x = a and x = b (a < b). */
 static void two_floors(double a, double b, int both)
 {
@@ -1227,6 +1244,7 @@ int main(void)
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_progress_at_a_ramp_crest);
     RUN_TEST(test_oracle_progress_wall_end_between_samples);
+    RUN_TEST(test_oracle_progress_foot_held_over_the_floor);
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);

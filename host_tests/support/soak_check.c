@@ -787,7 +787,12 @@ bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s
             double d[3];
             sub3(d, w->v[0], f);
             double tt = dot3(nn, d) / dot3(nn, up);
-            if (!(tt >= -0.005 && tt <= 0.005)) continue;
+            /* the floor holding the foot: within the 2 mm the lowered capsule went, not
+             * farther below (the lowered capsule met something else: a 19 mm edge the
+             * ball of a step-0 body rests on, 3 mm over the floor under the foot, which
+             * the raised capsule clears by 10.8 mm, its contact normal 11 degrees off up;
+             * walking into it is climbing it, soak s17 l7: 58 %) */
+            if (!(tt >= -1e-6 && tt <= 0.005)) continue;
             double x[3] = {f[0] + up[0] * tt, f[1] + up[1] * tt, f[2] + up[2] * tt};
             /* tilted no more than the progress oracle's share allows: walking follows a
              * walkable slope, covering cos(tilt) of the input across up (a ramp's crest
