@@ -312,6 +312,44 @@ static void test_oracle_progress_at_a_ramp_crest(void)
     TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-1.0f, (float)(-1.0 * t3), 0), V(0, 0, 0.0333f))); /* across it */
 }
 
+/* A thin wall's end poking into the way between two of the checker's samples (every half
+ * radius at most): the capsule grazes it, the samples either side are 13 mm clear of it
+ * (soak s18 l426: a 2.67 m step, samples 0.33 m apart, max_slides 1 stopped at the wall's
+ * end, 79 %). The capsule swept along the whole way sees it: no verdict. 20 mm clear of the
+ * way, the verdict stands. */
+static void test_oracle_progress_wall_end_between_samples(void)
+{
+    oracle_setup(SOAK_FAIL_PROGRESS);
+    const char_body_settings_t *s = &osim.body.settings;
+    /* 4 m along x: 17 samples 0.2353 m apart; the wall at x = 4.5 / 17 between the 5th and 6th */
+    const double x = 4.5 * 4.0 / 17.0;
+    const double q[2][4][3] = {{{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}},
+                               {{x, 0, 0.4995}, {x, 0, 3}, {x, 2, 3}, {x, 2, 0.4995}}};
+    checker_two_quads(q);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(0, 0, 0), V(4.0f, 0, 0)));
+    const double q2[2][4][3] = {{{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}},
+                                {{x, 0, 0.52}, {x, 0, 3}, {x, 2, 3}, {x, 2, 0.52}}};
+    checker_two_quads(q2);
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(0, 0, 0), V(4.0f, 0, 0)));
+}
+
+/* The ball resting on a 19 mm edge 0.1255 m beside the foot (14.5 degrees off up), the foot
+ * 3 mm over the floor under it (soak s17 l7: step 0, r 0.84, an 11 degree contact, 58 %;
+ * s18 l352: held by a crack's edge 4.6 mm over the lower floor, 89.8 %). The capsule raised
+ * by 1 cm clears the edge by 9.7 mm, the one lowered by 2 mm meets it: the edge passed for
+ * the floor. The floor under the foot must be the one the lowered capsule meets: no
+ * verdict; on the floor itself the verdict stands. */
+static void test_oracle_progress_foot_held_over_the_floor(void)
+{
+    oracle_setup(SOAK_FAIL_PROGRESS);
+    const char_body_settings_t *s = &osim.body.settings;
+    const double q[2][4][3] = {{{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}},
+                               {{0.1255, 0.019, -5}, {5, 0.019, -5}, {5, 0.019, 5}, {0.1255, 0.019, 5}}};
+    checker_two_quads(q);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, s, V(0, 0.003f, 0), V(0, 0, 0.0333f)));
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-1.0f, 0, 0), V(0, 0, 0.0333f)));
+}
+
 /* Two floor quads at y = 0 with a gap between x = a and x = b (a < b). */
 static void two_floors(double a, double b, int both)
 {
@@ -1205,6 +1243,8 @@ int main(void)
     RUN_TEST(test_oracle_direction);
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_progress_at_a_ramp_crest);
+    RUN_TEST(test_oracle_progress_wall_end_between_samples);
+    RUN_TEST(test_oracle_progress_foot_held_over_the_floor);
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
