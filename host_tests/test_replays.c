@@ -431,6 +431,45 @@ static void top_quad(double x0, double x1, double z0, double z1, double y)
     }
 }
 
+/* A slope whose angle is within the checker's cosine tolerance (1e-4) of the floor angle:
+ * the body may judge it steep (float), and then stands on it steep with its step zone in
+ * it, the sweep capsule resting on it (soak s17 l209: 29.810 degrees, floor angle 29.8,
+ * the foot 34.5 mm inside). Footing fails such a foot only for a body that claims a
+ * walkable floor; a body on a steep surface fails it only on a face clearly walkable. */
+static void slope_quad(double deg)
+{
+    double t = tan(deg * 3.14159265358979323846 / 180.0);
+    tops_begin();
+    const double c[4][3] = {{-3, -3 * t, -3}, {3, 3 * t, -3}, {3, 3 * t, 3}, {-3, -3 * t, 3}};
+    for (int k = 0; k < 2; k++) {
+        soak_wtri_t *w = &lvl.wtris[lvl.nwtris++];
+        memcpy(w->v[0], c[0], sizeof w->v[0]);
+        memcpy(w->v[1], c[k ? 2 : 1], sizeof w->v[0]);
+        memcpy(w->v[2], c[k ? 3 : 2], sizeof w->v[0]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+        w->rad = 10; w->mask = 1;
+    }
+}
+
+static void test_oracle_footing_steep_within_the_angle_tolerance(void)
+{
+    char_body_t *b = oracle_setup(SOAK_FAIL_FOOTING);
+    const double lim = (double)b->settings.floor_max_angle * 57.29577951308232;
+    fm_vec3_t z = V(0, 0, 0), in = V(0, -0.03f, 0); /* the foot 30 mm under the slope's plane at x 0 */
+    /* 0.005 degrees steeper than the floor angle: walkable for the checker's tolerance */
+    slope_quad(lim + 0.005);
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, &b->settings, in) > 0.02);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing_steep(&lvl, &b->settings, in));
+    b->flags = CB_FLAG_GROUNDED; /* claims a walkable floor: fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, in, z, z, true, false, false));
+    b->flags = CB_FLAG_GROUNDED | CB_FLAG_STEEP; /* judged it steep: no failure */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, in, z, z, true, false, false));
+    /* a face 0.5 degrees under the floor angle is walkable however the body judged it */
+    slope_quad(lim - 0.5);
+    TEST_ASSERT_TRUE(soak_check_footing_steep(&lvl, &b->settings, in) > 0.02);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, in, z, z, true, false, false));
+}
+
 /* Crack, slot or hole: the overlapped edges must surround the foot across up. Two block
  * corners 122 degrees apart beside open floor (soak seed 1 levels 5, 47, 49, 66, 69) do
  * not hold the ball, which rolls off between them onto the floor: the body standing on
@@ -1248,6 +1287,7 @@ int main(void)
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
+    RUN_TEST(test_oracle_footing_steep_within_the_angle_tolerance);
     RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);

@@ -371,12 +371,18 @@ static bool tri_normal_up(const soak_wtri_t *w, const double up[3], double n[3])
 /* Walkable (collision is double-sided: either face) and the seed's slope allowance of the
  * sweep capsule's bottom ball, as a height along up (0 on flat floors or when the seed's
  * rule holds). */
+/* The cosine tolerance of tri_walkable: a face within 1e-4 of the floor angle's cosine is
+ * walkable for the checker, either way of it, since the body's float may judge it either
+ * way. soak_check_footing_steep turns it round (-1e-4) for a body that judged the face
+ * it stands on steep: a face in that band is then steep for the footing too. */
+static double walk_cos_tol = 1e-4;
+
 static bool tri_walkable(const soak_wtri_t *w, const char_body_settings_t *s, const double up[3], double n[3],
                          double *allow_up)
 {
     if (!tri_normal_up(w, up, n)) return false;
     double cs = dot3(n, up);
-    if (cs < cos((double)s->floor_max_angle) - 1e-4) return false;
+    if (cs < cos((double)s->floor_max_angle) - walk_cos_tol) return false;
     double a = (double)s->radius - ((double)s->radius + s->step_height) * cs;
     *allow_up = a > 0 ? a / cs : 0;
     return true;
@@ -496,6 +502,20 @@ static bool coplanar_closer(const soak_level_t *lvl, const char_body_settings_t 
         if (dist3(q, bc) < dc - 1e-9) return true;
     }
     return false;
+}
+
+/* Footing of a body grounded on a steep surface: a face the body judged steep (its slope
+ * within the float's reach of the floor angle, so the checker's tolerance counted it
+ * walkable) is steep here too, and the foot resting with its step zone in it (the sweep
+ * capsule on the face) is no footing failure: soak s17 l209, a face 29.810 degrees off up
+ * for a floor angle of 29.8 (cosines 8.9e-5 apart), the foot 34.5 mm inside it. A face
+ * clearly walkable (beyond the band) is judged as for any grounded body. */
+double soak_check_footing_steep(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
+{
+    walk_cos_tol = -1e-4;
+    double ex = soak_check_footing(lvl, s, owner);
+    walk_cos_tol = 1e-4;
+    return ex;
 }
 
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)

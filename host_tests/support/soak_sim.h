@@ -312,6 +312,9 @@ int  soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m);
 /** Footing: how far (m) the foot is below the walkable surface under it beyond the
  *  tolerated sag (0 when not below); the oracle fails above SOAK_FOOT_TOL. */
 double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
+/** soak_check_footing for a body grounded on a steep surface: faces within the checker's
+ *  cosine tolerance of the floor angle (1e-4) count as steep, as the body judged them. */
+double soak_check_footing_steep(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
 extern int32_t soak_footing_tri; ///< triangle (lvl->wtris index) behind the last footing result, -1: none
 extern int32_t soak_footing_tri2; ///< the other triangle of its crack pair (case 2), -1: the surface under the foot
 extern int soak_footing_ncontacts; ///< contacts around the foot of that crack, 0: the surface under the foot

@@ -1196,8 +1196,26 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     }
                     float g2 = under.distance + past - above;
                     if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
-                        if (g2 < -step_eps)
+                        if (g2 < -step_eps) {
                             s = (support_t){true, false, g2, under.normal, under.point, under.id, under.instance};
+                            /* A walkable face at the steep face's low edge, level with it
+                             * within the skin (a tile whose top meets a slope's bottom):
+                             * the look past the face started under it. The first face met
+                             * from the floor found up to the steep hit is the floor there,
+                             * not the one under it (soak s18 l121: a walking step stood on
+                             * the room floor 56 mm under the tile's top). */
+                            coll_ray_hit_t top;
+                            const float len = under.distance + 2.0f * c->skin - step_eps;
+                            if (len > 0.0f &&
+                                cb_ray(c, v3_madd(under.point, up, step_eps), up, len, &top) &&
+                                v3_finite(top.normal) && v3_finite(top.point) && isfinite(top.distance) &&
+                                top.distance > 0.0f && -v3_dot(top.normal, up) >= b->cos_floor_max_angle) {
+                                float g3 = g2 - step_eps - top.distance;
+                                if (g3 < -step_eps)
+                                    s = (support_t){true, false, g3, v3_scale(top.normal, -1.0f), top.point, top.id,
+                                                    top.instance};
+                            }
+                        }
                         break;
                     }
                     past += under.distance + c->skin; /* another steep face (a slab's underside) */
