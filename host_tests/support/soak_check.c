@@ -293,16 +293,18 @@ double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *
     return best;
 }
 
-double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
+/* Nearest of the level's static and moving triangles seen by s to a shape within `half` of
+ * `mid` (the bound that skips far triangles), by dist(triangle, ctx). */
+typedef double (*tri_dist_fn)(const double *t0, const double *t1, const double *t2, const void *ctx);
+static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3], double half,
+                          tri_dist_fn dist, const void *ctx)
 {
-    double best = 1e300; /* segment distance */
-    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
-    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+    double best = 1e300;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
         const soak_wtri_t *w = &lvl->wtris[i];
         if (!tri_seen(w->mask, s)) continue;
         if (dist3(mid, w->c) - half - w->rad > best) continue;
-        double d = soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
+        double d = dist(w->v[0], w->v[1], w->v[2], ctx);
         if (d < best) best = d;
     }
     for (uint32_t i = 0; i < lvl->npieces; i++) {
@@ -320,10 +322,24 @@ double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s
                 double l3[3] = {lv[0], lv[1], lv[2]};
                 xf_point(v[j], &p->inst.xf, l3);
             }
-            double d = soak_seg_tri_dist(cap->a, cap->b, v[0], v[1], v[2]);
+            double d = dist(v[0], v[1], v[2], ctx);
             if (d < best) best = d;
         }
     }
+    return best;
+}
+
+static double seg_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
+{
+    const soak_capsule_t *cap = ctx;
+    return soak_seg_tri_dist(cap->a, cap->b, t0, t1, t2);
+}
+
+double soak_check_nearest(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
+{
+    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
+    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+    double best = nearest_tri(lvl, s, mid, half, seg_dist_cb, cap); /* segment distance */
     if (s->coll_types & COLL_TYPE_BODY) {
         for (uint32_t i = 0; i < lvl->nbodies; i++) {
             const soak_lbody_t *lb = &lvl->bodies[i];
@@ -727,6 +743,11 @@ static double tri_quad_dist(const double *t0, const double *t1, const double *t2
     return best;
 }
 
+static double quad_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
+{
+    return tri_quad_dist(t0, t1, t2, (double (*)[3])ctx);
+}
+
 /* Nearest static or moving triangle to the capsule cap swept along D (m, minus the radius):
  * the swept capsule is the parallelogram of its segment along D grown by the radius. The
  * samples along the way alone (every half radius) miss what pokes in between two of them:
@@ -743,34 +764,7 @@ static double swept_nearest(const soak_level_t *lvl, const char_body_settings_t 
         mid[k] = (cap->a[k] + cap->b[k] + D[k]) * 0.5;
     }
     double half = 0.5 * (dist3(cap->a, cap->b) + sqrt(dot3(D, D)));
-    double best = 1e300;
-    for (uint32_t i = 0; i < lvl->nwtris; i++) {
-        const soak_wtri_t *w = &lvl->wtris[i];
-        if (!tri_seen(w->mask, s)) continue;
-        if (dist3(mid, w->c) - half - w->rad > best) continue;
-        double d = tri_quad_dist(w->v[0], w->v[1], w->v[2], q);
-        if (d < best) best = d;
-    }
-    for (uint32_t i = 0; i < lvl->npieces; i++) {
-        const soak_piece_t *p = &lvl->pieces[i];
-        if (!p->moving || !tri_seen(p->inst.write_mask, s)) continue;
-        double pc[3] = {p->inst.xf.pos.x, p->inst.xf.pos.y, p->inst.xf.pos.z};
-        double sc = fabs(p->inst.xf.scale.x);
-        if (fabs(p->inst.xf.scale.y) > sc) sc = fabs(p->inst.xf.scale.y);
-        if (fabs(p->inst.xf.scale.z) > sc) sc = fabs(p->inst.xf.scale.z);
-        if (dist3(mid, pc) - half - p->bound_radius * sc * 1.001 > best) continue;
-        for (uint32_t t = 0; t < p->ntris; t++) {
-            double v[3][3];
-            for (int j = 0; j < 3; j++) {
-                const float *lv = lvl->verts + (size_t)(p->first_vert + lvl->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
-                double l3[3] = {lv[0], lv[1], lv[2]};
-                xf_point(v[j], &p->inst.xf, l3);
-            }
-            double d = tri_quad_dist(v[0], v[1], v[2], q);
-            if (d < best) best = d;
-        }
-    }
-    return best - cap->r;
+    return nearest_tri(lvl, s, mid, half, quad_dist_cb, q) - cap->r;
 }
 
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp)
