@@ -779,6 +779,16 @@ static void test_oracle_footing_out_held_by_the_slope_under_the_foot(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, pr));
 }
 
+/* Reads a stored replay into rp (its frames into fr[cap]) and generates its level into lvl. */
+static void replay_and_level(const char *path, soak_replay_t *rp, soak_frame_t *fr, uint32_t cap, int *line)
+{
+    memset(rp, 0, sizeof *rp);
+    rp->frames = fr;
+    rp->cap = cap;
+    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(path, rp, line));
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp->level_seed, rp->gen));
+}
+
 /* The footing oracle and the inside of a closed solid (soak seed 4 level 20: up 48 degrees
  * off vertical, r 0.1865, a field of tiles 0.22 m high on the room floor, both steep for
  * this up). The body's foot in a crossing of cracks between four tiles: the line along up
@@ -792,12 +802,8 @@ static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
 {
     static soak_frame_t fr[4];
     soak_replay_t rp;
-    memset(&rp, 0, sizeof rp);
-    rp.frames = fr;
-    rp.cap = 4;
     int line = 0;
-    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s4_l20_footing.replay", &rp, &line));
-    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    replay_and_level(REPLAY_DIR "/soak_s4_l20_footing.replay", &rp, fr, 4, &line);
     const char_body_settings_t *s = &rp.settings;
     const fm_vec3_t sunk = V(-0x1.187be8p+4f, -0x1.1ab874p-1f, -0x1.7a0e74p+4f); /* main's body */
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00314, soak_check_footing(&lvl, s, sunk));
@@ -829,12 +835,8 @@ static void test_checker_inside_a_closed_solid(void)
 {
     static soak_frame_t fr[8];
     soak_replay_t rp;
-    memset(&rp, 0, sizeof rp);
-    rp.frames = fr;
-    rp.cap = 8;
     int line = 0;
-    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s4_l325b_footing.replay", &rp, &line));
-    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    replay_and_level(REPLAY_DIR "/soak_s4_l325b_footing.replay", &rp, fr, 8, &line);
     const char_body_settings_t *s = &rp.settings;
     soak_capsule_t full, sweep;
     const fm_vec3_t in = V(-0x1.a489bep+1f, 0x1.18cf3cp+2f, 0x1.99074ap+0f); /* the body after the teleport */
@@ -909,12 +911,8 @@ static void test_oracle_footing_ridge_of_the_floor_under_the_foot(void)
 {
     static soak_frame_t fr[8];
     soak_replay_t rp;
-    memset(&rp, 0, sizeof rp);
-    rp.frames = fr;
-    rp.cap = 8;
     int line = 0;
-    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s10_l402_footing.replay", &rp, &line));
-    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    replay_and_level(REPLAY_DIR "/soak_s10_l402_footing.replay", &rp, fr, 8, &line);
     const char_body_settings_t *s = &rp.settings;
     const fm_vec3_t p = V(-0x1.c1ab42p+0f, 0x1.f0c6cep+0f, 0x1.de40cp-1f); /* main's body, frame 3 */
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
@@ -942,12 +940,8 @@ static void test_oracle_footing_split_face_is_one_contact(void)
 {
     static soak_frame_t fr[8];
     soak_replay_t rp;
-    memset(&rp, 0, sizeof rp);
-    rp.frames = fr;
-    rp.cap = 8;
     int line = 0;
-    TEST_ASSERT_EQUAL_INT(0, soak_replay_read(REPLAY_DIR "/soak_s16_l147_footing.replay", &rp, &line));
-    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    replay_and_level(REPLAY_DIR "/soak_s16_l147_footing.replay", &rp, fr, 8, &line);
     const char_body_settings_t *s = &rp.settings;
     const fm_vec3_t p = V(-0x1.053416p+4f, 0x1p-27f, 0x1.21bc16p+4f); /* main's body, frame 1 (43.07 mm before) */
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
