@@ -866,7 +866,7 @@ static void test_checker_inside_a_closed_solid(void)
     osim.body.floor_normal = V(0, 1, 0);
     const fm_vec3_t z = V(0, 0, 0);
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, in, z, z, true, false, false));
-    TEST_ASSERT_EQUAL_UINT64(1, osim.st.inside_frames);
+    TEST_ASSERT_TRUE(osim.st.inside_frames == 1); /* (no 64-bit asserts: Unity on MIPS has them off) */
     const fm_vec3_t out = V(in.x, in.y, in.z - 0.25f);
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, out, z, z, true, false, false));
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(out, out, z, z, true, false, false));
