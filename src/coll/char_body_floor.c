@@ -193,9 +193,6 @@ static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
               f_min(f_max(o.z, t->lo.z), t->hi.z));
 }
 
-/** Contacts ball_in_hole looks at (the deepest kept). */
-#define CB_HOLE_CONTACTS 16
-
 /**
  * The crack rule's ball held in a hole between three or more pieces (tile corners around a
  * gap, blocks of different heights): its roll from the first contact meets nothing, or
@@ -239,13 +236,9 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
         }
         if (!beyond) return false;
     }
-    coll_contact_t ct[CB_HOLE_CONTACTS];
-    uint32_t n;
-    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, up, reach, 0.0f, ct, CB_HOLE_CONTACTS);
-    else n = coll_capsule_overlaps(c->scene, bc, up, reach, 0.0f, c->body->settings.read_mask,
-                                   c->body->settings.coll_types, ct, CB_HOLE_CONTACTS);
-    if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
-    fm_vec3_t dir[CB_HOLE_CONTACTS + 1];
+    coll_contact_t ct[CB_BALL_CONTACTS];
+    const uint32_t n = cb_ball_overlaps(c, bc, reach, ct);
+    fm_vec3_t dir[CB_BALL_CONTACTS + 1];
     uint32_t m = 0;
     /* the contact the ball rests on (ball_held's first): lowered half a radius below it,
      * the ball meets a taller piece's edge it first touched on that piece's side, its
@@ -952,13 +945,9 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
     const float r = c->radius, nu = v3_dot(hit->normal, c->up);
     if (!((r + gap) * nu - r < c->contact_eps)) return false; /* the ball over the floor's plane */
     /* and it touches that floor (a wall the ball's side is in may be deeper: overlaps) */
-    coll_contact_t ct[CB_HOLE_CONTACTS];
+    coll_contact_t ct[CB_BALL_CONTACTS];
     const fm_vec3_t bc = v3_madd(cb_foot(c, pos), c->up, r);
-    uint32_t n;
-    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, c->up, r + c->contact_eps, 0.0f, ct, CB_HOLE_CONTACTS);
-    else n = coll_capsule_overlaps(c->scene, bc, c->up, r + c->contact_eps, 0.0f, b->settings.read_mask,
-                                   b->settings.coll_types, ct, CB_HOLE_CONTACTS);
-    if (n > CB_HOLE_CONTACTS) n = CB_HOLE_CONTACTS;
+    const uint32_t n = cb_ball_overlaps(c, bc, r + c->contact_eps, ct);
     for (uint32_t i = 0; i < n; i++)
         if (v3_finite(ct[i].normal) && v3_dot(ct[i].normal, hit->normal) > 0.999f) return true;
     return false;

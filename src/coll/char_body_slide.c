@@ -505,9 +505,6 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         c->ev->step += v3_dot(v3_sub(*pos, slid), c->up); /* a stair step redone: its height as done */
 }
 
-/** Contacts foot_ball_rests looks at (the deepest kept). */
-#define CB_REST_CONTACTS 16
-
 /** Contacts of the sweep capsule at pos (at most CB_MAX_CONTACTS). */
 static uint32_t overlaps_at(const cb_ctx_t *c, fm_vec3_t pos, coll_contact_t *ct)
 {
@@ -742,12 +739,8 @@ static bool foot_ball_rests(const cb_ctx_t *c, fm_vec3_t pos)
 {
     const char_body_t *b = c->body;
     const fm_vec3_t up = c->up, bc = v3_madd(cb_foot(c, pos), up, c->radius);
-    coll_contact_t ct[CB_REST_CONTACTS];
-    uint32_t n;
-    if (c->gather) n = coll_gather_capsule_overlaps(c->gather, bc, up, c->radius + c->contact_eps, 0.0f, ct, CB_REST_CONTACTS);
-    else n = coll_capsule_overlaps(c->scene, bc, up, c->radius + c->contact_eps, 0.0f, b->settings.read_mask,
-                                   b->settings.coll_types, ct, CB_REST_CONTACTS);
-    if (n > CB_REST_CONTACTS) n = CB_REST_CONTACTS;
+    coll_contact_t ct[CB_BALL_CONTACTS];
+    const uint32_t n = cb_ball_overlaps(c, bc, c->radius + c->contact_eps, ct);
     for (uint32_t i = 0; i < n; i++) {
         const fm_vec3_t d = v3_sub(bc, ct[i].point);
         const float du = v3_dot(d, up);
