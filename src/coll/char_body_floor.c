@@ -737,7 +737,8 @@ static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
      * and the foot stood on the floor 156 mm under the ball (soak s14 l37). A staircase's
      * nosings ahead of a body climbing it are edges of the piece it stands on (one mesh):
      * not looked at (the pass on every second step of the bench's real stairs: +0.64 %). */
-    if (!(v3_dot(rel, up) > c->step) || edge->instance == under->instance) {
+    const bool other_piece_above = v3_dot(rel, up) > c->step && edge->instance != under->instance;
+    if (!other_piece_above) {
         if (v3_dot(rel, c->body->velocity) > 0.0f) return false;
         /* the foot's floor a radius beyond the edge lies below the ray's end (tilted against up) */
         const fm_vec3_t side = v3_norm(v3_reject(edge->normal, up));
@@ -753,9 +754,7 @@ static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
      * walkable to 63), and the foot stood on the floor in the crack, 67 mm under the tiles
      * (soak s17 l53). */
     fm_vec3_t fn;
-    if (coll_cb_face_normal(edge, &fn) &&
-        !(v3_dot(rel, up) > c->step && edge->instance != under->instance &&
-          v3_dot(fn, up) >= c->body->cos_floor_max_angle))
+    if (coll_cb_face_normal(edge, &fn) && !(other_piece_above && v3_dot(fn, up) >= c->body->cos_floor_max_angle))
         return false;
     return piece_beyond_at(c, pos, edge, under, 0.02f);
 }
