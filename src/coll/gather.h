@@ -123,6 +123,7 @@ typedef struct {
     uint8_t n;
     uint8_t clear[COLL_GATHER_MEMO_MAX]; ///< indices into g->tris
 } coll_gather_memo_t;
+_Static_assert(COLL_GATHER_MAX <= 256, "coll_gather_memo_t stores gathered-triangle indices in a byte");
 
 /* The bits of a and b are the same (not ==: -0 and 0 differ, and may round apart later). */
 static inline bool coll_same_bits(float a, float b)
