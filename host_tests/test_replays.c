@@ -965,6 +965,52 @@ static void test_oracle_footing_split_face_is_one_contact(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing(&lvl, s, p));
 }
 
+/* s17 l182: a V valley (38 and 41 degree slopes, a 0.14 m slot) under a copy of itself
+ * rotated a few degrees (r 0.98, step 0.9). The foot stands on the copy's near slope
+ * 5 cm from its bottom edge, over the original's slot, in the slope quad's triangle 624;
+ * the ball (at foot + r) overlaps that triangle so that a raise of 0.181 m clears it, the
+ * quad's other triangle 625 (0.6 m uphill, where the ball touches the slope's plane) so
+ * that 0.268 m does, and the original's far slope (0.230 m) and near slope (0.166 m). The
+ * surface under the foot is the quad, not its triangle 624: raised onto it, the ball rests
+ * on it alone, clear of both of the original's slopes (the body's first look finds the
+ * same). The oracle out-held them by 624 only and failed the body as a crack (166 mm);
+ * with the quad split along its other diagonal it passed. Below the slope, or with the
+ * quad (or its triangle 625) hidden, the ball hangs in the original's V: still fails. */
+static void test_oracle_footing_out_held_by_the_whole_slope_quad(void)
+{
+    static soak_frame_t fr[4];
+    soak_replay_t rp;
+    int line = 0;
+    replay_and_level(REPLAY_DIR "/soak_s17_l182_footing.replay", &rp, fr, 4, &line);
+    const char_body_settings_t *s = &rp.settings;
+    const fm_vec3_t p = V(0x1.63d7eep+4f, 0x1.05cf58p+1f, 0x1.26ad64p+3f); /* main's body, frame 1 */
+    soak_wtri_t *a = &lvl.wtris[624], *b = &lvl.wtris[625];
+    /* the quad a = (q0 q1 q2), b = (q0 q2 q3): one plane */
+    TEST_ASSERT_EQUAL_MEMORY(a->v[0], b->v[0], sizeof a->v[0]);
+    TEST_ASSERT_EQUAL_MEMORY(a->v[2], b->v[1], sizeof a->v[0]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, p)); /* 166.10 mm before (0.1 um now) */
+    /* 3 mm under the slope: the quad is a contact, the crack counts */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.16910, soak_check_footing(&lvl, s, V(p.x, p.y - 0.003f, p.z)));
+    /* the quad split along its other diagonal (q0 q1 q3, q1 q2 q3): the same answer */
+    double q[4][3];
+    memcpy(q[0], a->v[0], sizeof q[0]); memcpy(q[1], a->v[1], sizeof q[0]);
+    memcpy(q[2], a->v[2], sizeof q[0]); memcpy(q[3], b->v[2], sizeof q[0]);
+    const int other[2][3] = {{0, 1, 3}, {1, 2, 3}};
+    for (int t = 0; t < 2; t++) {
+        soak_wtri_t *w = t ? b : a;
+        for (int v = 0; v < 3; v++) memcpy(w->v[v], q[other[t][v]], sizeof w->v[v]);
+        for (int j = 0; j < 3; j++) w->c[j] = (w->v[0][j] + w->v[1][j] + w->v[2][j]) / 3;
+    }
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, p));
+    /* back to the level's split; 625 hidden (the slope ends at 624's diagonal), or the whole
+     * quad: the ball hangs between the original's slopes */
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp.level_seed, rp.gen));
+    lvl.wtris[625].mask = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.16610, soak_check_footing(&lvl, s, p));
+    lvl.wtris[624].mask = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.16610, soak_check_footing(&lvl, s, p));
+}
+
 static void test_oracle_footing(void)
 {
     oracle_setup(SOAK_FAIL_FOOTING);
@@ -1290,6 +1336,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
     RUN_TEST(test_checker_inside_a_closed_solid);
     RUN_TEST(test_oracle_footing_split_face_is_one_contact);
+    RUN_TEST(test_oracle_footing_out_held_by_the_whole_slope_quad);
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);

@@ -606,12 +606,31 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      * contacts it clears would leave the uphill side alone, one-sided, and pass a foot
      * sunk into the crack). Only where the foot is on or above that surface (case 1 fails
      * it otherwise); on a flat floor the ball touches it at most (hold 0), and nothing is
-     * out-held. */
+     * out-held. The surface is every triangle of that plane the ball overlaps, not only
+     * the one the line through the foot crosses: which triangle of a planar quad the foot
+     * is over is no matter of the surface (soak s17 l182: the foot on a 38 degree slope
+     * near its bottom edge, in the quad's triangle that the ball overlaps least (a raise
+     * of 0.181 m clears it), the other one touching the ball 0.6 m uphill (0.268 m); the
+     * far slope of a V valley beside it needs 0.230 m: out-held by the slope, a crack
+     * between that far slope and another near slope under the foot's slope by the first
+     * triangle alone (166 mm); with the quad's other diagonal, 0). */
     const double top = step + r + 0.01;
     double hold = 0, held = 0; /* held: the largest raise a contact needs (top: none clears it) */
     if (under >= 0 && z1 <= SOAK_FOOT_TOL) {
+        double un[3], unused;
         hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
         if (hold < 0) hold = 0;
+        const bool plane = tri_walkable(&lvl->wtris[under], s, up, un, &unused);
+        const double ud = plane ? dot3(un, lvl->wtris[under].v[0]) : 0;
+        for (uint32_t i = 0; i < lvl->nwtris && plane; i++) {
+            const soak_wtri_t *w = &lvl->wtris[i];
+            if ((int32_t)i == under || !tri_seen(w->mask, s) || dist3(bc, w->c) > w->rad + r) continue;
+            double n[3], allow;
+            if (!tri_walkable(w, s, up, n, &allow) || inside_face(w, up)) continue;
+            if (!(dot3(n, un) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ud) < 1e-6)) continue;
+            double h = raise_to_clear(bc, up, r, w, top);
+            if (h > hold) hold = h;
+        }
     }
     /* The points of the floor the foot stands on (its triangles in case 1's planes) closest
      * to the ball's centre, where the ball overlaps it: a walkable contact whose closest
