@@ -284,8 +284,9 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
 /** The step could not stand the body anywhere it went, nor at its start (pos, probed
  *  there): the stand search's places, each checked by the probe, moved to as motion (the
  *  velocity says so). True when the body stands nowhere within reach the way its input goes
- *  but could another way: it is wedged, not standing (the caller clears the floor; *pos is
- *  the start). in_h: the input across up; rising: as for the probe. */
+ *  but could another way, or nowhere at all and its full capsule's bottom ball rests on
+ *  nothing: it is wedged, not standing (the caller clears the floor; *pos is the start).
+ *  in_h: the input across up; rising: as for the probe. */
 bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
                      bool rising);
 /** Airborne only: the foot point may not pass through walls on its way from old_foot.

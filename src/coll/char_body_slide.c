@@ -786,15 +786,21 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
         *pos = start; /* nor lifted part of the way: that was no motion */
         return true;
     }
-    /* Airborne, nowhere to stand and no way out, and the full capsule's bottom ball rests on
-     * nothing: the floor the probe found over the foot is no support, the body is not
-     * standing on it. The game teleported a body (r 0.31, step 1.16, up tilted 50 degrees)
-     * into the solid under a V valley's slope; its sweep capsule fits in there, the slope's
-     * inside face is walkable for that up and crosses the step zone 1.03 m over the foot,
-     * the lift has no room, the search no place: it stood grounded with its foot 1.03 m in
-     * the slope (soak s13 l195). Where the ball does rest on something (a stair's nosings,
-     * s2 l193) it stays as it stands. */
-    if (!stands && !was_grounded && !foot_ball_rests(c, start)) {
+    /* Nowhere to stand and no way out (airborne, or grounded and the search any way found
+     * nothing either), and the full capsule's bottom ball rests on nothing: the floor the
+     * probe found over the foot is no support, the body is not standing on it. The game
+     * teleported a body (r 0.31, step 1.16, up tilted 50 degrees) into the solid under a V
+     * valley's slope; its sweep capsule fits in there, the slope's inside face is walkable
+     * for that up and crosses the step zone 1.03 m over the foot, the lift has no room, the
+     * search no place: it stood grounded with its foot 1.03 m in the slope (soak s13 l195).
+     * Grounded at the step's start the same: a body (r 0.2, height 3.95, step 1.36) the
+     * game teleported with its foot in a tile under a ledge slab 0.83-0.93 m high, lifted
+     * out of the tile as far as a triangle soup over the slab let it (0.31 m) and grounded
+     * on the slab's top, stood there on the next steps with its foot 0.52 m under that top
+     * in the air, the slab through its step zone, no room above it and no place within the
+     * search's reach (soak s15 l288). Where the ball does rest on something (a stair's
+     * nosings, s2 l193) it stays as it stands. */
+    if (!stands && !foot_ball_rests(c, start)) {
         *pos = start;
         return true;
     }
