@@ -1489,7 +1489,7 @@ static void test_gathered_sweep_above_a_floor_plane(void)
         coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
         TEST_ASSERT_TRUE(g.valid);
         fm_vec3_t disp = {{ 0.0f, -len, 0.0f }};
-        const coll_gather_above_t above = { fl.normal, fl.point, skin * nu };
+        const coll_gather_above_t above = { fl.normal, fl.point, skin * nu, false };
         coll_sweep_hit_t h1, h2;
         coll_set_tri_sweep_method(counting_method, NULL);
         g_method_calls = 0;
