@@ -304,7 +304,7 @@ static bool roll_above(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t way, const col
     if (!(room > 0.0f)) return false;
     out->n = n;
     out->p = h1->point;
-    out->margin = 0.45f * room;
+    out->margin = 0.49f * room;
     out->all = true;
     return true;
 }
