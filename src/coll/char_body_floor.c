@@ -285,6 +285,30 @@ static bool held_at(float contact, float reach, float gap, fm_vec3_t normal, fm_
     return true;
 }
 
+/**
+ * The crack rule's roll (the ball at b1, moved by way) along the tangent plane of the contact
+ * h1 it rests on, lifted off it by a fifth of the skin: the ball stays above that plane, so
+ * the faces behind the edge it rolls off (the tread and riser of a nosing, a crack's top and
+ * side) lie under it and need no exact test (coll_gather_above_t, every candidate). The
+ * clearance is measured, not assumed (after drop_past_side the ball may sit closer), at the
+ * roll's start and end, less an allowance far above the rounding of these dot products
+ * (b1 - p is a difference of nearby points, exact or within half an ulp of a radius). False
+ * when it leaves no room: the plain sweep.
+ */
+static bool roll_above(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t way, const coll_sweep_hit_t *h1,
+                       coll_gather_above_t *out)
+{
+    const fm_vec3_t n = h1->normal;
+    const float hs = v3_dot(v3_sub(b1, h1->point), n) - c->radius, he = hs + v3_dot(way, n);
+    const float room = f_min(hs, he) - 1e-6f * (c->radius + fabsf(way.x) + fabsf(way.y) + fabsf(way.z));
+    if (!(room > 0.0f)) return false;
+    out->n = n;
+    out->p = h1->point;
+    out->margin = 0.49f * room;
+    out->all = true;
+    return true;
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -403,7 +427,10 @@ again:;
         float sink = -v3_dot(downhill, up);
         float roll = 2.0f * r;
         if (sink > 0.25f) roll = f_min(roll, 0.5f * r * 1.01f / sink + c->skin);
-        bool met = !flat && cb_sweep(c, b1, r, 0.0f, v3_scale(downhill, roll), &h2);
+        const fm_vec3_t way = v3_scale(downhill, roll);
+        coll_gather_above_t plane;
+        bool met = !flat && (roll_above(c, b1, way, &h1, &plane) ? cb_sweep_above(c, b1, r, 0.0f, way, &plane, &h2)
+                                                                 : cb_sweep(c, b1, r, 0.0f, way, &h2));
         float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
         if (over_floor && met && isfinite(h2.t) && v3_finite(h2.normal) && v3_dot(h2.normal, up) > -0.1f &&
             steep_face(c, &h2)) {
@@ -604,7 +631,7 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
      * ball's box or above the plane, and the plane only costs there. The same answer. */
     bool met;
     if (nu < 1.0f) {
-        const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu };
+        const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu, false };
         met = ball_drop_above(c, pos, b0, s, &above, edge);
     } else {
         met = ball_drop(c, pos, b0, s, edge);

@@ -85,16 +85,21 @@ bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axi
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit);
 /** A plane the caller knows a sweep stays above: every point of the swept capsule more than
  *  2 x margin above the plane through p with unit normal n, over the whole motion (the
- *  crack rule's ball dropped to two skins over the floor the foot ray found). */
+ *  crack rule's ball dropped to two skins over the floor the foot ray found; its roll along
+ *  the tangent plane of the contact it rests on). all: every candidate is checked against
+ *  it; else only the tilted ones (a triangle flat along an axis under a drop is out of its
+ *  box already). */
 typedef struct {
     fm_vec3_t n, p;
     float margin;
+    bool all;
 } coll_gather_above_t;
 
 /** coll_gather_capsule_sweep for a sweep that stays above `above`: a gathered triangle lying
  *  wholly within margin above that plane (or below it) is at least margin from the swept
  *  capsule, so its exact test (which reports contacts within the radius only) would find
- *  nothing; it is not made. The answer is the sweep's. */
+ *  nothing; it is not made. The answer is the sweep's, also when it leaves the gathered box
+ *  (the scene's walk skips them too). */
 bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                      float inner_half_height, fm_vec3_t displacement,
                                      const coll_gather_above_t *above, coll_sweep_hit_t *hit);

@@ -402,17 +402,34 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     return true;
 }
 
+/* A candidate (first vertex w0 and shape, relative to the sweep's centre) lying wholly
+ * within above's margin over its plane (ap: the plane's point from the sweep's centre), or
+ * under it: at least that margin from a sweep that stays twice the margin above the plane
+ * (coll_gather_above_t), so its exact test would find nothing. */
+CAND_INLINE bool under_above(const coll_gather_above_t *above, const fm_vec3_t *ap, const fm_vec3_t *w0,
+                             const fm_vec3_t shape[3])
+{
+    const fm_vec3_t *n = &above->n;
+    float h0 = (w0->x - ap->x) * n->x + (w0->y - ap->y) * n->y + (w0->z - ap->z) * n->z;
+    float h1 = h0 + fm_vec3_dot(&shape[1], n), h2 = h0 + fm_vec3_dot(&shape[2], n);
+    return h0 <= above->margin && h1 <= above->margin && h2 <= above->margin;
+}
+
+/* (above: NULL, or a plane the sweep stays above: the candidates under it are not tested) */
 static void sweep_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *center,
-                           const capsule_q_t *q, seen_t *seen, best_hit_t *sb)
+                           const capsule_q_t *q, const coll_gather_above_t *above, seen_t *seen, best_hit_t *sb)
 {
     inst_walk_t iw;
     grid_walk_t w;
     if (!inst_walk_begin(inst, center, q, sb->best, &iw, &w, seen)) return;
+    fm_vec3_t ap = {{ 0.0f, 0.0f, 0.0f }};
+    if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     while (grid_walk_next_cell(&w))
         for (uint32_t k = w.k; k < w.kend; k++) {
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
+            if (above && under_above(above, &ap, &w0, shape)) continue;
             if (sweep_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, true, NULL, sb)) {
                 swept_box(q, sb->best, &iw.lo, &iw.hi); /* shrink the sweep, and skip cells it misses */
                 local_box(inst->mesh, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &iw.llo, &iw.lhi);
@@ -479,9 +496,10 @@ static bool sweep_result(const best_hit_t *sb, const fm_vec3_t *center, coll_swe
     return true;
 }
 
-bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
-                        float inner_half_height, fm_vec3_t displacement, uint8_t read_mask,
-                        uint8_t coll_types, coll_sweep_hit_t *hit)
+/* coll_capsule_sweep; above: NULL, or a plane the sweep stays above (coll_gather_above_t) */
+static bool capsule_sweep_above(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                float inner_half_height, fm_vec3_t displacement, uint8_t read_mask,
+                                uint8_t coll_types, const coll_gather_above_t *above, coll_sweep_hit_t *hit)
 {
     if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement))
         return false;
@@ -495,11 +513,19 @@ bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t a
         seen_init(&seen);
         for (uint16_t i = 0; i < scene->mesh_count; i++) {
             const coll_mesh_instance_t *inst = scene->meshes[i];
-            if (inst && (inst->write_mask & read_mask)) sweep_instance(scene, inst, &center, &q, &seen, &sb);
+            if (inst && (inst->write_mask & read_mask)) sweep_instance(scene, inst, &center, &q, above, &seen, &sb);
         }
     }
     if (coll_types & COLL_TYPE_BODY) sweep_bodies(scene, &center, &q, read_mask, &sb);
     return sweep_result(&sb, &center, hit);
+}
+
+bool coll_capsule_sweep(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                        float inner_half_height, fm_vec3_t displacement, uint8_t read_mask,
+                        uint8_t coll_types, coll_sweep_hit_t *hit)
+{
+    return capsule_sweep_above(scene, center, axis, radius, inner_half_height, displacement, read_mask, coll_types,
+                               NULL, hit);
 }
 
 /* ------------------------------------------------------------------ overlaps ------- */
@@ -753,18 +779,15 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
          * as tight as its plane */
         coll_gather_tri_t *gt = &g->tris[k];
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
-        if (above && tilted) {
-            /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
-             * margin from the swept capsule, so the exact test, which reports contacts within
-             * the radius only, would find nothing. On the tilted candidates only, as the plane
-             * cull below (a floor flat along an axis under the sweep is out of its box
-             * already): the neighbours of a sloping floor's triangle under the crack rule's
-             * ball, which that cull keeps (the ball crosses their planes' extensions). */
-            const fm_vec3_t *n = &above->n;
-            float h0 = (w0.x - ap.x) * n->x + (w0.y - ap.y) * n->y + (w0.z - ap.z) * n->z;
-            float h1 = h0 + fm_vec3_dot(&shape[1], n), h2 = h0 + fm_vec3_dot(&shape[2], n);
-            if (h0 <= above->margin && h1 <= above->margin && h2 <= above->margin) continue;
-        }
+        /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
+         * margin from the swept capsule, so the exact test, which reports contacts within
+         * the radius only, would find nothing (under_above). The crack rule's first look
+         * asks it of the tilted candidates only, as the plane cull below (a floor flat along
+         * an axis under its drop is out of its box already): the neighbours of a sloping
+         * floor's triangle under the ball, which that cull keeps (the ball crosses their
+         * planes' extensions). Its roll along a contact's tangent plane asks it of every
+         * candidate (above->all): the faces behind the edge it rolls off, level or upright. */
+        if (above && (tilted || above->all) && under_above(above, &ap, &w0, shape)) continue;
         if (sweep_tri(q, gt->inst, gt->tri, &w0, shape, &u, tilted, gt, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
@@ -806,7 +829,8 @@ __attribute__((noinline)) /* (out of the common path's code) */
 #endif
 static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                  float inner_half_height, fm_vec3_t displacement, const capsule_q_t *q,
-                                 const fm_vec3_t *rel, const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
+                                 const fm_vec3_t *rel, const coll_gather_above_t *above,
+                                 const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
 {
     if ((g->types & COLL_TYPE_MESH) && g->valid) {
         float covered = gather_covered_part(g, rel, q);
@@ -815,7 +839,7 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
             best_init(&sb, covered);
             fm_vec3_t lo, hi;
             swept_box(q, covered, &lo, &hi);
-            gather_sweep_scan(g, q, rel, lo, hi, NULL, NULL, memo, &sb);
+            gather_sweep_scan(g, q, rel, lo, hi, above, &center, memo, &sb);
             if (sb.have) {
                 STATS_ADD(g->scene, gather_queries);
                 if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, q, g->read_mask, &sb);
@@ -824,8 +848,8 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
         }
         STATS_ADD(g->scene, gather_misses);
     }
-    return coll_capsule_sweep(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask, g->types,
-                              hit);
+    return capsule_sweep_above(g->scene, center, axis, radius, inner_half_height, displacement, g->read_mask,
+                               g->types, above, hit);
 }
 
 CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
@@ -842,7 +866,8 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
     swept_box(&q, 1.0f, &lo, &hi);
     memo = memo_for(memo, g, &center, &axis, radius, inner_half_height);
     if (!(g->types & COLL_TYPE_MESH) || !g->valid || !gather_inside(g, &rel, &lo, &hi))
-        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, memo, hit);
+        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, above, memo,
+                                    hit);
     STATS_ADD(g->scene, gather_queries);
     best_hit_t sb;
     best_init(&sb, 1.0f);
