@@ -706,9 +706,25 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
     best_init(&rb, max_dist);
     fm_vec3_t glo, ghi;
     gather_box(&rel, &lo, &hi, &glo, &ghi);
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    /* ray_tri on each candidate, with the ray's shear worked out once and each triangle's
+     * raw normal (and a hit's unit normal) from its prep: the same expressions */
+    coll_ray_shear_t sh;
+    bool sheared = coll_ray_shear(&dir, &sh);
+    for (uint16_t k = 0; sheared && k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
-        if (gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) ray_tri(g->tris[k].inst, g->tris[k].tri, &w0, shape, &dir, &rb);
+        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
+        coll_gather_tri_t *gt = &g->tris[k];
+        fm_vec3_t o;
+        coll_prim_hit_t ph;
+        fm_vec3_negate(&o, &w0);
+        if (gt->inst->flags & COLL_INSTANCE_ONE_WAY) {
+            fm_vec3_t u = one_way_up_rotated(gt->inst);
+            if (!one_way_ray(&u, shape, &o, &dir)) continue;
+        }
+        if (coll_ray_triangle_sheared(&o, &dir, &sh, shape, rb.best, &gt->prep, &ph) && (!rb.have || ph.t < rb.best)) {
+            fm_vec3_add(&ph.point, &ph.point, &w0);
+            best_take(&rb, &ph, gt->inst, NULL, gt->tri);
+        }
     }
     if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
     return ray_result(&rb, &origin, hit);
