@@ -1039,8 +1039,9 @@ PRIM_INLINE bool ray_edges(const fm_vec3_t *A, const fm_vec3_t *B, const fm_vec3
 }
 
 /* d passed coll_ray_shear (sane, sheared into sh). */
-bool coll_ray_triangle_sheared(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
-                               const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p, coll_prim_hit_t *hit)
+PRIM_INLINE bool ray_triangle_sheared_in(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
+                                         const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p,
+                                         coll_prim_hit_t *hit)
 {
     if (!(s_max >= 0.0f)) return false;
     /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
@@ -1108,5 +1109,11 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
     if (!o || !d || !tri || !hit) return false;
     coll_ray_shear_t sh;
     if (!coll_ray_shear(d, &sh)) return false;
-    return coll_ray_triangle_sheared(o, d, &sh, tri, s_max, NULL, hit);
+    return ray_triangle_sheared_in(o, d, &sh, tri, s_max, NULL, hit);
+}
+
+bool coll_ray_triangle_sheared(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
+                               const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p, coll_prim_hit_t *hit)
+{
+    return ray_triangle_sheared_in(o, d, sh, tri, s_max, p, hit);
 }
