@@ -211,6 +211,7 @@ typedef struct {
     fm_vec3_t nraw;    /* (v1 - v0) x (v2 - v0) */
     fm_vec3_t n;       /* unit normal when has_face */
     bool has_face;
+    uint8_t apex;      /* tri_setup: the vertex the two shortest edges share (kept in a prep) */
 } tri_t;
 
 /* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
@@ -243,18 +244,14 @@ static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, fl
     *nn_out = v3_len2(t->nraw);
 }
 
-static inline void tri_setup_apex(tri_t *t, const fm_vec3_t tri[3], int *apex)
-{
-    float nn, lmax;
-    tri_setup_raw(t, tri, apex, &nn, &lmax);
-    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
-    t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
-}
-
 static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
 {
     int apex;
-    tri_setup_apex(t, tri, &apex);
+    float nn, lmax;
+    tri_setup_raw(t, tri, &apex, &nn, &lmax);
+    t->apex = (uint8_t)apex;
+    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
+    t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
 
 /* tri_setup through a triangle's prep (prim.h): made from it when it is ready, else made
@@ -273,12 +270,11 @@ static inline void tri_setup_keep(tri_t *t, const fm_vec3_t tri[3], coll_tri_pre
         t->has_face = p->has_face;
         return;
     }
-    int apex;
-    tri_setup_apex(t, tri, &apex);
+    tri_setup(t, tri);
     p->nraw = t->nraw;
     p->n = t->n;
     p->has_face = t->has_face;
-    p->apex = (uint8_t)apex;
+    p->apex = t->apex;
     p->ready = true;
 }
 
@@ -1044,10 +1040,6 @@ PRIM_INLINE bool ray_triangle_sheared_in(const fm_vec3_t *o, const fm_vec3_t *d,
                                          coll_prim_hit_t *hit)
 {
     if (!(s_max >= 0.0f)) return false;
-    /* a ready prep's triangle passed this check when it was filled (the same vertex values) */
-    uint32_t room = prim_room3(*o);
-    if (!(p && p->ready)) room |= prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2]);
-    if (!prim_room_ok(room)) return false;
     const float sx = sh->sx, sy = sh->sy;
     fm_vec3_t A = v3_sub(tri[0], *o), B = v3_sub(tri[1], *o), C = v3_sub(tri[2], *o);
     bool in;
@@ -1057,6 +1049,12 @@ PRIM_INLINE bool ray_triangle_sheared_in(const fm_vec3_t *o, const fm_vec3_t *d,
     default: in = ray_edges(&A, &B, &C, sx, sy, 0, 1, 2); break;
     }
     if (!in) return false;
+    /* The inputs' range, after the edge test (a miss returns false either way; values out
+     * of range or not finite only make float results there, no fault). A ready prep's
+     * triangle passed it when it was filled (the same vertex values). */
+    uint32_t room = prim_room3(*o);
+    if (!(p && p->ready)) room |= prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2]);
+    if (!prim_room_ok(room)) return false;
     /* The distance from the plane through the vertex shared by the two shortest edges:
      * better conditioned than the sheared-z interpolation for slivers. The raw normal
      * (tri_setup_raw's expressions: bit-identical), from the prep when it is ready. */
