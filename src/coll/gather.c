@@ -118,6 +118,8 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
 {
     const coll_scene_t *scene = g->scene;
     fm_vec3_t blo = *w->llo, bhi = *w->lhi;
+    fm_vec3_t glo = g->lo, ghi = g->hi; /* the gathered box (changed only by gather_shrink) */
+    coll_gather_tri_t spare;           /* a triangle that meets it with the buffer full */
     const coll_mesh_t *m = w->m;
     const uint8_t *codes = NULL;
     uint32_t qx0 = 0u, qx1 = 0u, qz0 = 0u, qz1 = 0u; /* the box's quarters in its first / last cells */
@@ -137,35 +139,37 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
         }
         for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
             uint32_t t;
-            fm_vec3_t w0, e1, e2, v[3], lo, hi;
+            fm_vec3_t v[3];
             if (coded) {
                 uint32_t cd = codes[k];
                 if (!(cd & qx) || !(cd & qz)) continue;
             }
             if (!grid_walk_take_box_o(w, lay, k, &t, v, &blo, &bhi, coded)) continue;
+            /* made in the next free slot (the scratch when the buffer is full): no copy */
+            coll_gather_tri_t *gt = g->ntris < COLL_GATHER_MAX ? &g->tris[g->ntris] : &spare;
             if (simple) { /* tri_rel_of's expressions for an identity transform */
-                fm_vec3_sub(&w0, &v[0], o_l);
-                fm_vec3_sub(&e1, &v[1], &v[0]);
-                fm_vec3_sub(&e2, &v[2], &v[0]);
+                fm_vec3_sub(&gt->w0, &v[0], o_l);
+                fm_vec3_sub(&gt->e1, &v[1], &v[0]);
+                fm_vec3_sub(&gt->e2, &v[2], &v[0]);
             } else {
                 fm_vec3_t shape[3];
-                tri_rel_of(v, x, o_l, &w0, shape);
-                e1 = shape[1];
-                e2 = shape[2];
+                tri_rel_of(v, x, o_l, &gt->w0, shape);
+                gt->e1 = shape[1];
+                gt->e2 = shape[2];
             }
             /* The triangle's box, then the box test on it: all three vertices below the
              * gathered box on an axis is their largest below it (tri_box_reject's test, for
              * finite coordinates), and the box is what the queries keep anyway. The first
              * vertex is w0 + 0 (the shape's first vertex; + 0.0f turns a -0 into +0, as
              * the sum always did). */
-            bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
-                       tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
-                       tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+            bool out = tri_axis_box(gt->w0.x, gt->e1.x, gt->e2.x, glo.x, ghi.x, &gt->lo.x, &gt->hi.x) |
+                       tri_axis_box(gt->w0.y, gt->e1.y, gt->e2.y, glo.y, ghi.y, &gt->lo.y, &gt->hi.y) |
+                       tri_axis_box(gt->w0.z, gt->e1.z, gt->e2.z, glo.z, ghi.z, &gt->lo.z, &gt->hi.z);
             if (out) continue;
-            if (g->ntris >= COLL_GATHER_MAX) {
+            if (gt == &spare) {
                 /* too many: a smaller box around the same centre (queries outside it go to
                  * the scene), or when that would be too small, every query to the scene */
-                int r = gather_shrink(g, lo, hi, w, x, o_l);
+                int r = gather_shrink(g, spare.lo, spare.hi, w, x, o_l);
                 if (r == GATHER_FULL) {
                     STATS_ADD(scene, gather_overflows);
                     g->valid = false;
@@ -174,9 +178,16 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                 }
                 blo = *w->llo;
                 bhi = *w->lhi;
+                glo = g->lo;
+                ghi = g->hi;
                 if (r == GATHER_SKIP) continue;
+                g->tris[g->ntris] = spare;
+                gt = &g->tris[g->ntris];
             }
-            gather_push(g, w0, e1, e2, lo, hi, inst, t);
+            g->ntris++;
+            gt->inst = inst;
+            gt->tri = (int32_t)t;
+            gt->prep.ready = false; /* filled by the first exact test */
         }
     }
     return true;
