@@ -16,21 +16,6 @@ static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const col
     return !out;
 }
 
-/* Appends a kept triangle (the buffer has room: the callers checked). */
-static inline void gather_push(coll_gather_t *g, fm_vec3_t w0, fm_vec3_t e1, fm_vec3_t e2, fm_vec3_t lo, fm_vec3_t hi,
-                               const coll_mesh_instance_t *inst, uint32_t tri)
-{
-    coll_gather_tri_t *gt = &g->tris[g->ntris++];
-    gt->w0 = w0;
-    gt->e1 = e1;
-    gt->e2 = e2;
-    gt->lo = lo;
-    gt->hi = hi;
-    gt->inst = inst;
-    gt->tri = (int32_t)tri;
-    gt->prep.ready = false; /* filled by the first exact test */
-}
-
 /* The buffer is full and one more triangle (box lo..hi) meets the gathered box: shrinks the
  * box about its centre until the buffer has room or the new triangle is out, dropping the
  * kept triangles the smaller box misses (the walk's own test, so every triangle that meets
@@ -248,6 +233,7 @@ void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_ve
 #endif
 
 _Static_assert(COLL_GATHER_CACHE_TRIS <= 64, "a refill marks the step's triangles in a 64-bit mask");
+_Static_assert(COLL_GATHER_CACHE_TRIS <= COLL_GATHER_MAX, "a gather from the cache never fills the buffer (emit_tri)");
 _Static_assert(COLL_GATHER_CACHE_INSTANCES <= 255, "instance counts are 8-bit");
 
 /* After a refill overflows, the next misses take the uncached gather without trying. */
@@ -308,23 +294,28 @@ typedef struct {
 CAND_INLINE void emit_tri(coll_gather_t *g, const coll_gather_cache_tri_t *ct, const coll_mesh_instance_t *inst,
                           const xf3_t *x, const fm_vec3_t *o_l)
 {
-    fm_vec3_t w0, e1, e2, lo, hi;
+    /* made in the next slot, as gather_walk does (the cache holds COLL_GATHER_CACHE_TRIS,
+     * fewer than the buffer: there is room) */
+    coll_gather_tri_t *gt = &g->tris[g->ntris];
     if (x->simple) {
-        fm_vec3_sub(&w0, &ct->v0, o_l);
-        e1 = ct->d1;
-        e2 = ct->d2;
+        fm_vec3_sub(&gt->w0, &ct->v0, o_l);
+        gt->e1 = ct->d1;
+        gt->e2 = ct->d2;
     } else {
         fm_vec3_t d;
         fm_vec3_sub(&d, &ct->v0, o_l);
-        w0 = mul3(x->m, &d);
-        e1 = mul3(x->m, &ct->d1);
-        e2 = mul3(x->m, &ct->d2);
+        gt->w0 = mul3(x->m, &d);
+        gt->e1 = mul3(x->m, &ct->d1);
+        gt->e2 = mul3(x->m, &ct->d2);
     }
-    bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
-               tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
-               tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+    bool out = tri_axis_box(gt->w0.x, gt->e1.x, gt->e2.x, g->lo.x, g->hi.x, &gt->lo.x, &gt->hi.x) |
+               tri_axis_box(gt->w0.y, gt->e1.y, gt->e2.y, g->lo.y, g->hi.y, &gt->lo.y, &gt->hi.y) |
+               tri_axis_box(gt->w0.z, gt->e1.z, gt->e2.z, g->lo.z, g->hi.z, &gt->lo.z, &gt->hi.z);
     if (out) return;
-    gather_push(g, w0, e1, e2, lo, hi, inst, ct->tri);
+    g->ntris++;
+    gt->inst = inst;
+    gt->tri = (int32_t)ct->tri;
+    gt->prep.ready = false; /* filled by the first exact test */
 }
 
 /* A cached triangle's local box meets a local box (tri_box_reject's test: all three
