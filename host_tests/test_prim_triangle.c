@@ -765,7 +765,8 @@ static void test_ray_triangle_basics(void)
 
 
 /* A triangle's prep (prim.h), filled by the first test and used by the later ones, gives
- * the plain tests' results to the bit, for the sweep (held or not) and the overlap, on the
+ * the plain tests' results to the bit, for the ray (sheared once, as the gathered ray
+ * does), the sweep (held or not) and the overlap, on the
  * random triangles (needles and slivers among them). The gather keeps one per triangle. */
 static bool hits_equal(bool ga, const coll_prim_hit_t *a, bool gb, const coll_prim_hit_t *b)
 {
@@ -774,7 +775,7 @@ static bool hits_equal(bool ga, const coll_prim_hit_t *a, bool gb, const coll_pr
 
 static void test_prepared_triangle_is_bit_identical(void)
 {
-    int n_hits = 0, n_prepared = 0;
+    int n_hits = 0, n_prepared = 0, n_ray_hits = 0;
     for (int i = 0; i < N_RANDOM_SWEEPS / 4; i++) {
         prim_ref_v3 rt[3];
         double L = pow(10, rnd_range(-1, 1.2));
@@ -791,12 +792,26 @@ static void test_prepared_triangle_is_bit_identical(void)
             fm_vec3_t d = F(prim_ref_scale(rnd_unit(), L * rnd_range(0, 2)));
             float t_max = rnd() < 0.5f ? 1.0f : (float)rnd();
             coll_prim_hit_t a, b;
+            /* a ray at a point of the triangle (or beside it) first: its hit fills the prep
+             * when it is not ready, and the sweeps and overlaps below then use that one */
+            double wa = rnd_range(-0.2, 1.2), wb = rnd_range(-0.2, 1.2) * (1.0 - wa);
+            fm_vec3_t aim = F(prim_ref_add(prim_ref_scale(prim_ref_sub(rt[1], rt[0]), wa),
+                                           prim_ref_scale(prim_ref_sub(rt[2], rt[0]), wb)));
+            fm_vec3_t ro = seg[0], rd = V(aim.x - ro.x, aim.y - ro.y, aim.z - ro.z);
+            float s_max = rnd() < 0.8f ? 2.0f : (float)rnd();
+            memset(&a, 0, sizeof a);
+            memset(&b, 0, sizeof b);
+            coll_ray_shear_t sh;
+            bool ga = coll_ray_triangle(&ro, &rd, tri, s_max, &a);
+            bool gb = coll_ray_shear(&rd, &sh) && coll_ray_triangle_sheared(&ro, &rd, &sh, tri, s_max, &prep, &b);
+            TEST_ASSERT_TRUE(hits_equal(ga, &a, gb, &b));
+            n_ray_hits += ga;
             memset(&a, 0, sizeof a);
             memset(&b, 0, sizeof b);
             bool held = k & 1;
-            bool ga = held ? coll_tri_sweep_before(seg, (float)r, &d, tri, t_max, &a)
+            ga = held ? coll_tri_sweep_before(seg, (float)r, &d, tri, t_max, &a)
                            : coll_tri_sweep(seg, (float)r, &d, tri, t_max, &a);
-            bool gb = coll_tri_sweep_prep(seg, (float)r, &d, tri, &prep, t_max, held, &b);
+            gb = coll_tri_sweep_prep(seg, (float)r, &d, tri, &prep, t_max, held, &b);
             TEST_ASSERT_TRUE(hits_equal(ga, &a, gb, &b));
             n_hits += ga;
             memset(&a, 0, sizeof a);
@@ -809,8 +824,9 @@ static void test_prepared_triangle_is_bit_identical(void)
         n_prepared++;
     }
     TEST_ASSERT_TRUE(n_hits > N_RANDOM_SWEEPS / 40);
+    TEST_ASSERT_TRUE(n_ray_hits > N_RANDOM_SWEEPS / 8);
     /* a ready prep is what the tests use: a wrong one (the normal reversed) shows */
-    coll_tri_prep_t prep = { { { 0, 0, 0 } }, { { 0, 0, 0 } }, false, false };
+    coll_tri_prep_t prep = { { { 0, 0, 0 } }, { { 0, 0, 0 } }, false, false, 0 };
     fm_vec3_t seg[2] = { V(0, 2, 0), V(0, 3, 0) }, d = V(0, -4, 0);
     coll_prim_hit_t h;
     TEST_ASSERT_TRUE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, false, &h));

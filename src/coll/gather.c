@@ -16,21 +16,6 @@ static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const col
     return !out;
 }
 
-/* Appends a kept triangle (the buffer has room: the callers checked). */
-static inline void gather_push(coll_gather_t *g, fm_vec3_t w0, fm_vec3_t e1, fm_vec3_t e2, fm_vec3_t lo, fm_vec3_t hi,
-                               const coll_mesh_instance_t *inst, uint32_t tri)
-{
-    coll_gather_tri_t *gt = &g->tris[g->ntris++];
-    gt->w0 = w0;
-    gt->e1 = e1;
-    gt->e2 = e2;
-    gt->lo = lo;
-    gt->hi = hi;
-    gt->inst = inst;
-    gt->tri = (int32_t)tri;
-    gt->prep.ready = false; /* filled by the first exact test */
-}
-
 /* The buffer is full and one more triangle (box lo..hi) meets the gathered box: shrinks the
  * box about its centre until the buffer has room or the new triangle is out, dropping the
  * kept triangles the smaller box misses (the walk's own test, so every triangle that meets
@@ -118,6 +103,8 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
 {
     const coll_scene_t *scene = g->scene;
     fm_vec3_t blo = *w->llo, bhi = *w->lhi;
+    fm_vec3_t glo = g->lo, ghi = g->hi; /* the gathered box (changed only by gather_shrink) */
+    coll_gather_tri_t spare;           /* a triangle that meets it with the buffer full */
     const coll_mesh_t *m = w->m;
     const uint8_t *codes = NULL;
     uint32_t qx0 = 0u, qx1 = 0u, qz0 = 0u, qz1 = 0u; /* the box's quarters in its first / last cells */
@@ -137,35 +124,37 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
         }
         for (uint32_t k = w->k, kend = w->kend; k < kend; k++) {
             uint32_t t;
-            fm_vec3_t w0, e1, e2, v[3], lo, hi;
+            fm_vec3_t v[3];
             if (coded) {
                 uint32_t cd = codes[k];
                 if (!(cd & qx) || !(cd & qz)) continue;
             }
             if (!grid_walk_take_box_o(w, lay, k, &t, v, &blo, &bhi, coded)) continue;
+            /* made in the next free slot (the scratch when the buffer is full): no copy */
+            coll_gather_tri_t *gt = g->ntris < COLL_GATHER_MAX ? &g->tris[g->ntris] : &spare;
             if (simple) { /* tri_rel_of's expressions for an identity transform */
-                fm_vec3_sub(&w0, &v[0], o_l);
-                fm_vec3_sub(&e1, &v[1], &v[0]);
-                fm_vec3_sub(&e2, &v[2], &v[0]);
+                fm_vec3_sub(&gt->w0, &v[0], o_l);
+                fm_vec3_sub(&gt->e1, &v[1], &v[0]);
+                fm_vec3_sub(&gt->e2, &v[2], &v[0]);
             } else {
                 fm_vec3_t shape[3];
-                tri_rel_of(v, x, o_l, &w0, shape);
-                e1 = shape[1];
-                e2 = shape[2];
+                tri_rel_of(v, x, o_l, &gt->w0, shape);
+                gt->e1 = shape[1];
+                gt->e2 = shape[2];
             }
             /* The triangle's box, then the box test on it: all three vertices below the
              * gathered box on an axis is their largest below it (tri_box_reject's test, for
              * finite coordinates), and the box is what the queries keep anyway. The first
              * vertex is w0 + 0 (the shape's first vertex; + 0.0f turns a -0 into +0, as
              * the sum always did). */
-            bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
-                       tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
-                       tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+            bool out = tri_axis_box(gt->w0.x, gt->e1.x, gt->e2.x, glo.x, ghi.x, &gt->lo.x, &gt->hi.x) |
+                       tri_axis_box(gt->w0.y, gt->e1.y, gt->e2.y, glo.y, ghi.y, &gt->lo.y, &gt->hi.y) |
+                       tri_axis_box(gt->w0.z, gt->e1.z, gt->e2.z, glo.z, ghi.z, &gt->lo.z, &gt->hi.z);
             if (out) continue;
-            if (g->ntris >= COLL_GATHER_MAX) {
+            if (gt == &spare) {
                 /* too many: a smaller box around the same centre (queries outside it go to
                  * the scene), or when that would be too small, every query to the scene */
-                int r = gather_shrink(g, lo, hi, w, x, o_l);
+                int r = gather_shrink(g, spare.lo, spare.hi, w, x, o_l);
                 if (r == GATHER_FULL) {
                     STATS_ADD(scene, gather_overflows);
                     g->valid = false;
@@ -174,9 +163,16 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
                 }
                 blo = *w->llo;
                 bhi = *w->lhi;
+                glo = g->lo;
+                ghi = g->hi;
                 if (r == GATHER_SKIP) continue;
+                g->tris[g->ntris] = spare;
+                gt = &g->tris[g->ntris];
             }
-            gather_push(g, w0, e1, e2, lo, hi, inst, t);
+            g->ntris++;
+            gt->inst = inst;
+            gt->tri = (int32_t)t;
+            gt->prep.ready = false; /* filled by the first exact test */
         }
     }
     return true;
@@ -237,6 +233,7 @@ void gather_cache_check(const coll_gather_t *g, const coll_scene_t *scene, fm_ve
 #endif
 
 _Static_assert(COLL_GATHER_CACHE_TRIS <= 64, "a refill marks the step's triangles in a 64-bit mask");
+_Static_assert(COLL_GATHER_CACHE_TRIS <= COLL_GATHER_MAX, "a gather from the cache never fills the buffer (emit_tri)");
 _Static_assert(COLL_GATHER_CACHE_INSTANCES <= 255, "instance counts are 8-bit");
 
 /* After a refill overflows, the next misses take the uncached gather without trying. */
@@ -297,23 +294,28 @@ typedef struct {
 CAND_INLINE void emit_tri(coll_gather_t *g, const coll_gather_cache_tri_t *ct, const coll_mesh_instance_t *inst,
                           const xf3_t *x, const fm_vec3_t *o_l)
 {
-    fm_vec3_t w0, e1, e2, lo, hi;
+    /* made in the next slot, as gather_walk does (the cache holds COLL_GATHER_CACHE_TRIS,
+     * fewer than the buffer: there is room) */
+    coll_gather_tri_t *gt = &g->tris[g->ntris];
     if (x->simple) {
-        fm_vec3_sub(&w0, &ct->v0, o_l);
-        e1 = ct->d1;
-        e2 = ct->d2;
+        fm_vec3_sub(&gt->w0, &ct->v0, o_l);
+        gt->e1 = ct->d1;
+        gt->e2 = ct->d2;
     } else {
         fm_vec3_t d;
         fm_vec3_sub(&d, &ct->v0, o_l);
-        w0 = mul3(x->m, &d);
-        e1 = mul3(x->m, &ct->d1);
-        e2 = mul3(x->m, &ct->d2);
+        gt->w0 = mul3(x->m, &d);
+        gt->e1 = mul3(x->m, &ct->d1);
+        gt->e2 = mul3(x->m, &ct->d2);
     }
-    bool out = tri_axis_box(w0.x, e1.x, e2.x, g->lo.x, g->hi.x, &lo.x, &hi.x) |
-               tri_axis_box(w0.y, e1.y, e2.y, g->lo.y, g->hi.y, &lo.y, &hi.y) |
-               tri_axis_box(w0.z, e1.z, e2.z, g->lo.z, g->hi.z, &lo.z, &hi.z);
+    bool out = tri_axis_box(gt->w0.x, gt->e1.x, gt->e2.x, g->lo.x, g->hi.x, &gt->lo.x, &gt->hi.x) |
+               tri_axis_box(gt->w0.y, gt->e1.y, gt->e2.y, g->lo.y, g->hi.y, &gt->lo.y, &gt->hi.y) |
+               tri_axis_box(gt->w0.z, gt->e1.z, gt->e2.z, g->lo.z, g->hi.z, &gt->lo.z, &gt->hi.z);
     if (out) return;
-    gather_push(g, w0, e1, e2, lo, hi, inst, ct->tri);
+    g->ntris++;
+    gt->inst = inst;
+    gt->tri = (int32_t)ct->tri;
+    gt->prep.ready = false; /* filled by the first exact test */
 }
 
 /* A cached triangle's local box meets a local box (tri_box_reject's test: all three

@@ -34,8 +34,9 @@ typedef struct {
     const coll_mesh_instance_t *inst;
     int32_t tri;
     /** The exact tests' setup of the shape (0, e1, e2) (prim.h: its normal, a square root
-     *  and a division), made by the first query that tests the triangle exactly and used by
-     *  the step's later ones (5-15 queries over the same triangles). */
+     *  and a division), made by the first query that tests the triangle exactly (or the
+     *  first ray that hits it) and used by the step's later ones (5-15 queries over the
+     *  same triangles; the ray's raw normal and plane point too). */
     coll_tri_prep_t prep;
 } coll_gather_tri_t;
 

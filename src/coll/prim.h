@@ -93,14 +93,32 @@ bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *dis
  * sliver), the unit normal (a square root and a division) and whether there is a face. A
  * caller that tests the same triangle (the same three vertex values) against several
  * queries keeps one (a step's gather: gather.h), ready = false at first: the first *_prep
- * test fills it, the later ones use it. Results are bit-identical to the plain tests'.
+ * test (or coll_ray_triangle_sheared's first hit) fills it, the later ones use it. Results
+ * are bit-identical to the plain tests'.
  */
 typedef struct {
     fm_vec3_t nraw;   ///< (edge ia) x (edge ib), the two shortest edges
     fm_vec3_t n;      ///< unit normal when has_face, else zero
     bool has_face;
     bool ready;       ///< false: not filled yet
+    uint8_t apex;     ///< the vertex the two shortest edges share (the ray's plane point)
 } coll_tri_prep_t;
+
+/**
+ * The ray's part of coll_ray_triangle (its shear to +z: the axes and two divisions),
+ * independent of the triangle: worked out once for a ray tested against many
+ * (coll_ray_shear; false: nothing can be hit, a direction with no length or out of
+ * range), then coll_ray_triangle_sheared per triangle, through the triangle's prep p (the
+ * raw normal, and on a hit its unit normal, made and kept when not ready; NULL: none).
+ * The same expressions as coll_ray_triangle's: bit-identical results.
+ */
+typedef struct {
+    uint8_t kz;       ///< the axis of d's largest component (x and y follow it)
+    float sx, sy;
+} coll_ray_shear_t;
+bool coll_ray_shear(const fm_vec3_t *d, coll_ray_shear_t *sh);
+bool coll_ray_triangle_sheared(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
+                               const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p, coll_prim_hit_t *hit);
 
 /** coll_tri_sweep (held false) or coll_tri_sweep_before (held true), and
  *  coll_capsule_triangle_overlap, through the triangle's prep p (filled when not ready;

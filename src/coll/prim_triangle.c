@@ -211,6 +211,7 @@ typedef struct {
     fm_vec3_t nraw;    /* (v1 - v0) x (v2 - v0) */
     fm_vec3_t n;       /* unit normal when has_face */
     bool has_face;
+    uint8_t apex;      /* tri_setup: the vertex the two shortest edges share (kept in a prep) */
 } tri_t;
 
 /* Vertices, edges and the raw normal of a triangle (tri_setup without the unit normal);
@@ -248,6 +249,7 @@ static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
     int apex;
     float nn, lmax;
     tri_setup_raw(t, tri, &apex, &nn, &lmax);
+    t->apex = (uint8_t)apex;
     t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
     t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
 }
@@ -272,6 +274,7 @@ static inline void tri_setup_keep(tri_t *t, const fm_vec3_t tri[3], coll_tri_pre
     p->nraw = t->nraw;
     p->n = t->n;
     p->has_face = t->has_face;
+    p->apex = t->apex;
     p->ready = true;
 }
 
@@ -992,6 +995,106 @@ bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const 
 
 /* ---------------------------------------------------------------- ray */
 
+/* The ray's shear (coll_ray_triangle below): the axis of d's largest component becomes
+ * +z; false for a direction out of range or with no length. (Woop et al. swap x and y when
+ * d points down that axis, to keep the winding for back-face culling; a two-sided test
+ * does not need it: the swap negates U, V and W exactly, since a rounded difference is the
+ * negated rounded difference the other way round, and the inside test and det == 0 do not
+ * see the sign. Nothing else uses them.) */
+bool coll_ray_shear(const fm_vec3_t *d, coll_ray_shear_t *sh)
+{
+    if (!prim_room_ok(prim_room3(*d))) return false;
+    int kz = 0;
+    float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
+    if (ay > ax && ay >= az) kz = 1;
+    else if (az > ax && az > ay) kz = 2;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    float dz = d->v[kz];
+    if (dz == 0.0f) return false; /* zero direction */
+    sh->kz = (uint8_t)kz;
+    sh->sx = d->v[kx] / dz;
+    sh->sy = d->v[ky] / dz;
+    return true;
+}
+
+/* The watertight edge test of the translated vertices A, B, C in the shear kx, ky, kz
+ * (constants where it is inlined: no indexed loads): true when the ray passes through the
+ * closed triangle (not edge-on). */
+PRIM_INLINE bool ray_edges(const fm_vec3_t *A, const fm_vec3_t *B, const fm_vec3_t *C, float sx, float sy,
+                           const int kx, const int ky, const int kz)
+{
+    float Ax = A->v[kx] - sx * A->v[kz], Ay = A->v[ky] - sy * A->v[kz];
+    float Bx = B->v[kx] - sx * B->v[kz], By = B->v[ky] - sy * B->v[kz];
+    float Cx = C->v[kx] - sx * C->v[kz], Cy = C->v[ky] - sy * C->v[kz];
+    float U = Cx * By - Cy * Bx;
+    float V = Ax * Cy - Ay * Cx;
+    float W = Bx * Ay - By * Ax;
+    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
+    float det = U + V + W;
+    return det != 0.0f && f_finite(det);
+}
+
+/* d passed coll_ray_shear (sane, sheared into sh). */
+PRIM_INLINE bool ray_triangle_sheared_in(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
+                                         const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p,
+                                         coll_prim_hit_t *hit)
+{
+    if (!(s_max >= 0.0f)) return false;
+    const float sx = sh->sx, sy = sh->sy;
+    fm_vec3_t A = v3_sub(tri[0], *o), B = v3_sub(tri[1], *o), C = v3_sub(tri[2], *o);
+    bool in;
+    switch (sh->kz) {
+    case 0: in = ray_edges(&A, &B, &C, sx, sy, 1, 2, 0); break;
+    case 1: in = ray_edges(&A, &B, &C, sx, sy, 2, 0, 1); break;
+    default: in = ray_edges(&A, &B, &C, sx, sy, 0, 1, 2); break;
+    }
+    if (!in) return false;
+    /* The inputs' range, after the edge test (a miss returns false either way; values out
+     * of range or not finite only make float results there, no fault). A ready prep's
+     * triangle passed it when it was filled (the same vertex values). */
+    uint32_t room = prim_room3(*o);
+    if (!(p && p->ready)) room |= prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2]);
+    if (!prim_room_ok(room)) return false;
+    /* The distance from the plane through the vertex shared by the two shortest edges:
+     * better conditioned than the sheared-z interpolation for slivers. The raw normal
+     * (tri_setup_raw's expressions: bit-identical), from the prep when it is ready. */
+    fm_vec3_t nraw;
+    int apex;
+    float nn = 0.0f, lmax = 0.0f;
+    if (p && p->ready) {
+        nraw = p->nraw;
+        apex = p->apex;
+    } else {
+        fm_vec3_t e[3];
+        for (int i = 0; i < 3; i++) e[i] = v3_sub(tri[(i + 1) % 3], tri[i]);
+        nraw = raw_normal(e, &apex, &lmax);
+        nn = v3_len2(nraw);
+    }
+    float dn = v3_dot(nraw, *d);
+    if (dn == 0.0f) return false;
+    float s = v3_dot(nraw, v3_sub(tri[apex], *o)) / dn;
+    if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
+
+    fm_vec3_t n;
+    if (p && !p->ready) {
+        /* a hit: its unit normal is tri_setup's when the triangle has a face; kept */
+        p->nraw = nraw;
+        p->apex = (uint8_t)apex;
+        p->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
+        p->n = p->has_face ? v3_scale(nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
+        p->ready = true;
+    }
+    /* (has_face: |nraw|^2 > 1e-30 and finite, so v3_unit_or_against's own expression) */
+    if (p && p->has_face) n = p->n;
+    else n = v3_unit_or_against(nraw, *d);
+    if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
+    hit->t = s;
+    hit->depth = 0.0f;
+    hit->normal = n;
+    hit->point = v3_madd(*o, *d, s);
+    return true;
+}
+
 /*
  * Watertight ray/triangle (Woop, Benthin, Wald 2013): the ray is sheared to +z and the
  * three edge functions are evaluated on the translated vertices. A shared edge is
@@ -1002,49 +1105,13 @@ bool coll_ray_triangle(const fm_vec3_t *o, const fm_vec3_t *d, const fm_vec3_t t
                        float s_max, coll_prim_hit_t *hit)
 {
     if (!o || !d || !tri || !hit) return false;
-    if (!(s_max >= 0.0f)) return false;
-    if (!prim_room_ok(prim_room3(*o) | prim_room3(*d) | prim_room3(tri[0]) | prim_room3(tri[1]) | prim_room3(tri[2])))
-        return false;
-    int kz = 0;
-    float ax = fabsf(d->x), ay = fabsf(d->y), az = fabsf(d->z);
-    if (ay > ax && ay >= az) kz = 1;
-    else if (az > ax && az > ay) kz = 2;
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d->v[kz] < 0.0f) { int tmp = kx; kx = ky; ky = tmp; }
-    float dz = d->v[kz];
-    if (dz == 0.0f) return false; /* zero direction */
-    float sx = d->v[kx] / dz, sy = d->v[ky] / dz, sz = 1.0f / dz;
+    coll_ray_shear_t sh;
+    if (!coll_ray_shear(d, &sh)) return false;
+    return ray_triangle_sheared_in(o, d, &sh, tri, s_max, NULL, hit);
+}
 
-    fm_vec3_t A = v3_sub(tri[0], *o), B = v3_sub(tri[1], *o), C = v3_sub(tri[2], *o);
-    float Ax = A.v[kx] - sx * A.v[kz], Ay = A.v[ky] - sy * A.v[kz];
-    float Bx = B.v[kx] - sx * B.v[kz], By = B.v[ky] - sy * B.v[kz];
-    float Cx = C.v[kx] - sx * C.v[kz], Cy = C.v[ky] - sy * C.v[kz];
-    float U = Cx * By - Cy * Bx;
-    float V = Ax * Cy - Ay * Cx;
-    float W = Bx * Ay - By * Ax;
-    if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return false;
-    float det = U + V + W;
-    if (det == 0.0f || !f_finite(det)) return false;
-    (void)sz;
-    /* The distance from the plane through the vertex shared by the two shortest edges:
-     * better conditioned than the sheared-z interpolation for slivers. The raw normal only
-     * (tri_setup_raw's expressions, inline: bit-identical); its unit normal is not used. */
-    fm_vec3_t e[3];
-    for (int i = 0; i < 3; i++) e[i] = v3_sub(tri[(i + 1) % 3], tri[i]);
-    int apex;
-    float lmax_unused;
-    fm_vec3_t nraw = raw_normal(e, &apex, &lmax_unused);
-    (void)lmax_unused;
-    float dn = v3_dot(nraw, *d);
-    if (dn == 0.0f) return false;
-    float s = v3_dot(nraw, v3_sub(tri[apex], *o)) / dn;
-    if (!(s >= 0.0f) || !(s <= s_max) || !f_finite(s)) return false;
-
-    fm_vec3_t n = v3_unit_or_against(nraw, *d);
-    if (v3_dot(n, *d) > 0.0f) n = v3_neg(n);
-    hit->t = s;
-    hit->depth = 0.0f;
-    hit->normal = n;
-    hit->point = v3_madd(*o, *d, s);
-    return true;
+bool coll_ray_triangle_sheared(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
+                               const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p, coll_prim_hit_t *hit)
+{
+    return ray_triangle_sheared_in(o, d, sh, tri, s_max, p, hit);
 }

@@ -138,24 +138,26 @@ static void ray_local_box(const fm_vec3_t *o_l, const fm_vec3_t *d_l, float s0, 
     }
 }
 
-/* One candidate triangle t of inst against the ray: first vertex w0 relative to the ray's
- * origin, shape with shape[0] = 0 (the scene walk and the gathered scan both end here). */
+/* One candidate triangle t of inst against the ray (its shear sh: coll_ray_shear, once per
+ * ray): first vertex w0 relative to the ray's origin, shape with shape[0] = 0 (the scene
+ * walk's; the gathered scan has its own, with the triangles' preps). */
 static void ray_tri(const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0, const fm_vec3_t shape[3],
-                    const fm_vec3_t *dir, best_hit_t *rb)
+                    const fm_vec3_t *dir, const coll_ray_shear_t *sh, best_hit_t *rb)
 {
+    if (!sh) return;
     fm_vec3_t o;
     coll_prim_hit_t ph;
     fm_vec3_negate(&o, w0);
     fm_vec3_t u = one_way_up(inst);
     if (!one_way_ray(&u, shape, &o, dir)) return;
-    if (coll_ray_triangle(&o, dir, shape, rb->best, &ph) && (!rb->have || ph.t < rb->best)) {
+    if (coll_ray_triangle_sheared(&o, dir, sh, shape, rb->best, NULL, &ph) && (!rb->have || ph.t < rb->best)) {
         fm_vec3_add(&ph.point, &ph.point, w0);
         best_take(rb, &ph, inst, NULL, t);
     }
 }
 
 static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *inst, const fm_vec3_t *origin,
-                         const fm_vec3_t *dir, seen_t *seen, best_hit_t *rb)
+                         const fm_vec3_t *dir, const coll_ray_shear_t *sh, seen_t *seen, best_hit_t *rb)
 {
     const coll_mesh_t *m = inst->mesh;
     xf3_t x;
@@ -195,7 +197,7 @@ static void ray_instance(const coll_scene_t *scene, const coll_mesh_instance_t *
             fm_vec3_t v[3], tri[3], w0;
             if (!grid_walk_take(&w, k, &t, v)) continue;
             tri_rel_of(v, &x, &o_l, &w0, tri);
-            ray_tri(inst, (int32_t)t, &w0, tri, dir, rb);
+            ray_tri(inst, (int32_t)t, &w0, tri, dir, sh, rb);
         }
         /* Parameter where the ray leaves this cell: recomputed from the cell index (no
          * accumulated error). A hit no farther than that is the nearest: every point of
@@ -292,10 +294,12 @@ bool coll_raycast(const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t dir, fl
     best_init(&rb, max_dist);
     seen_t seen;
     if (coll_types & COLL_TYPE_MESH) {
+        coll_ray_shear_t shear;
+        const coll_ray_shear_t *sh = coll_ray_shear(&dir, &shear) ? &shear : NULL; /* NULL: no triangle is hit */
         seen_init(&seen);
         for (uint16_t i = 0; i < scene->mesh_count; i++) {
             const coll_mesh_instance_t *inst = scene->meshes[i];
-            if (inst && (inst->write_mask & read_mask)) ray_instance(scene, inst, &origin, &dir, &seen, &rb);
+            if (inst && (inst->write_mask & read_mask)) ray_instance(scene, inst, &origin, &dir, sh, &seen, &rb);
         }
     }
     if (coll_types & COLL_TYPE_BODY) ray_bodies(scene, &origin, &dir, read_mask, &rb);
@@ -732,9 +736,25 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
     best_init(&rb, max_dist);
     fm_vec3_t glo, ghi;
     gather_box(&rel, &lo, &hi, &glo, &ghi);
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    /* ray_tri on each candidate, with the ray's shear worked out once and each triangle's
+     * raw normal (and a hit's unit normal) from its prep: the same expressions */
+    coll_ray_shear_t sh;
+    bool sheared = coll_ray_shear(&dir, &sh);
+    for (uint16_t k = 0; sheared && k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
-        if (gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) ray_tri(g->tris[k].inst, g->tris[k].tri, &w0, shape, &dir, &rb);
+        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
+        coll_gather_tri_t *gt = &g->tris[k];
+        fm_vec3_t o;
+        coll_prim_hit_t ph;
+        fm_vec3_negate(&o, &w0);
+        if (gt->inst->flags & COLL_INSTANCE_ONE_WAY) {
+            fm_vec3_t u = one_way_up_rotated(gt->inst);
+            if (!one_way_ray(&u, shape, &o, &dir)) continue;
+        }
+        if (coll_ray_triangle_sheared(&o, &dir, &sh, shape, rb.best, &gt->prep, &ph) && (!rb.have || ph.t < rb.best)) {
+            fm_vec3_add(&ph.point, &ph.point, &w0);
+            best_take(&rb, &ph, gt->inst, NULL, gt->tri);
+        }
     }
     if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
     return ray_result(&rb, &origin, hit);
