@@ -722,6 +722,24 @@ CAND_INLINE const coll_gather_memo_t *memo_for(const coll_gather_memo_t *memo, c
     return memo && coll_gather_memo_for(memo, g, *center, *axis, radius, ihh) ? memo : NULL;
 }
 
+/* The box test's corners: gathered triangle gt, whose box passed the per-axis test against
+ * the sweep's box glo..ghi (the swept axis's box grown by R = r + eps on every side), is
+ * farther than R from the swept axis's box itself (its gaps on the axes, squared and
+ * summed): every point of the triangle is then farther than r + eps from the swept axis,
+ * the box test's own allowance, and the exact test would find no contact. A riser's or a
+ * tread's edge diagonally beside the capsule on a stair (the step's up, forward and down
+ * sweeps: a box test reaches past the corner by up to R (sqrt 2 - 1)). */
+CAND_INLINE bool gather_corner_clear(const coll_gather_tri_t *gt, const fm_vec3_t *glo, const fm_vec3_t *ghi,
+                                     float R)
+{
+    float s = 0.0f;
+    for (int a = 0; a < 3; a++) {
+        float m = f_max(glo->v[a] - gt->hi.v[a], gt->lo.v[a] - ghi->v[a]) + R;
+        if (m > 0.0f) s += m * m;
+    }
+    return s > R * R;
+}
+
 CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
 {
     for (uint8_t i = 0; i < memo->n; i++)
@@ -743,6 +761,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
+        if (gather_corner_clear(&g->tris[k], &glo, &ghi, q->r + q->eps)) continue;
         /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
