@@ -735,17 +735,11 @@ CAND_INLINE const coll_gather_memo_t *memo_for(const coll_gather_memo_t *memo, c
 CAND_INLINE bool gather_corner_clear(const coll_gather_tri_t *gt, const fm_vec3_t *glo, const fm_vec3_t *ghi,
                                      float R)
 {
-    /* (each gap is at most R: the box test passed; so a single axis with a gap clears
-     * nothing. Across up first: under a floor triangle the capsule overlaps it on both,
-     * and the test ends there) */
-    const float mx = f_max(glo->x - gt->hi.x, gt->lo.x - ghi->x) + R;
-    const float mz = f_max(glo->z - gt->hi.z, gt->lo.z - ghi->z) + R;
-    if (!(mx > 0.0f) && !(mz > 0.0f)) return false;
-    const float my = f_max(glo->y - gt->hi.y, gt->lo.y - ghi->y) + R;
     float s = 0.0f;
-    if (mx > 0.0f) s += mx * mx;
-    if (my > 0.0f) s += my * my;
-    if (mz > 0.0f) s += mz * mz;
+    for (int a = 0; a < 3; a++) {
+        float m = f_max(glo->v[a] - gt->hi.v[a], gt->lo.v[a] - ghi->v[a]) + R;
+        if (m > 0.0f) s += m * m;
+    }
     return s > R * R;
 }
 
@@ -767,9 +761,6 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     /* (memo: set once a hit at t = 0 is held, below) */
     const coll_gather_memo_t *skip = NULL;
-    /* the box corners' cull for a capsule only (gather_corner_clear): the crack rule's
-     * balls between a crack's edges paid it on every candidate and it culled nothing */
-    const bool corners = q->seg[1].x != 0.0f || q->seg[1].y != 0.0f || q->seg[1].z != 0.0f;
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
@@ -778,7 +769,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
          * as tight as its plane; there the box's corners instead (a stair's nosing) */
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
-        if (corners && !tilted && gather_corner_clear(gt, &glo, &ghi, q->r + q->eps)) continue;
+        if (!tilted && gather_corner_clear(gt, &glo, &ghi, q->r + q->eps)) continue;
         /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
