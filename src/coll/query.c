@@ -768,27 +768,6 @@ CAND_INLINE const coll_gather_memo_t *memo_for(const coll_gather_memo_t *memo, c
     return memo && coll_gather_memo_for(memo, g, *center, *axis, radius, ihh) ? memo : NULL;
 }
 
-/* The box test's corners: gathered triangle gt, whose box passed the per-axis test against
- * the sweep's box glo..ghi (the swept axis's box grown by R = r + eps on every side), is
- * farther than R from the swept axis's box itself (its gaps on the axes, squared and
- * summed): every point of the triangle is then farther than r + eps from the swept axis,
- * the box test's own allowance, and the exact test would find no contact. A riser's or a
- * tread's edge diagonally beside the capsule on a stair (the step's up, forward and down
- * sweeps: a box test reaches past the corner by up to R (sqrt 2 - 1)). For triangles flat
- * along an axis only, whose box is as tight as the triangle (a tilted one's box is loose
- * and its plane cull follows: on the V corner's walls the test cost 3 % and culled
- * nothing). */
-CAND_INLINE bool gather_corner_clear(const coll_gather_tri_t *gt, const fm_vec3_t *glo, const fm_vec3_t *ghi,
-                                     float R)
-{
-    float s = 0.0f;
-    for (int a = 0; a < 3; a++) {
-        float m = f_max(glo->v[a] - gt->hi.v[a], gt->lo.v[a] - ghi->v[a]) + R;
-        if (m > 0.0f) s += m * m;
-    }
-    return s > R * R;
-}
-
 CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
 {
     for (uint8_t i = 0; i < memo->n; i++)
@@ -810,17 +789,16 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
-        coll_gather_tri_t *gt = &g->tris[k];
-        /* the plane cull only where it can beat the box test just passed: a triangle flat
-         * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
-         * as tight as its plane; there the box's corners instead (a stair's nosing) */
-        bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
-        if (!tilted && gather_corner_clear(gt, &glo, &ghi, q->r + q->eps)) continue;
         /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
         if (skip && memo_clear(skip, k)) continue;
         fm_vec3_t u = one_way_up(g->tris[k].inst);
+        /* the plane cull only where it can beat the box test just passed: a triangle flat
+         * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
+         * as tight as its plane */
+        coll_gather_tri_t *gt = &g->tris[k];
+        bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
         /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
          * margin from the swept capsule, so the exact test, which reports contacts within
          * the radius only, would find nothing (under_above). The crack rule's first look
