@@ -285,6 +285,33 @@ static bool held_at(float contact, float reach, float gap, fm_vec3_t normal, fm_
     return true;
 }
 
+/**
+ * Two contacts (normals n1, n2, from each contact to the ball's centre) hold the ball in a
+ * groove that runs at a slope to up: the groove's line (n1 x n2, along which the ball keeps
+ * both contacts) rises against up no more steeply than a walkable floor, and within the
+ * plane of the two normals (up with its part along that line taken out) they lie on either
+ * side of up. With up at right angles to the groove that is ball_held's wedge test (sides
+ * across up opposite). Under an up tilted along a crack, both normals of a ball resting on
+ * the crack's two level edges lean the same way across up (the crack rises along up like a
+ * ramp, 26 degrees here), so the plain test saw no wedge: the rule gave up and the foot stood
+ * on a low block 0.23 m down in the crack (soak s21 l216: r 0.26, up 27 degrees off y
+ * along an 11 cm crack between blocks 0.29 m high). Only asked where the plain test fails.
+ */
+static bool groove_wedge(const cb_ctx_t *c, fm_vec3_t n1, fm_vec3_t n2)
+{
+    const fm_vec3_t t = v3_cross(n1, n2);
+    const float tl = v3_len(t);
+    if (!(tl > 1e-3f)) return false; /* one normal: no groove */
+    const fm_vec3_t u = v3_madd(c->up, t, -v3_dot(t, c->up) / (tl * tl));
+    const float ul = v3_len(u);
+    if (!(ul >= c->body->cos_floor_max_angle)) return false; /* a groove too steep to stand in */
+    const fm_vec3_t un = v3_scale(u, 1.0f / ul);
+    const fm_vec3_t s1 = v3_reject(n1, un), s2 = v3_reject(n2, un);
+    /* (a normal within 3 degrees of up has no side: its direction across is rounding) */
+    if (!(v3_len2(s1) > 0.0025f) || !(v3_len2(s2) > 0.0025f)) return false;
+    return v3_dot(v3_norm(s1), v3_norm(s2)) < -0.05f;
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -496,7 +523,7 @@ again:;
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
         fm_vec3_t side1 = v3_norm(v3_reject(h1.normal, up)), side2 = v3_norm(v3_reject(h2.normal, up));
-        const bool wedge = v3_dot(side1, side2) < -0.05f;
+        const bool wedge = v3_dot(side1, side2) < -0.05f || groove_wedge(c, h1.normal, h2.normal);
         const bool onto_floor = !wedge && v3_dot(h2.normal, up) >= b->cos_floor_max_angle;
         /* the roll went from one side of the foot point to the other: across the groove it
          * is over (from a stair's nosing it ends on the edge of the tread just left, on the
