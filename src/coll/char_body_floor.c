@@ -309,6 +309,39 @@ static bool roll_above(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t way, const col
     return true;
 }
 
+/**
+ * Two contacts (normals n1, n2, from each contact to the ball's centre) hold the ball in a
+ * groove that runs at a slope to up: the groove's line (n1 x n2, along which the ball keeps
+ * both contacts) rises against up no more steeply than a walkable floor, and within the
+ * plane of the two normals (up with its part along that line taken out) they lie on either
+ * side of up. With up at right angles to the groove that is ball_held's wedge test (sides
+ * across up opposite). Under an up tilted along a crack, both normals of a ball resting on
+ * the crack's two level edges lean the same way across up (the crack rises along up like a
+ * ramp, 26 degrees here), so the plain test saw no wedge: the rule gave up and the foot stood
+ * on a low block 0.23 m down in the crack (soak s21 l216: r 0.26, up 27 degrees off y
+ * along an 11 cm crack between blocks 0.29 m high). Only asked where the plain test fails.
+ */
+static bool groove_wedge(const cb_ctx_t *c, const coll_sweep_hit_t *h1, const coll_sweep_hit_t *h2)
+{
+    const fm_vec3_t n1 = h1->normal, n2 = h2->normal;
+    const fm_vec3_t t = v3_cross(n1, n2);
+    const float tl = v3_len(t);
+    if (!(tl > 1e-3f)) return false; /* one normal: no groove */
+    const fm_vec3_t u = v3_madd(c->up, t, -v3_dot(t, c->up) / (tl * tl));
+    const float ul = v3_len(u);
+    if (!(ul >= c->body->cos_floor_max_angle)) return false; /* a groove too steep to stand in */
+    const fm_vec3_t un = v3_scale(u, 1.0f / ul);
+    const fm_vec3_t s1 = v3_reject(n1, un), s2 = v3_reject(n2, un);
+    /* (a normal within 3 degrees of up has no side: its direction across is rounding) */
+    if (!(v3_len2(s1) > 0.0025f) || !(v3_len2(s2) > 0.0025f)) return false;
+    /* the two contacts at one level along that up (as ball_held's "at one level", a tenth
+     * of a radius): the groove's two edges, not an edge and the floor the roll went down
+     * onto beside a block (soak s22 l271: up 18 degrees off y, the room floor 0.41 m under
+     * the block's edge; held at the edge's height, the foot stood 127 mm inside a hole) */
+    if (!(fabsf(v3_dot(v3_sub(h2->point, h1->point), un)) <= 0.1f * c->radius)) return false;
+    return v3_dot(v3_norm(s1), v3_norm(s2)) < -0.05f;
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -523,7 +556,7 @@ again:;
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
         fm_vec3_t side1 = v3_norm(v3_reject(h1.normal, up)), side2 = v3_norm(v3_reject(h2.normal, up));
-        const bool wedge = v3_dot(side1, side2) < -0.05f;
+        const bool wedge = v3_dot(side1, side2) < -0.05f || groove_wedge(c, &h1, &h2);
         const bool onto_floor = !wedge && v3_dot(h2.normal, up) >= b->cos_floor_max_angle;
         /* the roll went from one side of the foot point to the other: across the groove it
          * is over (from a stair's nosing it ends on the edge of the tread just left, on the
@@ -605,11 +638,11 @@ again:;
 
 /**
  * The crack rule's cheap first look over a floor the foot ray found: the ball dropped from
- * where ball_held drops it reaches (to within twice the skin) the plane of that floor
- * without touching anything. Then nothing above the floor can hold it (no groove edge, no
- * tile beside the gap) and the full rule, whose sweeps would meet every floor triangle under
- * the ball, is skipped. The stop short of the plane keeps its triangles out of reach, so
- * their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
+ * where ball_held drops it reaches (to within twice the skin; a skin over a level floor)
+ * the plane of that floor without touching anything. Then nothing above the floor can hold
+ * it (no groove edge, no tile beside the gap) and the full rule, whose sweeps would meet
+ * every floor triangle under the ball, is skipped. The stop short of the plane keeps its
+ * triangles out of reach, so their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
 static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
                                coll_sweep_hit_t *edge, float *edge_len)
@@ -621,10 +654,16 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
     float nu = v3_dot(floor->normal, up);
     if (!(nu > 0.02f)) return false;
     fm_vec3_t b0 = ball_drop_start(c, pos);
-    /* descent along up at which the ball would touch the floor's plane, less the margin */
-    float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu - 2.0f * c->skin;
+    /* descent along up at which the ball would touch the floor's plane, less the margin:
+     * over a level floor a skin, the footing tolerance, not two (edges 1.48 mm over a
+     * floor, a tile field's near copy 1.5 mm higher with its 6 mm slit over the foot, lay
+     * within two skins of the plane, unseen, and the foot stood on the floor in the slit:
+     * soak s22 l347); over a tilted one two (a skin there brings the ball within reach of
+     * a heightfield's next triangles: the Jolt scene +1.3 %) */
+    float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu -
+              (nu < 1.0f ? 2.0f : 1.0f) * c->skin;
     if (!(s > c->tiny)) return false;
-    /* The ball ends two skins (along up: 2 skin nu along the normal) over the floor's plane
+    /* The ball ends two skins (along up: 2 skin nu along the normal) over a tilted floor's plane
      * and starts higher: what lies within half that over the plane it never reaches (the
      * sloping floor's tilted neighbours, tested exactly otherwise). Over a level floor (a
      * grid-aligned level's) the plain sweep: its neighbours are level or upright, out of the
@@ -1201,7 +1240,11 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * face with its foot sunk into the floor. */
                 coll_ray_hit_t under;
                 float past = hit.distance + c->skin;
-                for (int k = 0; k < 3 && s.found && s.steep && gap < -step_eps && past < above - step_eps; k++) {
+                /* (up to six faces: in a triangle soup and its near copy every steep face
+                 * comes twice; over a foot inside the soup, four steep faces lay above the
+                 * walkable one 0.18 m over it, and with three looks the body stood steep,
+                 * its foot 179 mm under that floor: soak s22 l192) */
+                for (int k = 0; k < 6 && s.found && s.steep && gap < -step_eps && past < above - step_eps; k++) {
                     if (!cb_ray(c, v3_madd(origin, up, -past), v3_scale(up, -1.0f), above - past, &under) ||
                         !v3_finite(under.normal) || !v3_finite(under.point) || !isfinite(under.distance))
                         break;
