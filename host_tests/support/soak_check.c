@@ -790,8 +790,8 @@ static double swept_nearest(const soak_level_t *lvl, const char_body_settings_t 
  * step_height + 9 mm over the foot: the body climbs a riser up to step_height + 1 cm,
  * CB_MARGIN, docs/ARCHITECTURE.md; higher it meets a wall), within 1 mm of the full capsule
  * swept along the way at its own height, where the way goes towards it (not touched at the
- * start, or nearer at the end than at the start: a kerb beside the way or behind it is no
- * obstacle). The raised capsule of the free test misses the top edge of a low riser under
+ * start, or nearer somewhere along the way than at the start: a kerb the way runs along or
+ * leaves is no obstacle). The raised capsule of the free test misses the top edge of a low riser under
  * the ball: 10 mm higher it clears an edge whose contact normal is 11 degrees off up by 9.8
  * mm (soak s23 l338: a step-0 body's ball resting on the edge of a tile 14.6 mm higher,
  * 0.16 m ahead; walking into it the body slid along it as along a wall, 39 %). */
@@ -799,6 +799,8 @@ typedef struct {
     double q[4][3];   /* the swept segment (parallelogram) */
     double f[3], up[3], top; /* the foot and the height along up above it that is a riser */
     double r;
+    double mid[3], reach; /* a sphere around the swept segment grown by r + 1 mm (a cull) */
+    double len;           /* |D| */
 } riser_ctx_t;
 
 static double riser_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
@@ -819,18 +821,25 @@ static double riser_dist_cb(const double *t0, const double *t1, const double *t2
         }
     }
     if (np < 3) return 1e300;
-    double best = 1e300, d0 = 1e300, d1 = 1e300, e0[3], e1[3];
-    for (int m = 0; m < 3; m++) { e0[m] = c->q[3][m]; e1[m] = c->q[2][m]; }
+    double cen[3], rad = 0;
+    for (int m = 0; m < 3; m++) cen[m] = (t0[m] + t1[m] + t2[m]) / 3;
+    for (int k = 0; k < 3; k++) { double x = dist3(tv[k], cen); if (x > rad) rad = x; }
+    if (dist3(cen, c->mid) - rad > c->reach) return 1e300;
+    /* towards it: met along the way, or touched at the start and nearer somewhere along it
+     * (the way's distance to it is below the start's) */
+    double d0 = 1e300, best = 1e300;
     for (int k = 1; k + 1 < np; k++) {
-        double x = tri_quad_dist(poly[0], poly[k], poly[k + 1], (double (*)[3])c->q);
-        if (x < best) best = x;
-        x = soak_seg_tri_dist(c->q[0], c->q[1], poly[0], poly[k], poly[k + 1]);
+        double x = soak_seg_tri_dist(c->q[0], c->q[1], poly[0], poly[k], poly[k + 1]);
         if (x < d0) d0 = x;
-        x = soak_seg_tri_dist(e0, e1, poly[0], poly[k], poly[k + 1]);
-        if (x < d1) d1 = x;
     }
-    /* towards it: met along the way, or touched at the start and nearer at the end */
-    if (d0 <= c->r + 1e-3 && !(d1 < d0 - 1e-9)) return 1e300;
+    if (d0 - c->len > c->r + 1e-3) return 1e300; /* out of the way's reach */
+    double q[4][3];
+    memcpy(q, c->q, sizeof q);
+    for (int k = 1; k + 1 < np; k++) {
+        double x = tri_quad_dist(poly[0], poly[k], poly[k + 1], q);
+        if (x < best) best = x;
+    }
+    if (d0 <= c->r + 1e-3 && !(best < d0 - 1e-9)) return 1e300;
     return best;
 }
 
@@ -848,6 +857,9 @@ static bool riser_in_way(const soak_level_t *lvl, const char_body_settings_t *s,
         mid[k] = (full.a[k] + full.b[k] + D[k]) * 0.5;
     }
     double half = 0.5 * (dist3(full.a, full.b) + sqrt(dot3(D, D)));
+    memcpy(c.mid, mid, sizeof mid);
+    c.reach = half + c.r + 1e-3;
+    c.len = sqrt(dot3(D, D));
     return nearest_tri(lvl, s, mid, half, riser_dist_cb, &c) - c.r <= 1e-3;
 }
 
