@@ -296,10 +296,12 @@ double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *
 /* Nearest of the level's static and moving triangles seen by s to a shape within `half` of
  * `mid` (the bound that skips far triangles), by dist(triangle, ctx). */
 typedef double (*tri_dist_fn)(const double *t0, const double *t1, const double *t2, const void *ctx);
-static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3], double half,
-                          tri_dist_fn dist, const void *ctx)
+/* nearest_tri for what lies within `limit`: triangles farther are skipped (the result is
+ * `limit` when none is nearer) */
+static double nearest_tri_within(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3],
+                                 double half, double limit, tri_dist_fn dist, const void *ctx)
 {
-    double best = 1e300;
+    double best = limit;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
         const soak_wtri_t *w = &lvl->wtris[i];
         if (!tri_seen(w->mask, s)) continue;
@@ -327,6 +329,12 @@ static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s
         }
     }
     return best;
+}
+
+static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3], double half,
+                          tri_dist_fn dist, const void *ctx)
+{
+    return nearest_tri_within(lvl, s, mid, half, 1e300, dist, ctx);
 }
 
 static double seg_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
@@ -799,7 +807,6 @@ typedef struct {
     double q[4][3];   /* the swept segment (parallelogram) */
     double f[3], up[3], top; /* the foot and the height along up above it that is a riser */
     double r;
-    double mid[3], reach; /* a sphere around the swept segment grown by r + 1 mm (a cull) */
     double len;           /* |D| */
 } riser_ctx_t;
 
@@ -821,10 +828,6 @@ static double riser_dist_cb(const double *t0, const double *t1, const double *t2
         }
     }
     if (np < 3) return 1e300;
-    double cen[3], rad = 0;
-    for (int m = 0; m < 3; m++) cen[m] = (t0[m] + t1[m] + t2[m]) / 3;
-    for (int k = 0; k < 3; k++) { double x = dist3(tv[k], cen); if (x > rad) rad = x; }
-    if (dist3(cen, c->mid) - rad > c->reach) return 1e300;
     /* towards it: met along the way, or touched at the start and nearer somewhere along it
      * (the way's distance to it is below the start's) */
     double d0 = 1e300, best = 1e300;
@@ -857,10 +860,9 @@ static bool riser_in_way(const soak_level_t *lvl, const char_body_settings_t *s,
         mid[k] = (full.a[k] + full.b[k] + D[k]) * 0.5;
     }
     double half = 0.5 * (dist3(full.a, full.b) + sqrt(dot3(D, D)));
-    memcpy(c.mid, mid, sizeof mid);
-    c.reach = half + c.r + 1e-3;
     c.len = sqrt(dot3(D, D));
-    return nearest_tri(lvl, s, mid, half, riser_dist_cb, &c) - c.r <= 1e-3;
+    /* only what lies within r + 1 mm of the way is of interest (the bounding-sphere cull) */
+    return nearest_tri_within(lvl, s, mid, half, c.r + 2e-3, riser_dist_cb, &c) - c.r <= 1e-3;
 }
 
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp)
