@@ -350,6 +350,36 @@ static void test_oracle_progress_foot_held_over_the_floor(void)
     TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, s, V(-1.0f, 0, 0), V(0, 0, 0.0333f)));
 }
 
+/* s23 l338: step 0, snap 0, r 0.849, the foot on a tile (floor tri 1726), the ball resting
+ * on the top edge of the next tile 14.6 mm higher (tris 1731, 1737, 1738, 1740), 0.16 m
+ * beside the foot, 11 degrees off up. Walking into it (2.35 mm in 1/240 s) is climbing a
+ * 14.6 mm riser with step 0: higher than the 1 cm margin over the step zone, a wall to the
+ * body, which slid along it (0.92 mm, 39 %). The capsule raised by 1 cm clears the edge by
+ * 9.8 mm, the one lowered by 2 mm meets the floor, which is right under the foot: "free
+ * flat floor" before. The riser in the way is seen now: no verdict. Away from it, with the
+ * tile hidden, or with a step height whose zone reaches the riser (6 mm: the checker counts
+ * a riser from step + 9 mm, a millimetre under the body's margin), the verdict stands. */
+static void replay_and_level(const char *path, soak_replay_t *rp, soak_frame_t *fr, uint32_t cap, int *line);
+static void test_oracle_progress_riser_above_the_step_zone(void)
+{
+    static soak_frame_t fr[4];
+    soak_replay_t rp;
+    int line = 0;
+    replay_and_level(REPLAY_DIR "/soak_s23_l338_progress.replay", &rp, fr, 4, &line);
+    char_body_settings_t s = rp.settings;
+    const fm_vec3_t p = V(-0x1.c43506p+3f, 0x1.40968cp-3f, -0x1.65bc68p+4f); /* before frame 3 */
+    const float dt = fr[3].dt;
+    const fm_vec3_t d = V(fr[3].input.x * dt, 0, fr[3].input.z * dt), back = V(-d.x, 0, -d.z);
+    TEST_ASSERT_FALSE(soak_check_free_flat(&lvl, &s, p, d));
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, &s, p, back));
+    s.step_height = 0.006f;
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, &s, p, d));
+    s.step_height = 0.0f;
+    const int tile[4] = {1731, 1737, 1738, 1740};
+    for (int k = 0; k < 4; k++) lvl.wtris[tile[k]].mask = 0;
+    TEST_ASSERT_TRUE(soak_check_free_flat(&lvl, &s, p, d));
+}
+
 /* Two floor quads at y = 0 with a gap between x = a and x = b (a < b). */
 static void two_floors(double a, double b, int both)
 {
@@ -1324,6 +1354,7 @@ int main(void)
     RUN_TEST(test_oracle_progress_at_a_ramp_crest);
     RUN_TEST(test_oracle_progress_wall_end_between_samples);
     RUN_TEST(test_oracle_progress_foot_held_over_the_floor);
+    RUN_TEST(test_oracle_progress_riser_above_the_step_zone);
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);

@@ -296,10 +296,12 @@ double soak_check_body_pen(const soak_level_t *lvl, const char_body_settings_t *
 /* Nearest of the level's static and moving triangles seen by s to a shape within `half` of
  * `mid` (the bound that skips far triangles), by dist(triangle, ctx). */
 typedef double (*tri_dist_fn)(const double *t0, const double *t1, const double *t2, const void *ctx);
-static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3], double half,
-                          tri_dist_fn dist, const void *ctx)
+/* nearest_tri for what lies within `limit`: triangles farther are skipped (the result is
+ * `limit` when none is nearer) */
+static double nearest_tri_within(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3],
+                                 double half, double limit, tri_dist_fn dist, const void *ctx)
 {
-    double best = 1e300;
+    double best = limit;
     for (uint32_t i = 0; i < lvl->nwtris; i++) {
         const soak_wtri_t *w = &lvl->wtris[i];
         if (!tri_seen(w->mask, s)) continue;
@@ -327,6 +329,12 @@ static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s
         }
     }
     return best;
+}
+
+static double nearest_tri(const soak_level_t *lvl, const char_body_settings_t *s, const double mid[3], double half,
+                          tri_dist_fn dist, const void *ctx)
+{
+    return nearest_tri_within(lvl, s, mid, half, 1e300, dist, ctx);
 }
 
 static double seg_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
@@ -786,6 +794,77 @@ static double swept_nearest(const soak_level_t *lvl, const char_body_settings_t 
     return nearest_tri(lvl, s, mid, half, quad_dist_cb, q) - cap->r;
 }
 
+/* A riser in the way: the part of a triangle higher than the step zone reaches (more than
+ * step_height + 9 mm over the foot: the body climbs a riser up to step_height + 1 cm,
+ * CB_MARGIN, docs/ARCHITECTURE.md; higher it meets a wall), within 1 mm of the full capsule
+ * swept along the way at its own height, where the way goes towards it (not touched at the
+ * start, or nearer somewhere along the way than at the start: a kerb the way runs along or
+ * leaves is no obstacle). The raised capsule of the free test misses the top edge of a low riser under
+ * the ball: 10 mm higher it clears an edge whose contact normal is 11 degrees off up by 9.8
+ * mm (soak s23 l338: a step-0 body's ball resting on the edge of a tile 14.6 mm higher,
+ * 0.16 m ahead; walking into it the body slid along it as along a wall, 39 %). */
+typedef struct {
+    double q[4][3];   /* the swept segment (parallelogram) */
+    double f[3], up[3], top; /* the foot and the height along up above it that is a riser */
+    double r;
+    double len;           /* |D| */
+} riser_ctx_t;
+
+static double riser_dist_cb(const double *t0, const double *t1, const double *t2, const void *ctx)
+{
+    const riser_ctx_t *c = ctx;
+    const double *tv[3] = {t0, t1, t2};
+    double poly[4][3], h[3], d[3];
+    int np = 0;
+    for (int k = 0; k < 3; k++) { sub3(d, tv[k], c->f); h[k] = dot3(d, c->up) - c->top; }
+    /* clip the triangle to the half-space above the riser height */
+    for (int k = 0; k < 3; k++) {
+        int j = (k + 1) % 3;
+        if (h[k] > 0) memcpy(poly[np++], tv[k], sizeof poly[0]);
+        if ((h[k] > 0) != (h[j] > 0)) {
+            double u = h[k] / (h[k] - h[j]);
+            for (int m = 0; m < 3; m++) poly[np][m] = tv[k][m] + u * (tv[j][m] - tv[k][m]);
+            np++;
+        }
+    }
+    if (np < 3) return 1e300;
+    /* towards it: met along the way, or touched at the start and nearer somewhere along it
+     * (the way's distance to it is below the start's) */
+    double d0 = 1e300, best = 1e300;
+    for (int k = 1; k + 1 < np; k++) {
+        double x = soak_seg_tri_dist(c->q[0], c->q[1], poly[0], poly[k], poly[k + 1]);
+        if (x < d0) d0 = x;
+    }
+    if (d0 - c->len > c->r + 1e-3) return 1e300; /* out of the way's reach */
+    double q[4][3];
+    memcpy(q, c->q, sizeof q);
+    for (int k = 1; k + 1 < np; k++) {
+        double x = tri_quad_dist(poly[0], poly[k], poly[k + 1], q);
+        if (x < best) best = x;
+    }
+    if (d0 <= c->r + 1e-3 && !(best < d0 - 1e-9)) return 1e300;
+    return best;
+}
+
+static bool riser_in_way(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, const double D[3])
+{
+    riser_ctx_t c;
+    soak_capsule_t full, sweep;
+    soak_capsules_at(s, owner, &full, &sweep);
+    foot_point(s, owner, c.up, c.f, &c.r);
+    c.top = (double)s->step_height + 0.009;
+    double mid[3];
+    for (int k = 0; k < 3; k++) {
+        c.q[0][k] = full.a[k]; c.q[1][k] = full.b[k];
+        c.q[2][k] = full.b[k] + D[k]; c.q[3][k] = full.a[k] + D[k];
+        mid[k] = (full.a[k] + full.b[k] + D[k]) * 0.5;
+    }
+    double half = 0.5 * (dist3(full.a, full.b) + sqrt(dot3(D, D)));
+    c.len = sqrt(dot3(D, D));
+    /* only what lies within r + 1 mm of the way is of interest (the bounding-sphere cull) */
+    return nearest_tri_within(lvl, s, mid, half, c.r + 2e-3, riser_dist_cb, &c) - c.r <= 1e-3;
+}
+
 bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, fm_vec3_t disp)
 {
     const double h0 = 0.01, below = 0.002;
@@ -841,7 +920,9 @@ bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s
     soak_capsule_t full, sweep;
     soak_capsules_at(s, p0, &full, &sweep);
     double D[3] = {disp.x, disp.y, disp.z};
-    return swept_nearest(lvl, s, &full, D) >= h0 - 1e-3;
+    if (!(swept_nearest(lvl, s, &full, D) >= h0 - 1e-3)) return false;
+    /* and no riser above the step zone in the way, which the raised capsule can clear */
+    return !riser_in_way(lvl, s, owner, D);
 }
 
 bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
