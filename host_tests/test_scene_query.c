@@ -1783,6 +1783,96 @@ static void test_gathered_sweep_memo_matches_plain(void)
     TEST_ASSERT_TRUE(calls_memo + 100 < calls_plain);
 }
 
+/* The gathered ray, down a floor of quads (two triangles each, 0.5 m, tilted a little in
+ * half the cases), through the vertices, along the shared edges and anywhere, with the
+ * triangles' preps made or not by an earlier sweep: the hit of the plain loop over the
+ * gathered triangles (coll_ray_triangle on each, in order, kept when nearer than the one
+ * held) bit for bit. On an edge two triangles share the ray meets both at the same
+ * distance: the first is the hit (the gathered ray no longer tests the second past its
+ * edge test: a hit is taken only nearer). */
+static void test_gathered_ray_down_shared_edges(void)
+{
+    const int n = 8;
+    const float q = 0.5f;
+    core_rng_t rng;
+    core_rng_seed(&rng, 2222);
+    static coll_gather_t g;
+    int rays = 0, hits = 0, ties = 0;
+    for (int tilt = 0; tilt < 2; tilt++) {
+        uint32_t nv = 0, nt = 0;
+        for (int z = 0; z <= n; z++)
+            for (int x = 0; x <= n; x++) {
+                float *v = &g_verts[3 * nv++];
+                v[0] = (float)x * q;
+                v[1] = tilt ? 0.03f * (float)x + 0.011f * (float)z : 0.0f;
+                v[2] = (float)z * q;
+            }
+        for (int z = 0; z < n; z++)
+            for (int x = 0; x < n; x++) {
+                uint32_t a = (uint32_t)(z * (n + 1) + x), b = a + 1, c = a + (uint32_t)n + 1, d = c + 1;
+                uint32_t t6[6] = { a, c, b, b, c, d };
+                for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = t6[k];
+                nt += 2;
+            }
+        const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+        coll_scene_t s;
+        coll_query_stats_t st;
+        coll_mesh_instance_t inst;
+        scene_of_one_mesh(&s, &st, &inst, m);
+        const fm_vec3_t down = {{ 0.0f, -1.0f, 0.0f }};
+        for (int i = 0; i < 1500; i++) {
+            int kind = i % 3;
+            float x = (float)core_rng_range(&rng, 0.6, 3.4), z = (float)core_rng_range(&rng, 0.6, 3.4);
+            if (kind == 0) { x = q * (float)(1 + i % 6); z = q * (float)(1 + (i / 6) % 6); } /* a vertex */
+            else if (kind == 1) { if (i & 1) x = q * (float)(1 + i % 6); else z = q * (float)(1 + i % 6); } /* an edge */
+            fm_vec3_t o = {{ x, 1.0f, z }};
+            fm_vec3_t lo = {{ x - 0.8f, -0.5f, z - 0.8f }}, hi = {{ x + 0.8f, 1.6f, z + 0.8f }};
+            coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+            TEST_ASSERT_TRUE(g.valid);
+            if (i & 4) { /* the preps made by a sweep first */
+                coll_sweep_hit_t sh;
+                const fm_vec3_t d = {{ 0.0f, -0.6f, 0.0f }};
+                (void)coll_gather_capsule_sweep(&g, o, UP, 0.3f, 0.2f, d, &sh);
+            }
+            /* the plain loop */
+            fm_vec3_t rel;
+            fm_vec3_sub(&rel, &o, &g.origin);
+            bool have = false;
+            float best = 1.4f; /* the ray inside the gathered box: answered from it */
+            int32_t tri = -1, found = 0;
+            fm_vec3_t nrm = {{ 0.0f, 0.0f, 0.0f }};
+            for (uint16_t k = 0; k < g.ntris; k++) {
+                const coll_gather_tri_t *gt = &g.tris[k];
+                fm_vec3_t w0, shape[3], oo;
+                fm_vec3_sub(&w0, &gt->w0, &rel);
+                shape[0] = (fm_vec3_t){{ 0.0f, 0.0f, 0.0f }};
+                shape[1] = gt->e1;
+                shape[2] = gt->e2;
+                fm_vec3_negate(&oo, &w0);
+                coll_prim_hit_t ph;
+                if (coll_ray_triangle(&oo, &down, shape, best, &ph)) {
+                    found++;
+                    if (!have || ph.t < best) { have = true; best = ph.t; tri = gt->tri; nrm = ph.normal; }
+                }
+            }
+            coll_ray_hit_t h;
+            bool got = coll_gather_raycast(&g, o, down, 1.4f, &h);
+            TEST_ASSERT_EQUAL(have, got);
+            rays++;
+            if (got) {
+                hits++;
+                if (found > 1) ties++;
+                TEST_ASSERT_EQUAL_MEMORY(&best, &h.distance, sizeof best);
+                TEST_ASSERT_EQUAL_MEMORY(&nrm, &h.normal, sizeof nrm);
+                TEST_ASSERT_EQUAL_INT32(tri, h.triangle);
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)st.gather_misses); /* every query answered from the gather */
+    }
+    printf("gathered rays down a quad floor: %d rays, %d hits, %d on an edge two triangles share\n", rays, hits, ties);
+    TEST_ASSERT_TRUE(ties > 500);
+}
+
 /* Capsule sweeps whose swept volume passes within 0.3 % of r of a tilted floor's plane, on
  * either side of touching: the scene's sweep (its plane cull before the exact test
  * included) finds a hit exactly when the exact triangle test does on some triangle. */
@@ -2153,6 +2243,7 @@ int main(void)
     RUN_TEST(test_roll_above_its_contact_plane_matches_plain);
     RUN_TEST(test_gather_codes_change_nothing);
     RUN_TEST(test_gathered_sweep_memo_matches_plain);
+    RUN_TEST(test_gathered_ray_down_shared_edges);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);
     return UNITY_END();

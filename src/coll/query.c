@@ -719,6 +719,16 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
     return true;
 }
 
+/* The float just below x, a hit's distance (finite, >= 0): s <= f_below(x) is s < x; -1 for
+ * 0 (no distance is below it). */
+CAND_INLINE float f_below(float x)
+{
+    if (!(x > 0.0f)) return -1.0f;
+    union { float f; uint32_t u; } b = { x };
+    b.u -= 1u;
+    return b.f;
+}
+
 bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, float max_dist, coll_ray_hit_t *hit)
 {
     if (!g || !g->scene) return false;
@@ -740,6 +750,11 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
      * raw normal (and a hit's unit normal) from its prep: the same expressions */
     coll_ray_shear_t sh;
     bool sheared = coll_ray_shear(&dir, &sh);
+    /* The farthest distance a candidate's hit could be taken at: the limit, then, once a
+     * hit is held, the float just below it (a hit must be nearer: at the same distance,
+     * a ray down the edge two triangles share, the second would compute its plane
+     * distance, point and normal only to be dropped). */
+    float smax = rb.best;
     for (uint16_t k = 0; sheared && k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
@@ -751,9 +766,10 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
             fm_vec3_t u = one_way_up_rotated(gt->inst);
             if (!one_way_ray(&u, shape, &o, &dir)) continue;
         }
-        if (coll_ray_triangle_sheared(&o, &dir, &sh, shape, rb.best, &gt->prep, &ph) && (!rb.have || ph.t < rb.best)) {
+        if (coll_ray_triangle_sheared(&o, &dir, &sh, shape, smax, &gt->prep, &ph) && (!rb.have || ph.t < rb.best)) {
             fm_vec3_add(&ph.point, &ph.point, &w0);
             best_take(&rb, &ph, gt->inst, NULL, gt->tri);
+            smax = f_below(ph.t);
         }
     }
     if (g->types & COLL_TYPE_BODY) ray_bodies(g->scene, &origin, &dir, g->read_mask, &rb);
