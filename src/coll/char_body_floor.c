@@ -1019,6 +1019,30 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
 }
 
 /**
+ * Airborne and not moved this step (at most a tenth of the skin, as at_rest_on), the foot
+ * over a walkable floor out of reach below, while the sweep capsule's rounded bottom rests
+ * on a walkable edge or face (touching it along -up within contact_eps, its normal within
+ * the walkable angle) that the slide could not push it off (slide_off_edge: a wall on the
+ * other side stops the push at once): the body rests on that edge, it is standing, not
+ * falling. Without this it hung at rest in the air, the foot 56 mm over the floor, the
+ * ball on a 0.16 m slab's edge 2 degrees off up and a wall against the capsule's other
+ * side, for ever (soak s26 l95: r 0.63, step 0.16). The probe then snaps it towards that
+ * floor, swept: the edge stops it where it rests.
+ */
+static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    fm_vec3_t moved = v3_sub(pos, before);
+    if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
+    coll_sweep_hit_t h;
+    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) ||
+        !isfinite(h.t) || !v3_finite(h.normal))
+        return false;
+    return v3_dot(h.normal, c->up) >= b->cos_floor_max_angle;
+}
+
+/**
  * The foot ray found a face too steep to stand on, nearly along up (within 60 degrees: a
  * wall, a tile's side), within reach. Under a tilted up the ray through a crack between
  * tiles meets a tile's side, and the body stood "steep" on it with its foot 14-85 mm
@@ -1194,6 +1218,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 else if (gap > reach && !one_way_deep &&
                          (gap <= 2.0f * contact_eps || gap <= c->radius * (1.0f - nu) / nu + contact_eps) &&
                          (held_over_floor(c, *pos, gap) || at_rest_on(c, *pos, &hit, gap)))
+                    reach = gap;
+                else if (gap > reach && !one_way_deep && !was_grounded && held_on_edge(c, *pos))
                     reach = gap;
                 if (gap <= reach && !one_way_deep) {
                     s = (support_t){true, false, gap, hit.normal, hit.point, hit.id, hit.instance};
