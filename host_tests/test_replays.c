@@ -169,6 +169,44 @@ static void test_checker_allowance_follows_the_seed_rule(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-6, expect_raw, ex);
 }
 
+/* The velocity oracle's push-out allowance is sized by the overlap the body's recover
+ * pushes out of, the walkable allowance not taken off (soak s25 l6: the sweep capsule 0.8
+ * mm into a walkable 42-degree slope, tolerated by the allowance, pushed 1.3 mm out along
+ * its normal with velocity 0), at most SOAK_PEN_TOL. */
+static void test_checker_pushout_depth_ignores_the_allowance(void)
+{
+    test_checker_allowance_follows_the_seed_rule(); /* lvl: the one 40-degree slope */
+    double ang = 40.0 * 3.14159265358979323846 / 180.0, cs = cos(ang), sn = sin(ang);
+    static char_body_t body;
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = 0.5f; s.height = 2.0f; s.step_height = 0.05f; s.floor_snap_distance = 0.3f;
+    s.center_offset.y = 1.0f;
+    s.floor_max_angle = (float)(45.0 * 3.14159265358979323846 / 180.0);
+    /* raised along the slope's normal (-sin, cos, 0) until the sweep capsule is 0.8 mm in */
+    double lift = (0.5 - 0.55 * cs) - 0.0008;
+    fm_vec3_t owner = {{(float)(-sn * lift), (float)(cs * lift), 0.0f}};
+    char_body_init(&body, &owner);
+    char_body_configure(&body, &s);
+    soak_capsule_t full, sweep;
+    int32_t tri;
+    double raw = 0;
+    soak_body_capsules(&body, &full, &sweep);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, &body.settings, &sweep, &tri, &raw));
+    TEST_ASSERT_DOUBLE_WITHIN(2e-6, 0.0008, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    /* deep in the allowance: capped at SOAK_PEN_TOL (no more than a real overlap allows) */
+    owner = (fm_vec3_t){{0.0f, 0.0f, 0.0f}};
+    char_body_init(&body, &owner);
+    char_body_configure(&body, &s);
+    soak_body_capsules(&body, &full, &sweep);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, SOAK_PEN_TOL, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    /* clear of the slope: nothing */
+    owner = (fm_vec3_t){{(float)(-sn * 0.1), (float)(cs * 0.1), 0.0f}};
+    char_body_init(&body, &owner);
+    char_body_configure(&body, &s);
+    soak_body_capsules(&body, &full, &sweep);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+}
+
 /* ---------------------------------------------------------------- the behaviour oracles */
 
 static soak_sim_t osim;
@@ -1349,6 +1387,7 @@ int main(void)
     RUN_TEST(test_checker_sees_penetration_and_floor_reach);
     RUN_TEST(test_checker_flags_bad_body_states);
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
+    RUN_TEST(test_checker_pushout_depth_ignores_the_allowance);
     RUN_TEST(test_oracle_direction);
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_progress_at_a_ramp_crest);

@@ -174,6 +174,27 @@ double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t
     return best;
 }
 
+/* The overlap the body's recover pushes out of at a step's start: the deepest raw
+ * penetration (r - distance) of cap into a seen static triangle, the walkable allowance
+ * not taken off (the recover does not know the seed's rule: a sweep capsule 0.8 mm into
+ * a walkable slope that the allowance tolerates is pushed 1.3 mm out along its normal,
+ * soak s25 l6), at most SOAK_PEN_TOL (deeper, beyond the allowance, the step is exempt;
+ * within it, no more push-out is tolerated than for a real overlap). */
+double soak_check_pushout_depth(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
+{
+    double best = 0;
+    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
+    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
+    for (uint32_t i = 0; i < lvl->nwtris; i++) {
+        const soak_wtri_t *w = &lvl->wtris[i];
+        if (!tri_seen(w->mask, s)) continue;
+        if (dist3(mid, w->c) > half + cap->r + w->rad) continue;
+        double pen = cap->r - soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
+        if (pen > best) best = pen;
+    }
+    return best < SOAK_PEN_TOL ? best : SOAK_PEN_TOL;
+}
+
 /* Signed crossings of the ray from p along dir with the seen triangles of closed pieces:
  * +1 leaving through a front face (by winding: the outside of its solid), -1 entering. The
  * sum is the number of closed solids (boxes of a staircase overlap: each counts) around p. */

@@ -273,7 +273,9 @@ int soak_sim_step(soak_sim_t *sim, const soak_frame_t *f, bool check)
         m.grounded0 = char_body_is_on_floor(b);
         m.steep0 = char_body_is_on_steep_surface(b);
         m.pen0 = sim->excused || sim->pen_before > SOAK_PEN_TOL;
-        m.pen_depth = sim->pen_before;
+        /* the push-out's size: what the recover pushes out of, within the allowance too */
+        m.pen_depth = soak_check_pushout_depth(sim->lvl, s, &sweep);
+        if (m.pen_depth < sim->pen_before) m.pen_depth = sim->pen_before;
         m.launched = sim->vel_before.x * s->up.x + sim->vel_before.y * s->up.y + sim->vel_before.z * s->up.z > 1e-6f;
     }
 

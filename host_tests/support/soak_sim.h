@@ -191,6 +191,9 @@ void soak_body_capsules(const char_body_t *b, soak_capsule_t *full, soak_capsule
  *  tri_out: index in lvl->wtris; raw_out: the raw depth of that triangle. */
 double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
                              const soak_capsule_t *cap, int32_t *tri_out, double *raw_out);
+/** The start overlap the body's recover pushes out of: the deepest raw penetration of cap
+ *  into a seen static triangle (the walkable allowance not taken off), at most SOAK_PEN_TOL. */
+double soak_check_pushout_depth(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap);
 /** True when p lies inside a closed static solid (a piece whose every edge is shared
  *  once reversed: boxes, tile fields, stair blocks), by the signed crossings of two rays
  *  with its seen triangles. A capsule whose centre is inside one and that overlaps none of
@@ -269,7 +272,7 @@ typedef struct {
     bool grounded0, steep0;       ///< floor state before the step
     bool excuse;                  ///< teleport, up change, mover near or carried this frame
     bool pen0;                    ///< started overlapping (penetrating or in an excused state)
-    double pen_depth;             ///< the checker's penetration at the start, m (under SOAK_PEN_TOL
+    double pen_depth;             ///< the start overlap the recover pushes out of (soak_check_pushout_depth), m (under SOAK_PEN_TOL
                                   ///< the body's recover still pushes it out: not motion)
     bool launched;                ///< the velocity along up before the step rose: a jump, not a walk
 } soak_motion_t;
