@@ -152,10 +152,12 @@ static double walkable_allowance(const soak_wtri_t *w, const char_body_settings_
     return a > 0 ? a : 0;
 }
 
-double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
-                             const soak_capsule_t *cap, int32_t *tri_out, double *raw_out)
+/* One pass over the seen static triangles near cap: the largest penetration beyond the
+ * walkable allowance (its triangle and raw depth), and the deepest raw penetration. */
+static double static_pen_scan(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap,
+                              int32_t *tri_out, double *raw_out, double *deepest_out)
 {
-    double best = 0, raw = 0;
+    double best = 0, raw = 0, deepest = 0;
     int32_t bt = -1;
     double mid[3], half = dist3(cap->a, cap->b) * 0.5;
     for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
@@ -166,12 +168,20 @@ double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t
         double d = soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
         double pen = cap->r - d;
         if (pen <= 0) continue;
+        if (pen > deepest) deepest = pen;
         double ex = pen - walkable_allowance(w, s, mid);
         if (ex > best) { best = ex; bt = (int32_t)i; raw = pen; }
     }
     if (tri_out) *tri_out = bt;
     if (raw_out) *raw_out = raw;
+    if (deepest_out) *deepest_out = deepest;
     return best;
+}
+
+double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t *s,
+                             const soak_capsule_t *cap, int32_t *tri_out, double *raw_out)
+{
+    return static_pen_scan(lvl, s, cap, tri_out, raw_out, NULL);
 }
 
 /* The overlap the body's recover pushes out of at a step's start: the deepest raw
@@ -182,17 +192,9 @@ double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t
  * within it, no more push-out is tolerated than for a real overlap). */
 double soak_check_pushout_depth(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
 {
-    double best = 0;
-    double mid[3], half = dist3(cap->a, cap->b) * 0.5;
-    for (int k = 0; k < 3; k++) mid[k] = (cap->a[k] + cap->b[k]) * 0.5;
-    for (uint32_t i = 0; i < lvl->nwtris; i++) {
-        const soak_wtri_t *w = &lvl->wtris[i];
-        if (!tri_seen(w->mask, s)) continue;
-        if (dist3(mid, w->c) > half + cap->r + w->rad) continue;
-        double pen = cap->r - soak_seg_tri_dist(cap->a, cap->b, w->v[0], w->v[1], w->v[2]);
-        if (pen > best) best = pen;
-    }
-    return best < SOAK_PEN_TOL ? best : SOAK_PEN_TOL;
+    double deepest;
+    static_pen_scan(lvl, s, cap, NULL, NULL, &deepest);
+    return deepest < SOAK_PEN_TOL ? deepest : SOAK_PEN_TOL;
 }
 
 /* Signed crossings of the ray from p along dir with the seen triangles of closed pieces:
