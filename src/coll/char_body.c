@@ -256,11 +256,12 @@ void char_body_teleport(char_body_t *body, fm_vec3_t owner_pos, bool reset_force
 
 static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
 {
-    /* Well under the limit (the common case), without the square root and the finiteness
-     * tests: |v|^2 at most 0.98 max^2 is finite, so every component is, and its rounded
-     * square root is below max_speed, so the test below would keep v as it is. */
-    if (v3_len2(v) <= 0.98f * max_speed * max_speed) return v;
+    /* finite first: no ordered compare of a NaN (the console emulator stops on the invalid
+     * operation: test_bad_velocities_and_walls on the N64 ROM) */
     if (!v3_finite(v)) return v3(0.0f, 0.0f, 0.0f);
+    /* Well under the limit (the common case), without the square root: its rounded square
+     * root is below max_speed, so the test below would keep v as it is. */
+    if (v3_len2(v) <= 0.98f * max_speed * max_speed) return v;
     float l = v3_len(v);
     if (l > max_speed) v = v3_scale(v, max_speed / l);
     return v;
