@@ -1436,6 +1436,21 @@ static void test_gather_shrinks_its_box_on_dense_triangles(void)
     TEST_ASSERT_EQUAL_UINT32(1, st.gather_overflows);
 }
 
+/* The triangles of an n x n grid of quads over the (n + 1)^2 vertices in g_verts (row by
+ * row along x), two a quad split along the same diagonal, into g_idx: their count. */
+static uint32_t grid_quad_indices(int n)
+{
+    uint32_t nt = 0;
+    for (int z = 0; z < n; z++)
+        for (int x = 0; x < n; x++) {
+            uint32_t a = (uint32_t)(z * (n + 1) + x), b = a + 1, c = a + (uint32_t)(n + 1), d = c + 1;
+            const uint32_t q[6] = { a, c, b, b, c, d };
+            for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = q[k];
+            nt += 2;
+        }
+    return nt;
+}
+
 /* The crack rule's first look drops the capsule's bottom ball to two skins over the floor
  * the foot ray found (char_body_floor.c, ball_reaches_floor): a sweep that stays above that
  * plane. coll_gather_capsule_sweep_above gives the same answer as the plain gathered sweep,
@@ -1446,7 +1461,7 @@ static void test_gathered_sweep_above_a_floor_plane(void)
 {
     /* a rolling terrain of 0.5 m quads (Jolt's CharacterVirtual scene's, smaller) */
     const int N = 24;
-    uint32_t nv = 0, nt = 0;
+    uint32_t nv = 0;
     for (int z = 0; z <= N; z++)
         for (int x = 0; x <= N; x++) {
             float fx = -6.0f + 0.5f * (float)x, fz = -6.0f + 0.5f * (float)z;
@@ -1455,14 +1470,7 @@ static void test_gathered_sweep_above_a_floor_plane(void)
             g_verts[3 * nv + 2] = fz;
             nv++;
         }
-    for (int z = 0; z < N; z++)
-        for (int x = 0; x < N; x++) {
-            uint32_t a = (uint32_t)(z * (N + 1) + x), b = a + 1, c = a + (uint32_t)(N + 1), d = c + 1;
-            uint32_t q[6] = { a, c, b, b, c, d };
-            for (int k = 0; k < 6; k++) g_idx[3 * nt + k] = q[k];
-            nt += 2;
-        }
-    const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+    const coll_mesh_t *m = build_mesh(0, nv, grid_quad_indices(N), NULL);
     coll_scene_t s;
     coll_query_stats_t st;
     coll_mesh_instance_t inst;
@@ -1799,7 +1807,7 @@ static void test_gathered_ray_down_shared_edges(void)
     static coll_gather_t g;
     int rays = 0, hits = 0, ties = 0;
     for (int tilt = 0; tilt < 2; tilt++) {
-        uint32_t nv = 0, nt = 0;
+        uint32_t nv = 0;
         for (int z = 0; z <= n; z++)
             for (int x = 0; x <= n; x++) {
                 float *v = &g_verts[3 * nv++];
@@ -1807,14 +1815,7 @@ static void test_gathered_ray_down_shared_edges(void)
                 v[1] = tilt ? 0.03f * (float)x + 0.011f * (float)z : 0.0f;
                 v[2] = (float)z * q;
             }
-        for (int z = 0; z < n; z++)
-            for (int x = 0; x < n; x++) {
-                uint32_t a = (uint32_t)(z * (n + 1) + x), b = a + 1, c = a + (uint32_t)n + 1, d = c + 1;
-                uint32_t t6[6] = { a, c, b, b, c, d };
-                for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = t6[k];
-                nt += 2;
-            }
-        const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+        const coll_mesh_t *m = build_mesh(0, nv, grid_quad_indices(n), NULL);
         coll_scene_t s;
         coll_query_stats_t st;
         coll_mesh_instance_t inst;

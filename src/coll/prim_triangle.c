@@ -244,14 +244,23 @@ static inline void tri_setup_raw(tri_t *t, const fm_vec3_t tri[3], int *apex, fl
     *nn_out = v3_len2(t->nraw);
 }
 
+/* Whether a triangle with raw normal nraw (nn: |nraw|^2, lmax: its longest edge squared)
+ * has a face (not a needle or a point), and its unit normal *n then (else zero): one rule
+ * for tri_setup and the ray's prep. */
+PRIM_INLINE bool face_normal(fm_vec3_t nraw, float nn, float lmax, fm_vec3_t *n)
+{
+    bool has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
+    *n = has_face ? v3_scale(nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
+    return has_face;
+}
+
 static void tri_setup(tri_t *t, const fm_vec3_t tri[3])
 {
     int apex;
     float nn, lmax;
     tri_setup_raw(t, tri, &apex, &nn, &lmax);
     t->apex = (uint8_t)apex;
-    t->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
-    t->n = t->has_face ? v3_scale(t->nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
+    t->has_face = face_normal(t->nraw, nn, lmax, &t->n);
 }
 
 /* tri_setup through a triangle's prep (prim.h): made from it when it is ready, else made
@@ -1080,8 +1089,7 @@ PRIM_INLINE bool ray_triangle_sheared_in(const fm_vec3_t *o, const fm_vec3_t *d,
         /* a hit: its unit normal is tri_setup's when the triangle has a face; kept */
         p->nraw = nraw;
         p->apex = (uint8_t)apex;
-        p->has_face = nn > 1e-14f * lmax * lmax && nn > 1e-30f && f_finite(nn);
-        p->n = p->has_face ? v3_scale(nraw, 1.0f / sqrtf(nn)) : v3(0.0f, 0.0f, 0.0f);
+        p->has_face = face_normal(nraw, nn, lmax, &p->n);
         p->ready = true;
     }
     /* (has_face: |nraw|^2 > 1e-30 and finite, so v3_unit_or_against's own expression) */
