@@ -976,6 +976,15 @@ static void test_dedup_overflow_falls_back_exactly(void)
     TEST_ASSERT_FLOAT_WITHIN(1e-4f, (float)best, rh.distance);
 }
 
+/* Two sweeps' hits the same bit for bit: distance, normal, point, triangle. */
+static void assert_same_sweep_hit(const coll_sweep_hit_t *a, const coll_sweep_hit_t *b)
+{
+    TEST_ASSERT_EQUAL_MEMORY(&a->t, &b->t, sizeof a->t);
+    TEST_ASSERT_EQUAL_MEMORY(&a->normal, &b->normal, sizeof a->normal);
+    TEST_ASSERT_EQUAL_MEMORY(&a->point, &b->point, sizeof a->point);
+    TEST_ASSERT_EQUAL_INT32(a->triangle, b->triangle);
+}
+
 /* A step's gathered sweep that reaches outside the gathered box (the crack rule's roll) is
  * answered from the gathered triangles when it meets one before it leaves the box (nothing
  * outside can be met sooner), and from the scene otherwise: the same hits as the scene's. */
@@ -1023,10 +1032,7 @@ static void test_gathered_sweep_leaving_the_box(void)
     TEST_ASSERT_TRUE(g.tris[0].prep.ready || g.tris[1].prep.ready);
     coll_sweep_hit_t again;
     TEST_ASSERT_TRUE(coll_gather_capsule_sweep(&g, c, UP, 0.25f, 0.0f, d, &again));
-    TEST_ASSERT_EQUAL_MEMORY(&h.point, &again.point, sizeof h.point);
-    TEST_ASSERT_EQUAL_MEMORY(&h.normal, &again.normal, sizeof h.normal);
-    TEST_ASSERT_EQUAL_MEMORY(&h.t, &again.t, sizeof h.t);
-    TEST_ASSERT_EQUAL_INT32(h.triangle, again.triangle);
+    assert_same_sweep_hit(&h, &again);
     st.gather_queries--; /* (the counts below are the first sweep's) */
     /* -x: nothing within the box; the wall at -3 lies beyond it: the scene answers */
     d = (fm_vec3_t){{ -4, 0, 0 }};
@@ -1512,10 +1518,7 @@ static void test_gathered_sweep_above_a_floor_plane(void)
         drops++;
         if (!f1) continue;
         met++;
-        TEST_ASSERT_EQUAL_MEMORY(&h1.t, &h2.t, sizeof h1.t);
-        TEST_ASSERT_EQUAL_MEMORY(&h1.normal, &h2.normal, sizeof h1.normal);
-        TEST_ASSERT_EQUAL_MEMORY(&h1.point, &h2.point, sizeof h1.point);
-        TEST_ASSERT_EQUAL_INT32(h1.triangle, h2.triangle);
+        assert_same_sweep_hit(&h1, &h2);
     }
     printf("ball drops over a rolling terrain: %d (%d meet something), triangle sweeps %d -> %d with the floor "
            "plane\n", drops, met, plain_calls, above_calls);
@@ -1654,10 +1657,7 @@ static void test_roll_above_its_contact_plane_matches_plain(void)
             TEST_ASSERT_EQUAL(fg, fa);
             if (!fa) continue;
             met++;
-            TEST_ASSERT_EQUAL_MEMORY(&hg.t, &ha.t, sizeof ha.t);
-            TEST_ASSERT_EQUAL_MEMORY(&hg.normal, &ha.normal, sizeof ha.normal);
-            TEST_ASSERT_EQUAL_MEMORY(&hg.point, &ha.point, sizeof ha.point);
-            TEST_ASSERT_EQUAL_INT32(hg.triangle, ha.triangle);
+            assert_same_sweep_hit(&hg, &ha);
         }
         /* and on the scene's walk alone (a gathered box away from the ball: the roll leaves it
          * at once), against the plain scene sweeps above */
@@ -1766,11 +1766,8 @@ static void test_gathered_sweep_memo_matches_plain(void)
         TEST_ASSERT_EQUAL(f0, f2);
         cases++;
         if (f1) {
-            TEST_ASSERT_EQUAL_MEMORY(&h1.t, &h2.t, sizeof h1.t);
+            assert_same_sweep_hit(&h1, &h2);
             TEST_ASSERT_EQUAL_MEMORY(&h1.depth, &h2.depth, sizeof h1.depth);
-            TEST_ASSERT_EQUAL_MEMORY(&h1.normal, &h2.normal, sizeof h1.normal);
-            TEST_ASSERT_EQUAL_MEMORY(&h1.point, &h2.point, sizeof h1.point);
-            TEST_ASSERT_EQUAL_INT32(h1.triangle, h2.triangle);
             TEST_ASSERT_EQUAL_INT32(h0.triangle, h2.triangle);
             TEST_ASSERT_EQUAL_FLOAT(h0.t, h2.t);
             if (h1.t == 0.0f) held0++;
