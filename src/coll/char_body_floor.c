@@ -1340,7 +1340,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * Over a real gap the step is still undone. */
                 *pos = before;
                 if (edge_and_floor) s = floor_s;
-                else s.found = false;
+                else {
+                    s.found = false;
+                    c->mem->edges_no_room = true;
+                }
                 fits = !s.found || stand_on(c, pos, s.gap, s.normal);
             }
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);

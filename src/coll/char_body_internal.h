@@ -97,6 +97,11 @@ typedef struct {
     fm_vec3_t ray_origin;
     float ray_len;
     coll_ray_hit_t ray_hit;
+    /** Set (never cleared) by the floor probe when the crack rule held the ball on edges it
+     *  has no room to be lifted onto, over a floor out of reach below, and the body was left
+     *  falling towards that floor: coll_cb_unwedge clears it before the probes it reads it
+     *  after. Uninitialised otherwise. */
+    bool edges_no_room;
 } cb_mem_t;
 
 /** What one step works with: the scene, the body's cached geometry and the current up. */
