@@ -151,6 +151,30 @@ static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
     return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) < c->body->cos_floor_max_angle;
 }
 
+/* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
+ * of the drop's length along up; what it meets is the first contact (drop_past_side). */
+static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
+                       coll_sweep_hit_t *h1, float *d1)
+{
+    const fm_vec3_t up = c->up;
+    const float r = c->radius;
+    const fm_vec3_t bc = v3_add(v3_madd(*b0, up, -*d1), lift);
+    const float rest = len - *d1;
+    if (!(rest > c->tiny)) return false;
+    float sink = -v3_dot(down, up);
+    if (!(sink > 0.1f)) return false;
+    fm_vec3_t way = v3_scale(down, rest / sink);
+    coll_sweep_hit_t h;
+    if (!cb_sweep(c, bc, r, 0.0f, way, &h) || !isfinite(h.t) || !v3_finite(h.normal) || !v3_finite(h.point))
+        return false;
+    float t = h.t > 0.0f ? h.t : 0.0f;
+    *b0 = v3_madd(*b0, v3_reject(way, up), t); /* where the ball went across up */
+    *d1 += t * rest;
+    *h1 = h;
+    h1->t = *d1 / len;
+    return true;
+}
+
 /**
  * The crack rule's drop, over a floor the foot ray found, met the side of something first:
  * a contact too steep to stand on (a block's or a wall's edge beside the ball, well above
@@ -164,26 +188,10 @@ static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
  */
 static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_sweep_hit_t *h1, float *d1)
 {
-    const fm_vec3_t up = c->up;
-    const float r = c->radius;
-    const fm_vec3_t bc = v3_madd(v3_madd(*b0, up, -*d1), h1->normal, 0.2f * c->skin);
-    const float rest = len - *d1;
-    if (!(rest > c->tiny)) return false;
     /* down its tangent plane (dropped straight past an edge, the ball met the same
      * leaning edge again a few centimetres lower, twice: soak s3 l400) */
-    fm_vec3_t down = v3_madd(v3_scale(up, -1.0f), h1->normal, v3_dot(h1->normal, up));
-    float sink = -v3_dot(down, up);
-    if (!(sink > 0.1f)) return false;
-    fm_vec3_t way = v3_scale(down, rest / sink);
-    coll_sweep_hit_t h;
-    if (!cb_sweep(c, bc, r, 0.0f, way, &h) || !isfinite(h.t) || !v3_finite(h.normal) || !v3_finite(h.point))
-        return false;
-    float t = h.t > 0.0f ? h.t : 0.0f;
-    *b0 = v3_madd(*b0, v3_reject(way, up), t); /* where the ball went across up */
-    *d1 += t * rest;
-    *h1 = h;
-    h1->t = *d1 / len;
-    return true;
+    const fm_vec3_t down = v3_madd(v3_scale(c->up, -1.0f), h1->normal, v3_dot(h1->normal, c->up));
+    return slide_down(c, b0, len, v3_scale(h1->normal, 0.2f * c->skin), down, h1, d1);
 }
 
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
@@ -402,6 +410,24 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * wall the slide off one edge met the wall, the rule gave up, and the foot stood on
          * the floor in the crack, 221 mm under the ball resting on both (soak s15 l315). */
         if (over_floor && !(n1u > 0.02f) && n1u > -0.1f && steep_face(c, &h1)) {
+            /* ... unless the ball, held against that wall by the contact it slid off, slides
+             * down the groove between the two onto a floor's face (soak s25 l233) */
+            const fm_vec3_t g = v3_cross(h0.normal, h1.normal);
+            const float gl = v3_len(g), gu = v3_dot(g, up);
+            fm_vec3_t b0g = b0, fn;
+            coll_sweep_hit_t hg = h1;
+            float d1g = d1;
+            if (gl > 1e-3f &&
+                slide_down(c, &b0g, len, v3_scale(v3_add(h0.normal, h1.normal), 0.2f * c->skin),
+                           v3_scale(g, (gu > 0.0f ? -1.0f : 1.0f) / gl), &hg, &d1g) &&
+                coll_cb_face_normal(&hg, &fn) && v3_dot(fn, up) >= b->cos_floor_max_angle &&
+                v3_dot(hg.normal, up) > 0.02f) {
+                b0 = b0g;
+                h1 = hg;
+                d1 = d1g;
+                n1u = v3_dot(h1.normal, up);
+                break;
+            }
             h1 = h0;
             d1 = d0;
             n1u = n0u;
@@ -462,6 +488,7 @@ again:;
         if (sink > 0.25f) roll = f_min(roll, 0.5f * r * 1.01f / sink + c->skin);
         const fm_vec3_t way = v3_scale(downhill, roll);
         coll_gather_above_t plane;
+        bool walled = false; /* the roll met a wall and rolled on along it (below) */
         bool met = !flat && (roll_above(c, b1, way, &h1, &plane) ? cb_sweep_above(c, b1, r, 0.0f, way, &plane, &h2)
                                                                  : cb_sweep(c, b1, r, 0.0f, way, &h2));
         float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
@@ -482,6 +509,7 @@ again:;
                 v3_finite(h3.normal) && !steep_face(c, &h3)) {
                 descent += (h3.t > 0.0f ? h3.t : 0.0f) * -v3_dot(rest, up);
                 h2 = h3;
+                walled = true;
             }
         }
         /* An edge nearly under the centre (tilted less than asin sqrt 0.1 = 18 degrees: too
@@ -551,7 +579,26 @@ again:;
         }
         if (!isfinite(h2.t) || !v3_finite(h2.normal) || v3_dot(h2.normal, up) < -0.1f)
             return false; /* rolls into a ceiling */
-        if (descent > 0.5f * r) goto hole;
+        if (descent > 0.5f * r) {
+            /* Over a floor, the roll went down the first contact's tangent plane onto a
+             * floor's face more than half a radius below it, above the floor under the foot:
+             * as drop_past_side's slide would (the same sweep), that face is the first
+             * contact (once; soak s25 l380) */
+            fm_vec3_t fn;
+            if (over_floor && !rolled_off && !flat && !walled && coll_cb_face_normal(&h2, &fn) &&
+                v3_dot(fn, up) >= b->cos_floor_max_angle && v3_dot(h2.normal, up) > 0.02f &&
+                -v3_dot(v3_sub(h2.point, foot), up) < floor_gap - cb_len_tol(c, CB_STEP_EPS)) {
+                const float t = h2.t > 0.0f ? h2.t : 0.0f;
+                b0 = v3_madd(b0, v3_reject(way, up), t);
+                d1 += descent;
+                h1 = h2;
+                h1.t = d1 / len;
+                rolled_off = true;
+                n1u = v3_dot(h1.normal, up);
+                goto again;
+            }
+            goto hole;
+        }
         far = h2.point;
         float c2 = v3_dot(v3_sub(h2.point, foot), up);
         if (c2 < contact) contact = c2;
