@@ -117,9 +117,6 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
         qz1 = coll_mesh_quarter(bhi.z, m->grid_origin[2] + (float)(int32_t)w->chi[2] * m->cell_size, inv4);
     }
     while (grid_walk_next_cell(w)) {
-        /* an empty cell (a dense grid's cells above and below a floor): nothing to test,
-         * so no quarters made for it */
-        if (w->k == w->kend) continue;
         uint32_t qx = 0u, qz = 0u;
         if (coded) {
             qx = coll_mesh_quarter_bits(w->c[0] == w->clo[0] ? qx0 : 0u, w->c[0] == w->chi[0] ? qx1 : 3u);

@@ -560,6 +560,9 @@ static inline bool grid_walk_next_cell(grid_walk_t *w)
         w->c[0] = x; w->c[1] = y; w->c[2] = z;
         if (w->skip_missed && !w->walk_all && cell_misses(w->m, x, y, z, w->llo, w->lhi)) continue;
         grid_walk_enter(w, x, y, z);
+        /* an empty cell (a dense grid's above and below a floor) has nothing to walk: the
+         * next (a box walk's: never lazy, whose count of cells entered sees empty ones) */
+        if (w->k == w->kend) continue;
         return true;
     }
 }
