@@ -223,7 +223,10 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
             ok = gather_walk(g, &w, inst, &x, &o_l, &seen, COLL_MESHF_QUANT | I16, true, false);
         else ok = gather_walk(g, &w, inst, &x, &o_l, &seen, lay, x.simple, coded);
         if (!ok) return;
-        grid_walk_end(&w, scene);
+        /* grid_walk_end, but the table (this function's) is cleared only for a later
+         * instance's walk: after the last it is dead */
+        note_overflow(scene, &seen);
+        if (i + 1u < scene->mesh_count) seen_clear(&seen);
     }
 }
 

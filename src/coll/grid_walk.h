@@ -166,6 +166,8 @@ typedef struct {
     uint16_t used[SEEN_MAX];
     uint32_t n;
     uint32_t bits;
+    uint32_t limit; /* n at which seen_check leaves its common path: the table grows at half
+                     * full while it is small, and a full table overflows */
     bool overflow;
     bool ready; /* the table is cleared only when a query first needs it */
 } seen_t;
@@ -182,6 +184,7 @@ static inline void seen_ready(seen_t *s)
     if (s->ready) return;
     for (uint32_t i = 0; i < (1u << SEEN_BITS0); i++) s->slot[i] = 0u;
     s->bits = SEEN_BITS0;
+    s->limit = (1u << SEEN_BITS0) / 2u < SEEN_MAX ? (1u << SEEN_BITS0) / 2u : SEEN_MAX;
     s->ready = true;
 }
 
@@ -202,6 +205,7 @@ static inline void seen_grow(seen_t *s)
     memset(s->slot, 0, sizeof(uint32_t) * old);
     memset(s->slot + old, 0, sizeof(uint32_t) * (SEEN_SLOTS - old));
     s->bits = SEEN_BITS;
+    s->limit = SEEN_MAX;
     for (uint32_t i = 0; i < s->n; i++) {
         uint32_t h = seen_probe(s, keys[i]);
         s->slot[h] = keys[i];
@@ -225,13 +229,15 @@ static inline int seen_check(seen_t *s, uint32_t tri)
     uint32_t key = tri + 1u;
     uint32_t h = seen_probe(s, key);
     if (s->slot[h] == key) return SEEN_BEFORE;
-    if (s->n >= SEEN_MAX) {
-        s->overflow = true;
-        return SEEN_UNKNOWN;
-    }
-    if (s->bits < SEEN_BITS && s->n + 1u > (1u << s->bits) / 2u) {
-        seen_grow(s);
-        h = seen_probe(s, key);
+    if (s->n >= s->limit) { /* one compare on the common path (the two tests below) */
+        if (s->n >= SEEN_MAX) {
+            s->overflow = true;
+            return SEEN_UNKNOWN;
+        }
+        if (s->bits < SEEN_BITS && s->n + 1u > (1u << s->bits) / 2u) {
+            seen_grow(s);
+            h = seen_probe(s, key);
+        }
     }
     s->slot[h] = key;
     s->used[s->n++] = (uint16_t)h;
@@ -554,6 +560,9 @@ static inline bool grid_walk_next_cell(grid_walk_t *w)
         w->c[0] = x; w->c[1] = y; w->c[2] = z;
         if (w->skip_missed && !w->walk_all && cell_misses(w->m, x, y, z, w->llo, w->lhi)) continue;
         grid_walk_enter(w, x, y, z);
+        /* an empty cell (a dense grid's above and below a floor) has nothing to walk: the
+         * next (a box walk's: never lazy, whose count of cells entered sees empty ones) */
+        if (w->k == w->kend) continue;
         return true;
     }
 }

@@ -719,6 +719,23 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
     return true;
 }
 
+/* gather_tri for a ray: its box is thin across its direction (the foot ray's along up: the
+ * floor triangles beside it are out of its box across up, while their heights span its
+ * reach), so across first; the same test, in another order. */
+CAND_INLINE bool gather_tri_ray(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
+                                const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
+{
+    const coll_gather_tri_t *gt = &g->tris[k];
+    if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
+        gt->lo.y > ghi->y)
+        return false;
+    fm_vec3_sub(w0, &gt->w0, rel);
+    shape[0].x = shape[0].y = shape[0].z = 0.0f;
+    shape[1] = gt->e1;
+    shape[2] = gt->e2;
+    return true;
+}
+
 /* The float just below x, a hit's distance (finite, >= 0): s <= f_below(x) is s < x; -1 for
  * 0 (no distance is below it). */
 CAND_INLINE float f_below(float x)
@@ -757,7 +774,7 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
     float smax = rb.best;
     for (uint16_t k = 0; sheared && k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
+        if (!gather_tri_ray(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
         coll_gather_tri_t *gt = &g->tris[k];
         fm_vec3_t o;
         coll_prim_hit_t ph;
