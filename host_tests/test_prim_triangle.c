@@ -811,7 +811,8 @@ static void test_prepared_triangle_is_bit_identical(void)
             bool held = k & 1;
             ga = held ? coll_tri_sweep_before(seg, (float)r, &d, tri, t_max, &a)
                            : coll_tri_sweep(seg, (float)r, &d, tri, t_max, &a);
-            gb = coll_tri_sweep_prep(seg, (float)r, &d, tri, &prep, t_max, held, &b);
+            const fm_vec3_t no_axis = V(0, 0, 0);
+            gb = coll_tri_sweep_prep(seg, (float)r, &d, tri, &prep, t_max, held ? &no_axis : NULL, &b);
             TEST_ASSERT_TRUE(hits_equal(ga, &a, gb, &b));
             n_hits += ga;
             memset(&a, 0, sizeof a);
@@ -829,13 +830,13 @@ static void test_prepared_triangle_is_bit_identical(void)
     coll_tri_prep_t prep = { { { 0, 0, 0 } }, { { 0, 0, 0 } }, false, false, 0 };
     fm_vec3_t seg[2] = { V(0, 2, 0), V(0, 3, 0) }, d = V(0, -4, 0);
     coll_prim_hit_t h;
-    TEST_ASSERT_TRUE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, false, &h));
+    TEST_ASSERT_TRUE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, NULL, &h));
     TEST_ASSERT_TRUE(prep.ready && prep.has_face);
     TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, fabsf(prep.n.y));
     TEST_ASSERT_FLOAT_WITHIN(1e-6f, 1.0f, h.normal.y);
     prep.has_face = false; /* as if no face: the face's cull and test are skipped, the edges answer */
     prep.n = V(0, 0, 0);
-    TEST_ASSERT_FALSE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, false, &h));
+    TEST_ASSERT_FALSE(coll_tri_sweep_prep(seg, 0.5f, &d, floor_tri, &prep, 1.0f, NULL, &h));
     (void)n_prepared;
 }
 
@@ -846,12 +847,14 @@ static void rel_tri(const fm_vec3_t t[3], float off, fm_vec3_t out[3])
     for (int k = 0; k < 3; k++) out[k] = V(t[k].x + off - (t[0].x + off), t[k].y - t[0].y, t[k].z - t[0].z);
 }
 
-/* For a sweep that met triangle a at h0_t (the motion d, |aim - c| = dlen): every triangle's
- * held sweep, t_max at that contact time and deeper[m] x r after it, answers what its plain
- * sweep does, less a contact no sooner than t_max. Returns the cases; ties: b != a at m 0. */
+/* For a sweep that met triangle a at h0_t with normal n0 (the motion d, |aim - c| = dlen):
+ * every triangle's held sweep, t_max at that contact time and deeper[m] x r after it, answers
+ * what its plain sweep does, less a contact no sooner than t_max, with the held contact's
+ * normal n0 for the sweep to try as an axis and with a random one (any axis is a valid
+ * cull). Returns the cases; ties: b != a at m 0. */
 static int held_cases_match_plain(const fm_vec3_t (*tris)[3], int n, int a, prim_ref_v3 c, float off, float hh,
-                                  float r, fm_vec3_t d, double dlen, float h0_t, const float *deeper, int ndeeper,
-                                  const char *label, int *n_ties)
+                                  float r, fm_vec3_t d, double dlen, float h0_t, fm_vec3_t n0, const float *deeper,
+                                  int ndeeper, const char *label, int *n_ties)
 {
     int n_cases = 0;
     for (int b = 0; b < n; b++) {
@@ -865,14 +868,19 @@ static int held_cases_match_plain(const fm_vec3_t (*tris)[3], int n, int a, prim
             coll_prim_hit_t hp, hb;
             memset(&hp, 0, sizeof hp);
             memset(&hb, 0, sizeof hb);
-            bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, false, &hp);
-            bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, true, &hb);
+            bool gp = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, NULL, &hp);
             if (gp && hp.t > 0.0f && !(hp.t < t_max)) gp = false; /* no sooner: may go unreported */
-            if (!hits_equal(gp, &hp, gb, &hb)) {
-                printf("%s: a %d b %d m %d: plain %d t %.9g, held %d\n", label, a, b, m, gp, (double)hp.t, gb);
-                dump_case(sb, r, d, tb);
+            fm_vec3_t axes[2] = { n0, F(rnd_unit()) };
+            for (int x = 0; x < 2; x++) {
+                memset(&hb, 0, sizeof hb);
+                bool gb = coll_tri_sweep_prep(sb, r, &d, tb, NULL, t_max, &axes[x], &hb);
+                if (!hits_equal(gp, &hp, gb, &hb)) {
+                    printf("%s: a %d b %d m %d axis %d: plain %d t %.9g, held %d\n", label, a, b, m, x, gp,
+                           (double)hp.t, gb);
+                    dump_case(sb, r, d, tb);
+                }
+                TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
             }
-            TEST_ASSERT_TRUE(hits_equal(gp, &hp, gb, &hb));
             if (n_ties) *n_ties += b != a && m == 0;
             n_cases++;
         }
@@ -930,10 +938,10 @@ static void test_held_end_cull_matches_plain(void)
             seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
             rel_tri(tris[a], off, rt);
             coll_prim_hit_t h0;
-            if (!coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
+            if (!coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, NULL, &h0) || !(h0.t > 0.0f)) continue;
             n_hits++;
             /* t_max at this triangle's contact time and after it, against every triangle */
-            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 4, a, c, off, hh, r, d, dlen, h0.t, deeper,
+            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 4, a, c, off, hh, r, d, dlen, h0.t, h0.normal, deeper,
                                               (int)(sizeof deeper / sizeof deeper[0]), "held end cull", &n_ties);
         }
     }
@@ -980,7 +988,7 @@ static void test_plane_rin_cull_agrees_with_reference(void)
                            (float)c.z - wall[t][0].z);
             rel_tri(wall[t], off, rt);
             coll_prim_hit_t h;
-            hit |= coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, false, &h);
+            hit |= coll_tri_sweep_prep(seg, r, &d, rt, NULL, 1.0f, NULL, &h);
             prim_ref_captri_t ctx;
             ctx.a = R(seg[0]); ctx.b = R(seg[1]); ctx.d = R(d);
             for (int k = 0; k < 3; k++) ctx.tri[k] = R(rt[k]);
@@ -1113,9 +1121,9 @@ static void test_held_end_cull_local_matches_plain(void)
             seg[1] = V(seg[0].x, seg[0].y + 2.0f * hh, seg[0].z);
             rel_tri(tris[a], off, ta);
             coll_prim_hit_t h0;
-            if (!coll_tri_sweep_prep(seg, r, &d, ta, NULL, 1.0f, false, &h0) || !(h0.t > 0.0f)) continue;
+            if (!coll_tri_sweep_prep(seg, r, &d, ta, NULL, 1.0f, NULL, &h0) || !(h0.t > 0.0f)) continue;
             n_hits++;
-            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 8, a, c, off, hh, r, d, dlen, h0.t, deeper,
+            n_cases += held_cases_match_plain((const fm_vec3_t (*)[3])tris, 8, a, c, off, hh, r, d, dlen, h0.t, h0.normal, deeper,
                                               (int)(sizeof deeper / sizeof deeper[0]), "held end cull (local)", NULL);
         }
     }
@@ -1162,7 +1170,7 @@ static void test_start_pair_local_cull_rolls(void)
         if (prim_ref_seg_tri(a, a, rt, &ps, &pt) < rin + 1e-5) continue; /* starts deeper */
         double dmin = prim_ref_seg_tri(a, prim_ref_add(a, dref), rt, &ps, &pt);
         coll_prim_hit_t h;
-        bool got = coll_tri_sweep_prep(seg, (float)r, &d, tri, NULL, 1.0f, false, &h);
+        bool got = coll_tri_sweep_prep(seg, (float)r, &d, tri, NULL, 1.0f, NULL, &h);
         if (dmin > rin + 1e-5) {
             if (got) printf("start pair cull: o %d i %d: hit t %.9g, least distance rin + %.3g\n", o, i, (double)h.t, dmin - rin);
             TEST_ASSERT_FALSE(got);

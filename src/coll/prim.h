@@ -120,11 +120,14 @@ bool coll_ray_shear(const fm_vec3_t *d, coll_ray_shear_t *sh);
 bool coll_ray_triangle_sheared(const fm_vec3_t *o, const fm_vec3_t *d, const coll_ray_shear_t *sh,
                                const fm_vec3_t tri[3], float s_max, coll_tri_prep_t *p, coll_prim_hit_t *hit);
 
-/** coll_tri_sweep (held false) or coll_tri_sweep_before (held true), and
+/** coll_tri_sweep (held NULL) or coll_tri_sweep_before (held not NULL), and
  *  coll_capsule_triangle_overlap, through the triangle's prep p (filled when not ready;
- *  NULL: the plain tests). */
+ *  NULL: the plain tests). *held: the held contact's normal (any vector; zero: none), which
+ *  the sweep tries as a separating axis before its closest pairs (a held hit's neighbour
+ *  across their shared edge meets the capsule only at t_max and lies behind it): one cull
+ *  more, the same answers. */
 bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
+                         coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit);
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                         coll_tri_prep_t *p, coll_prim_hit_t *hit);
 /** coll_capsule_triangle_overlap_prep, telling too (*clear) when it found no overlap by the

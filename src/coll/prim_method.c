@@ -22,7 +22,7 @@ void coll_set_tri_sweep_method(coll_tri_sweep_fn fn, void *ctx)
 /* An installed method answers every form: it has no use for the caller's held hit or the
  * triangle's prep. p NULL: no prep kept. */
 static bool tri_sweep_method(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                             coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+                             coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit)
 {
 #ifdef COLL_METHOD_HOOKS
     if (g_sweep_fn) return g_sweep_fn(g_sweep_ctx, seg, r, disp, tri, t_max, hit);
@@ -33,17 +33,18 @@ static bool tri_sweep_method(const fm_vec3_t seg[2], float r, const fm_vec3_t *d
 bool coll_tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                     const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, false, hit);
+    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, NULL, hit);
 }
 
 bool coll_tri_sweep_before(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                            const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, true, hit);
+    static const fm_vec3_t no_axis = { { 0.0f, 0.0f, 0.0f } }; /* held, no normal to try */
+    return tri_sweep_method(seg, r, disp, tri, NULL, t_max, &no_axis, hit);
 }
 
 bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                         coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+                         coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit)
 {
     return tri_sweep_method(seg, r, disp, tri, p, t_max, held, hit);
 }

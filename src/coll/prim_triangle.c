@@ -683,11 +683,15 @@ static bool plane_rin_separated(const sweep_ctx_t *c, float lo, float hi, float 
 }
 
 /* confirm: count a contact only when the motion goes deeper than the touch tolerance;
- * before: a contact after t = 0 that comes no sooner than t_max is none (the caller holds
- * one at t_max already; its refinement and confirmation would be wasted). */
+ * held (NULL: none): a contact after t = 0 that comes no sooner than t_max is none (the
+ * caller holds one at t_max already; its refinement and confirmation would be wasted), and
+ * *held, the held contact's normal (or zero), is tried as a separating axis before the
+ * closest pairs. */
 static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                      coll_tri_prep_t *prep, float t_max, bool confirm, bool before, coll_prim_hit_t *hit)
+                      coll_tri_prep_t *prep, float t_max, bool confirm, const fm_vec3_t *held,
+                      coll_prim_hit_t *hit)
 {
+    const bool before = held != NULL;
     if (!seg || !disp || !tri || !hit) return false;
     /* (prim_sane and prim_sane3 on all of them, one branch: prim_room_ok) */
     if (!(r >= 0.0f) || !(t_max >= 0.0f)) return false;
@@ -769,6 +773,18 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
         if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
             return false;
     }
+    /* Then, with a hit held, its normal (held): the held contact's neighbour across their
+     * shared edge (a stair's nosing: the tread and the riser, or a quad's two triangles)
+     * meets the capsule only at t_max, where the capsule touches the edge, and lies behind
+     * the edge along that normal, so the swept capsule stays clear of rin along it by about
+     * the touch tolerance: dropped before the start's closest pair and the end's (2-3.5k
+     * console instructions on stairs_real's nosings). A cull like the others (any axis is a
+     * valid one, with the confirm culls' allowance); only where the coordinates are small
+     * enough for that allowance to leave the tolerance room (the end cull's `small` below:
+     * in a crack's 100 m floor it never separates and would only cost). */
+    if (held && confirm && moving && 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f) &&
+        sweep_separated_k(&c, held, rin, t_max, 1e-6f))
+        return false;
     fm_vec3_t ps = { { 0.0f, 0.0f, 0.0f } }, pt = ps;
     float d2 = 0.0f;
     if (!far) {
@@ -897,11 +913,11 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
 bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
                             float t_max, bool confirm, coll_prim_hit_t *hit)
 {
-    return tri_sweep(seg, r, disp, tri, NULL, t_max, confirm, false, hit);
+    return tri_sweep(seg, r, disp, tri, NULL, t_max, confirm, NULL, hit);
 }
 
 bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                              coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit)
+                              coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit)
 {
     return tri_sweep(seg, r, disp, tri, p, t_max, true, held, hit);
 }
@@ -909,7 +925,7 @@ bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *
 bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                                  const fm_vec3_t tri[3], float t_max, coll_prim_hit_t *hit)
 {
-    return tri_sweep(seg, r, disp, tri, NULL, t_max, true, false, hit);
+    return tri_sweep(seg, r, disp, tri, NULL, t_max, true, NULL, hit);
 }
 
 static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3], coll_tri_prep_t *prep,

@@ -100,9 +100,10 @@ bool coll_prim_tri_sweep_ex(const fm_vec3_t seg[2], float r, const fm_vec3_t *di
  * coll_capsule_triangle_sweep on a prepared triangle (p: its prep, filled when not ready;
  * NULL: none kept), for a caller that may already hold a contact at t_max (held): then a
  * contact after t = 0 no sooner than t_max is no hit (it could not be better). Contacts at
- * t = 0 (overlaps, touches) are reported as before.
+ * t = 0 (overlaps, touches) are reported as before. held: NULL (none) or the held contact's
+ * normal (any vector; zero for none): tried as a separating axis, one cull more.
  */
 bool coll_prim_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
-                              coll_tri_prep_t *p, float t_max, bool held, coll_prim_hit_t *hit);
+                              coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit);
 
 #endif

@@ -399,7 +399,8 @@ static bool sweep_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, in
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     /* once a hit is held, one no sooner (after t = 0) could not be better: not refined */
-    bool got = coll_tri_sweep_prep(seg, q->r, &q->disp, shape, gt ? &gt->prep : NULL, sb->best, sb->have, &ph);
+    bool got = coll_tri_sweep_prep(seg, q->r, &q->disp, shape, gt ? &gt->prep : NULL, sb->best,
+                                   sb->have ? &sb->ph.normal : NULL, &ph);
     if (!got || !sweep_better(&ph, sb)) return false;
     fm_vec3_add(&ph.point, &ph.point, w0);
     best_take(sb, &ph, inst, NULL, t);
