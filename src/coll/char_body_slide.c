@@ -102,7 +102,12 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
     return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
-float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+/* coll_cb_move_swept; where it stops short, *normal (when not NULL) is the normal of what
+ * stopped it. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline float move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, fm_vec3_t *normal)
 {
     float len = v3_len(d);
     if (!(len > c->tiny) || !isfinite(len)) {
@@ -125,9 +130,15 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
         return 1.0f;
     }
     float travel = reach - c->skin;
+    if (normal) *normal = hit.normal;
     if (!(travel > 0.0f)) return 0.0f;
     *pos = v3_madd(*pos, d, travel / len);
     return travel / len;
+}
+
+float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+{
+    return move_swept(c, pos, d, NULL);
 }
 
 /**
@@ -721,8 +732,17 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
             fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
             if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
-            fm_vec3_t p = *pos;
-            if (coll_cb_move_swept(c, &p, v3_scale(d, dists[k])) < 1.0f) continue;
+            fm_vec3_t p = *pos, n;
+            const fm_vec3_t way = v3_scale(d, dists[k]);
+            const float f = move_swept(c, &p, way, &n);
+            if (f < 1.0f) {
+                /* Stopped by a floor it rests on (under a tilted up the way across up goes
+                 * down into a level floor): the rest of the way along that floor, as walking
+                 * goes; stopped by anything else, no place this way. */
+                if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
+                const fm_vec3_t rest = v3_scale(way, 1.0f - f);
+                if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f) continue;
+            }
             if (v3_finite(p) && (stands_at(c, &p) || (airborne && foot_free_at(c, p)))) {
                 *pos = p;
                 return true;
