@@ -736,9 +736,16 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
             const fm_vec3_t way = v3_scale(d, dists[k]);
             const float f = move_swept(c, &p, way, &n);
             if (f < 1.0f) {
-                /* Stopped by a floor it rests on (under a tilted up the way across up goes
-                 * down into a level floor): the rest of the way along that floor, as walking
-                 * goes; stopped by anything else, no place this way. */
+                /* Stopped by something walkable (a floor's face or an edge it could stand
+                 * on; under a tilted up the way across up goes down into the level floor the
+                 * capsule rests on): the rest of the way along its plane, as walking goes;
+                 * stopped by anything else, no place this way. A body the game teleported
+                 * (r 0.65, up 11 degrees off y) with its foot 0.41 m in a stair block, its
+                 * sweep capsule 2 mm over the block's top, 13 mm from the next block's edge
+                 * and leaning against a collider capsule above (no room for the lift): four
+                 * ways went into the collider, the other four met that top or that edge
+                 * within 6 cm, and it stood grounded in the block for ever (soak s27 l164);
+                 * 0.19 m along the top it stands. */
                 if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
                 const fm_vec3_t rest = v3_scale(way, 1.0f - f);
                 if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f) continue;
