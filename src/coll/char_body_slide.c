@@ -689,15 +689,15 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     }
 }
 
-/* The full capsule stands at *p: a walkable floor under the foot within the snap
- * distance below or the step height above it, and room to lift the body onto a floor
- * above the foot (swept). *p is moved onto that floor. */
-static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
+/* The full capsule stands at *p: a walkable floor under the foot within `below` under it
+ * or the step height above it, and room to lift the body onto a floor above the foot
+ * (swept). *p is moved onto that floor. */
+static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot = cb_foot(c, *p);
     float rise;
-    if (!floor_height(c, foot, c->radius + c->step, c->snap, foot, &rise, false)) return false;
+    if (!floor_height(c, foot, c->radius + c->step, below, foot, &rise, false)) return false;
     float gap = -rise;
     if (gap < -step_eps) {
         fm_vec3_t q = *p;
@@ -745,12 +745,20 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
                  * and leaning against a collider capsule above (no room for the lift): four
                  * ways went into the collider, the other four met that top or that edge
                  * within 6 cm, and it stood grounded in the block for ever (soak s27 l164);
-                 * 0.19 m along the top it stands. */
+                 * 0.19 m along the top it stands. The slide moves it along up too, which
+                 * only a floor within touching reach of the foot (the probe grounds it
+                 * there, airborne or not) makes no motion: an airborne body slid up a slope
+                 * to a place to fall from, or over a floor farther down, moved along up
+                 * with no velocity to say so (soak s3 l46). */
                 if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
                 const fm_vec3_t rest = v3_scale(way, 1.0f - f);
-                if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f) continue;
+                if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f ||
+                    !v3_finite(p) || !stands_at(c, &p, c->contact_eps))
+                    continue;
+                *pos = p;
+                return true;
             }
-            if (v3_finite(p) && (stands_at(c, &p) || (airborne && foot_free_at(c, p)))) {
+            if (v3_finite(p) && (stands_at(c, &p, c->snap) || (airborne && foot_free_at(c, p)))) {
                 *pos = p;
                 return true;
             }
