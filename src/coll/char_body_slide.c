@@ -102,7 +102,12 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
     return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
-float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+/* coll_cb_move_swept; where it stops short, *normal (when not NULL) is the normal of what
+ * stopped it. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline float move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, fm_vec3_t *normal)
 {
     float len = v3_len(d);
     if (!(len > c->tiny) || !isfinite(len)) {
@@ -125,9 +130,15 @@ float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
         return 1.0f;
     }
     float travel = reach - c->skin;
+    if (normal) *normal = hit.normal;
     if (!(travel > 0.0f)) return 0.0f;
     *pos = v3_madd(*pos, d, travel / len);
     return travel / len;
+}
+
+float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+{
+    return move_swept(c, pos, d, NULL);
 }
 
 /**
@@ -678,15 +689,15 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
     }
 }
 
-/* The full capsule stands at *p: a walkable floor under the foot within the snap
- * distance below or the step height above it, and room to lift the body onto a floor
- * above the foot (swept). *p is moved onto that floor. */
-static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p)
+/* The full capsule stands at *p: a walkable floor under the foot within `below` under it
+ * or the step height above it, and room to lift the body onto a floor above the foot
+ * (swept). *p is moved onto that floor. */
+static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
     fm_vec3_t foot = cb_foot(c, *p);
     float rise;
-    if (!floor_height(c, foot, c->radius + c->step, c->snap, foot, &rise, false)) return false;
+    if (!floor_height(c, foot, c->radius + c->step, below, foot, &rise, false)) return false;
     float gap = -rise;
     if (gap < -step_eps) {
         fm_vec3_t q = *p;
@@ -721,9 +732,33 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
             fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
             if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
-            fm_vec3_t p = *pos;
-            if (coll_cb_move_swept(c, &p, v3_scale(d, dists[k])) < 1.0f) continue;
-            if (v3_finite(p) && (stands_at(c, &p) || (airborne && foot_free_at(c, p)))) {
+            fm_vec3_t p = *pos, n;
+            const fm_vec3_t way = v3_scale(d, dists[k]);
+            const float f = move_swept(c, &p, way, &n);
+            if (f < 1.0f) {
+                /* Stopped by something walkable (a floor's face or an edge it could stand
+                 * on; under a tilted up the way across up goes down into the level floor the
+                 * capsule rests on): the rest of the way along its plane, as walking goes;
+                 * stopped by anything else, no place this way. A body the game teleported
+                 * (r 0.65, up 11 degrees off y) with its foot 0.41 m in a stair block, its
+                 * sweep capsule 2 mm over the block's top, 13 mm from the next block's edge
+                 * and leaning against a collider capsule above (no room for the lift): four
+                 * ways went into the collider, the other four met that top or that edge
+                 * within 6 cm, and it stood grounded in the block for ever (soak s27 l164);
+                 * 0.19 m along the top it stands. The slide moves it along up too, which
+                 * only a floor within touching reach of the foot (the probe grounds it
+                 * there, airborne or not) makes no motion: an airborne body slid up a slope
+                 * to a place to fall from, or over a floor farther down, moved along up
+                 * with no velocity to say so (soak s3 l46). */
+                if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
+                const fm_vec3_t rest = v3_scale(way, 1.0f - f);
+                if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f ||
+                    !v3_finite(p) || !stands_at(c, &p, c->contact_eps))
+                    continue;
+                *pos = p;
+                return true;
+            }
+            if (v3_finite(p) && (stands_at(c, &p, c->snap) || (airborne && foot_free_at(c, p)))) {
                 *pos = p;
                 return true;
             }
