@@ -702,6 +702,17 @@ CAND_INLINE void gather_box(const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_
     fm_vec3_add(ghi, hi, rel);
 }
 
+/* A gathered triangle relative to a query origin at rel (from the gather's): first vertex
+ * w0 and shape (shape[0] = 0). */
+CAND_INLINE void gather_tri_place(const coll_gather_tri_t *gt, const fm_vec3_t *rel, fm_vec3_t *w0,
+                                  fm_vec3_t shape[3])
+{
+    fm_vec3_sub(w0, &gt->w0, rel);
+    shape[0].x = shape[0].y = shape[0].z = 0.0f;
+    shape[1] = gt->e1;
+    shape[2] = gt->e2;
+}
+
 /* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
  * w0 and shape (shape[0] = 0); false when its box misses glo..ghi (gather_box). */
 CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
@@ -713,10 +724,7 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
     if (gt->hi.y < glo->y || gt->lo.y > ghi->y || gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z ||
         gt->lo.z > ghi->z)
         return false;
-    fm_vec3_sub(w0, &gt->w0, rel);
-    shape[0].x = shape[0].y = shape[0].z = 0.0f;
-    shape[1] = gt->e1;
-    shape[2] = gt->e2;
+    gather_tri_place(gt, rel, w0, shape);
     return true;
 }
 
@@ -730,10 +738,7 @@ CAND_INLINE bool gather_tri_ray(const coll_gather_t *g, uint16_t k, const fm_vec
     if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
         gt->lo.y > ghi->y)
         return false;
-    fm_vec3_sub(w0, &gt->w0, rel);
-    shape[0].x = shape[0].y = shape[0].z = 0.0f;
-    shape[1] = gt->e1;
-    shape[2] = gt->e2;
+    gather_tri_place(gt, rel, w0, shape);
     return true;
 }
 
