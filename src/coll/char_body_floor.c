@@ -946,7 +946,15 @@ static void snap_down(const cb_ctx_t *c, fm_vec3_t *pos, float dist, fm_vec3_t n
         if (!found ||
             !isfinite(hit.t) || !v3_finite(hit.normal)) {
             *pos = v3_add(*pos, left);
-            return;
+            /* Slid off the edge into the open: the slide along the edge's plane came down
+             * less than the snap's rest (the projection shortened it), so the rest goes on
+             * straight down to the floor's plane (swept, the next look). Stopping there left
+             * the body grounded in the air, its foot 0.21 m over the floor the probe found
+             * (step 0, snap 0.078: soak s28 l171). */
+            float nu = v3_dot(n, c->up), above = v3_dot(v3_sub(cb_foot(c, *pos), target), n);
+            if (it == 0 || it == 2 || !(nu > 0.0f) || !(above > c->tiny)) return;
+            left = v3_scale(c->up, -above / nu);
+            continue;
         }
         if (hit.t <= 0.0f && hit.depth > 0.0f) return;
         float travel = len * hit.t - c->skin;
