@@ -731,9 +731,17 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
             float a = (float)dir * (0.25f * FM_PI);
             fm_vec3_t d = v3_madd(v3_scale(side, cosf(a)), side2, sinf(a));
             if (v3_dot(d, in) < 0.0f) continue; /* never against the input */
-            if (dists[k] > c->max_speed * c->dt) return false; /* nor faster than the velocity can say */
+            /* Nor faster than the velocity can say: a ring beyond the speed limit's reach in
+             * one step is searched at that reach (once). A body (r 0.84, step 0.67, up 94
+             * degrees off y, dt 1/240: 0.833 m in a step) on a ramp, its head against the
+             * room's wall that leans over it for that up, its foot 0.61 m in the ramp with no
+             * room for the lift: r / 2 up the ramp is 0.35 m short of room, the ring at r
+             * (1 % past the reach) was never tried, and it stood grounded in the ramp (soak
+             * s29 l365); 0.83 m up the ramp it stands. */
+            const float reach = c->max_speed * c->dt;
+            if (k > 0 && dists[k - 1] >= reach) return false;
             fm_vec3_t p = *pos, n;
-            const fm_vec3_t way = v3_scale(d, dists[k]);
+            const fm_vec3_t way = v3_scale(d, dists[k] < reach ? dists[k] : reach);
             const float f = move_swept(c, &p, way, &n);
             if (f < 1.0f) {
                 /* Stopped by something walkable (a floor's face or an edge it could stand
