@@ -671,7 +671,8 @@ again:;
          * tile edges). Not a contact ahead of the body's motion: climbing stairs, the nosing
          * two risers ahead is such a contact every few steps (the stair step climbs it),
          * and looking past it cost 17 queries in a 90-step climb (486 -> 503). */
-        if (over_floor && past < 2 && c1 > c->step && !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) &&
+        if (over_floor && past < 2 &&
+            ((c1 > c->step && !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f)) || h1.triangle < 0) &&
             drop_past_side(c, &b0, len, &h1, &d1)) {
             past++;
             n1u = v3_dot(h1.normal, up);
