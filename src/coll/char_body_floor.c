@@ -670,7 +670,10 @@ again:;
          * 0.96; the foot stood on the floor in the crack, 4 mm under the ball resting on the
          * tile edges). Not a contact ahead of the body's motion: climbing stairs, the nosing
          * two risers ahead is such a contact every few steps (the stair step climbs it),
-         * and looking past it cost 17 queries in a 90-step climb (486 -> 503). */
+         * and looking past it cost 17 queries in a 90-step climb (486 -> 503). A first
+         * contact on a collider body (no triangle) is looked past in the step zone too
+         * (soak s31 l179: a rounded body beside a crack between two slabs, the slab edges
+         * 0.24 m under it). */
         if (over_floor && past < 2 &&
             ((c1 > c->step && !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f)) || h1.triangle < 0) &&
             drop_past_side(c, &b0, len, &h1, &d1)) {
