@@ -151,6 +151,14 @@ static bool steep_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
     return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) < c->body->cos_floor_max_angle;
 }
 
+/* A hit on the face of a floor: a face (not only an edge or a vertex) walkable under the
+ * current up. */
+static bool floor_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
+{
+    fm_vec3_t fn;
+    return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) >= c->body->cos_floor_max_angle;
+}
+
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
  * of the drop's length along up; what it meets is the first contact (drop_past_side). */
 static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
@@ -414,14 +422,13 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
              * down the groove between the two onto a floor's face (soak s25 l233) */
             const fm_vec3_t g = v3_cross(h0.normal, h1.normal);
             const float gl = v3_len(g), gu = v3_dot(g, up);
-            fm_vec3_t b0g = b0, fn;
+            fm_vec3_t b0g = b0;
             coll_sweep_hit_t hg = h1;
             float d1g = d1;
             if (gl > 1e-3f &&
                 slide_down(c, &b0g, len, v3_scale(v3_add(h0.normal, h1.normal), 0.2f * c->skin),
                            v3_scale(g, (gu > 0.0f ? -1.0f : 1.0f) / gl), &hg, &d1g) &&
-                coll_cb_face_normal(&hg, &fn) && v3_dot(fn, up) >= b->cos_floor_max_angle &&
-                v3_dot(hg.normal, up) > 0.02f) {
+                floor_face(c, &hg) && v3_dot(hg.normal, up) > 0.02f) {
                 b0 = b0g;
                 h1 = hg;
                 d1 = d1g;
@@ -545,9 +552,7 @@ again:;
             }
             /* (rolled off a nearly level edge: only a floor's face met there is the far side;
              * anything else, and the roll's answer stands) */
-            fm_vec3_t fn;
-            if (level_off && !(met && isfinite(h2.t) && coll_cb_face_normal(&h2, &fn) &&
-                               v3_dot(fn, up) >= b->cos_floor_max_angle)) {
+            if (level_off && !(met && isfinite(h2.t) && floor_face(c, &h2))) {
                 met = false;
                 flat = false;
             }
@@ -561,12 +566,12 @@ again:;
              * contact ahead of the body's motion: climbing stairs, the ball rolled off the
              * nosing two risers ahead onto the next tread and lifted the foot there early,
              * over the lower tread (soak s5 l315, 14 mm in a later step) */
-            fm_vec3_t b0p = b0, fn;
+            fm_vec3_t b0p = b0;
             coll_sweep_hit_t h1p = h1;
             float d1p = d1;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) && drop_past_side(c, &b0p, len, &h1p, &d1p) &&
-                coll_cb_face_normal(&h1p, &fn) && v3_dot(fn, up) >= b->cos_floor_max_angle) {
+                floor_face(c, &h1p)) {
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
@@ -584,9 +589,7 @@ again:;
              * floor's face more than half a radius below it, above the floor under the foot:
              * as drop_past_side's slide would (the same sweep), that face is the first
              * contact (once; soak s25 l380) */
-            fm_vec3_t fn;
-            if (over_floor && !rolled_off && !flat && !walled && coll_cb_face_normal(&h2, &fn) &&
-                v3_dot(fn, up) >= b->cos_floor_max_angle && v3_dot(h2.normal, up) > 0.02f &&
+            if (over_floor && !rolled_off && !flat && !walled && floor_face(c, &h2) && v3_dot(h2.normal, up) > 0.02f &&
                 -v3_dot(v3_sub(h2.point, foot), up) < floor_gap - cb_len_tol(c, CB_STEP_EPS)) {
                 const float t = h2.t > 0.0f ? h2.t : 0.0f;
                 b0 = v3_madd(b0, v3_reject(way, up), t);
