@@ -50,13 +50,17 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta)
 {
     char_body_t *b = c->body;
     /* Swept, so a platform cannot carry the body through a wall. A floor that did not move
-     * (a static level's: delta 0, or rounding) moves nothing: the slide would stop at once. */
-    if (v3_len(delta) > c->tiny) coll_cb_slide(c, pos, delta, NULL, false);
+     * (a static level's: delta 0, or rounding) moves nothing: the slide would stop at once.
+     * delta is finite (coll_cb_carry_delta), so the compare is never of a NaN. */
+    bool moved = v3_len(delta) > c->tiny;
+    if (moved) coll_cb_slide(c, pos, delta, NULL, false);
     /* The floor point's velocity at the end of the step: the chord delta / dt is its mean
      * velocity over the step (at mid-step); extrapolated by half a step from the previous
      * chord, a turning platform's tangent at take-off is right to second order (a jump off
-     * a turntable at 1 rev/s would otherwise leave rotated by half a step). */
-    fm_vec3_t chord = v3_scale(delta, 1.0f / c->dt);
+     * a turntable at 1 rev/s would otherwise leave rotated by half a step). A floor that
+     * moved nothing has no velocity either: its rounding residue over a tiny dt would read
+     * as metres per second (s31 l439: 5e-8 m over 1e-9 s kept as 14.9 m/s on leaving it). */
+    fm_vec3_t chord = moved ? v3_scale(delta, 1.0f / c->dt) : v3(0.0f, 0.0f, 0.0f);
     fm_vec3_t v = chord;
     if (b->flags & CB_FLAG_CARRIED) v = extrapolate_half_step(b->carry_velocity, chord, c->tiny);
     b->carry_velocity = chord;
