@@ -104,7 +104,7 @@ typedef struct {
     bool edges_no_room;
     /** Set by the floor probe when the crack rule alone, with no floor in the foot ray's
      *  reach, held the ball on edges it has no room to be lifted onto (the probe failed
-     *  there); cleared once per step (coll_char_body_step). The step's fall-only retry
+     *  there); cleared once per step (char_body_move_and_slide_in). The step's fall-only retry
      *  then slides, and coll_cb_unwedge treats an airborne start as wedged (soak s30 l14). */
     bool crack_no_floor;
 } cb_mem_t;
