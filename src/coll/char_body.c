@@ -399,6 +399,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     mem.down.valid = false;
     mem.ray_valid = false;
     mem.pairs.g = NULL;
+    mem.crack_no_floor = false;
     c.mem = &mem;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */
@@ -535,7 +536,12 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         bool kept = false;
         if (!walking && !jumping && fall < -c.tiny) {
             pos = start;
-            coll_cb_move_swept(&c, &pos, v3_scale(up, fall));
+            /* Where the crack rule alone held the ball on edges it had no room to be lifted
+             * onto (no floor in reach), the fall slides along what it meets: straight down,
+             * a wall leaning back into the fall under a tilted up stopped it at once, and the
+             * body hung at rest in the air for ever (soak s30 l14; coll_cb_unwedge too). */
+            if (mem.crack_no_floor) coll_cb_slide(&c, &pos, v3_scale(up, fall), NULL, false);
+            else coll_cb_move_swept(&c, &pos, v3_scale(up, fall));
             body->velocity = v3_scale(v3_sub(pos, start), 1.0f / dt);
             kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }

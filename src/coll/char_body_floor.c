@@ -1411,6 +1411,11 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     c->mem->edges_no_room = true;
                 }
                 fits = !s.found || stand_on(c, pos, s.gap, s.normal);
+            } else if (!fits && !found) {
+                /* the crack rule alone held it, no floor in the foot ray's reach at all, and
+                 * no room to be lifted onto its edges: the step is undone, and the step's
+                 * retry and coll_cb_unwedge know why (soak s30 l14) */
+                c->mem->crack_no_floor = true;
             }
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);

@@ -813,7 +813,15 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
      * high, its foot 2.09 mm over the room floor, its head under a triangle soup's face that
      * stopped the lift onto the tile edges 4.3 mm short (soak s25 l34). Found nothing: as
      * before (falling where it is). */
-    const bool held_nowhere = stands && c->mem->edges_no_room;
+    /* Likewise airborne at the start (it "fits" only falling), where this step's probe failed
+     * because the crack rule alone held the ball on edges it had no room to be lifted onto,
+     * with no floor in the foot ray's reach: the fall that never happens again. A body (r
+     * 0.78, up tilted 10 degrees) hung over a ramp's top corner in a room's corner, the wall
+     * under it leaning back into the fall, the one over it overhanging the lift, the floor
+     * 2.2 m down, out of reach (soak s30 l14): the search finds it a place it falls from. */
+    const bool held_nowhere =
+        stands && (c->mem->edges_no_room ||
+                   (c->mem->crack_no_floor && !was_grounded && !(b->flags & CB_FLAG_GROUNDED)));
     if (held_nowhere) stands = false;
     const fm_vec3_t held = *pos;
     int next = 0;
