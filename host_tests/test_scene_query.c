@@ -2216,6 +2216,110 @@ static void test_grid_kinds_covered(void)
     TEST_ASSERT_TRUE(g_hashed_built > 0);
 }
 
+/* A staircase strip as a level mesh has it (treads 0.28 m, risers 0.18 m, each strip two
+ * triangles across z -5 .. 5: the bench's stairs_real): capsules and balls placed diagonally
+ * off a nosing (the edge between a riser and the tread above it), 0.98-1.3 r from it, swept
+ * up, down, forward, back, diagonally or anywhere (perf20's test). The stair step's gathered
+ * sweep (coll_gather_capsule_sweep_corner) skips a triangle flat along an axis whose box
+ * passed the per-axis test but lies farther than r + eps from the swept axis's box
+ * (gather_corner_clear); the plain gathered sweep has no such cull. The same answer bit for
+ * bit (each on a gather of its own, so that neither reads preps the other made), far fewer
+ * triangle sweeps, and the scene's answer to the rounding of its frame. */
+static void test_gathered_sweep_box_corners_match_plain(void)
+{
+    uint32_t nv = 0, nt = 0;
+    float xs[24], ys[24];
+    int np = 0;
+    xs[np] = -4; ys[np++] = 0;
+    for (int k = 0; k < 6; k++) {
+        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)k;
+        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)(k + 1);
+    }
+    xs[np] = 4; ys[np++] = 1.08f;
+    for (int i = 0; i < np; i++) {
+        float v[2][3] = { { xs[i], ys[i], -5 }, { xs[i], ys[i], 5 } };
+        for (int k = 0; k < 2; k++)
+            for (int j = 0; j < 3; j++) g_verts[3 * (nv + (uint32_t)k) + (uint32_t)j] = v[k][j];
+        nv += 2;
+    }
+    for (uint32_t i = 0; i + 1 < (uint32_t)np; i++) {
+        uint32_t a = 2 * i, b = 2 * i + 1, c = 2 * i + 3, d = 2 * i + 2;
+        uint32_t q[6] = { a, b, c, a, c, d };
+        for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = q[k];
+        nt += 2;
+    }
+    const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+    coll_scene_t s;
+    coll_query_stats_t st;
+    coll_mesh_instance_t inst;
+    scene_of_one_mesh(&s, &st, &inst, m);
+    core_rng_t rng;
+    core_rng_seed(&rng, 2025);
+    static coll_gather_t g0, g1;
+    int cases = 0, hits = 0, calls_plain = 0, calls_corner = 0;
+    for (int i = 0; i < 4000; i++) {
+        const float r = (float)core_rng_range(&rng, 0.2, 0.6);
+        const float ihh = (i % 3 == 0) ? 0.0f : (float)core_rng_range(&rng, 0.1, 0.5);
+        /* a nosing (k = 1 .. 5: x 0.28 (k - 1), y 0.18 k) and a direction off it, above and
+         * in front of the riser below it (or behind, over the tread) */
+        int k = 1 + (int)core_rng_range(&rng, 0, 4.999);
+        float nx = 0.28f * (float)(k - 1), ny = 0.18f * (float)k;
+        float ang = (float)core_rng_range(&rng, 0.05, 3.09);
+        float dist = r * (float)core_rng_range(&rng, 0.98, 1.3);
+        /* the lower end of the axis at dist from the nosing */
+        fm_vec3_t c = {{ nx - cosf(ang) * dist, ny + sinf(ang) * dist + ihh, (float)core_rng_range(&rng, -1, 1) }};
+        int kind = i % 6;
+        fm_vec3_t d;
+        if (kind == 0) d = (fm_vec3_t){{ 0, 1, 0 }};
+        else if (kind == 1) d = (fm_vec3_t){{ 0, -1, 0 }};
+        else if (kind == 2) d = (fm_vec3_t){{ 1, 0, 0 }};
+        else if (kind == 3) d = (fm_vec3_t){{ -1, 0, 0 }};
+        else if (kind == 4) d = (fm_vec3_t){{ (float)core_rng_range(&rng, -1, 1), (float)core_rng_range(&rng, -1, 1), 0 }};
+        else d = (fm_vec3_t){{ (float)core_rng_range(&rng, -1, 1), (float)core_rng_range(&rng, -1, 1),
+                               (float)core_rng_range(&rng, -1, 1) }};
+        if (!(fm_vec3_len(&d) > 1e-3f)) continue;
+        fm_vec3_scale(&d, &d, (float)core_rng_range(&rng, 0.02, 0.3) / fm_vec3_len(&d));
+        fm_vec3_t lo = {{ c.x - 1.5f, c.y - 1.5f, c.z - 1.5f }}, hi = {{ c.x + 1.5f, c.y + 1.5f, c.z + 1.5f }};
+        coll_gather_begin(&g0, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        coll_gather_begin(&g1, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        TEST_ASSERT_TRUE(g0.valid && g1.valid);
+        coll_sweep_hit_t h0, h1, hs;
+        memset(&h0, 0, sizeof h0);
+        memset(&h1, 0, sizeof h1);
+        bool f0 = coll_gather_capsule_sweep(&g0, c, UP, r, ihh, d, &h0);
+        bool f1;
+        ASSERT_NO_ALLOC(f1 = coll_gather_capsule_sweep_corner(&g1, c, UP, r, ihh, d, &h1));
+        TEST_ASSERT_EQUAL(f0, f1);
+        cases++;
+        if (f1) {
+            hits++;
+            TEST_ASSERT_EQUAL_MEMORY(&h0.t, &h1.t, sizeof h0.t);
+            TEST_ASSERT_EQUAL_MEMORY(&h0.depth, &h1.depth, sizeof h0.depth);
+            TEST_ASSERT_EQUAL_MEMORY(&h0.point, &h1.point, sizeof h0.point);
+            TEST_ASSERT_EQUAL_MEMORY(&h0.normal, &h1.normal, sizeof h0.normal);
+            TEST_ASSERT_EQUAL_INT32(h0.triangle, h1.triangle);
+            /* the scene's sweep (no gather): the same to its frame's rounding */
+            TEST_ASSERT_TRUE(coll_capsule_sweep(&s, c, UP, r, ihh, d, 0xFF, COLL_TYPE_MESH, &hs));
+            TEST_ASSERT_FLOAT_WITHIN(1e-5f, hs.t, h1.t);
+        }
+        coll_set_tri_sweep_method(counting_method, NULL);
+        coll_gather_begin(&g0, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        coll_gather_begin(&g1, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep(&g0, c, UP, r, ihh, d, &h0);
+        calls_plain += g_method_calls;
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep_corner(&g1, c, UP, r, ihh, d, &h1);
+        calls_corner += g_method_calls;
+        coll_set_tri_sweep_method(NULL, NULL);
+    }
+    printf("capsules off a stair's nosing: %d sweeps (%d hits), triangle sweeps gathered %d, with the corners %d\n",
+           cases, hits, calls_plain, calls_corner);
+    TEST_ASSERT_TRUE(cases > 3500);
+    TEST_ASSERT_TRUE(hits > cases / 5 && hits < cases - cases / 5);
+    TEST_ASSERT_TRUE(calls_corner + 500 < calls_plain);
+}
+
 int main(void)
 {
     probe_bodies();
@@ -2244,5 +2348,6 @@ int main(void)
     RUN_TEST(test_gathered_ray_down_shared_edges);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);
+    RUN_TEST(test_gathered_sweep_box_corners_match_plain);
     return UNITY_END();
 }

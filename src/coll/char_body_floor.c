@@ -72,7 +72,7 @@ bool coll_cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_
 {
     bool found;
     if (cb_down_known(c, pos, len, &found, hit)) return found;
-    found = cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), hit);
+    found = cb_sweep_step(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), hit);
     cb_down_t *d = &c->mem->down;
     d->valid = true;
     d->pos = pos;
@@ -93,12 +93,16 @@ void coll_cb_down_moved(const cb_ctx_t *c, fm_vec3_t pos, float by)
 }
 
 /** The crack rule's ball (radius r) dropped from b0, the sweep capsule's bottom ball at
- *  pos, by len along -up: answered from the step's down sweep there when it is known. */
-static inline bool ball_drop(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t b0, float len, coll_sweep_hit_t *hit)
+ *  pos, by len along -up: answered from the step's down sweep there when it is known.
+ *  step: through cb_sweep_step (the same answer; ball_reaches_floor's drop over a level
+ *  floor, beside a stair's risers and treads). */
+static inline bool ball_drop(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t b0, float len, coll_sweep_hit_t *hit,
+                             bool step)
 {
     bool found;
     if (cb_down_known(c, pos, len, &found, hit)) return found;
-    return cb_sweep(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), hit);
+    return step ? cb_sweep_step(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), hit)
+                : cb_sweep(c, b0, c->radius, 0.0f, v3_scale(c->up, -len), hit);
 }
 
 /** ball_drop for a drop that stays above a plane (above: the first look's, over the foot
@@ -383,7 +387,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         h1 = *first;
         h1.t = first->t * first_len / len;
         if (!(h1.t <= 1.0f)) return false;
-    } else if (!ball_drop(c, pos, b0, len, &h1)) {
+    } else if (!ball_drop(c, pos, b0, len, &h1, false)) {
         return false;
     }
     if (!isfinite(h1.t) || !v3_finite(h1.normal) || !v3_finite(h1.point)) return false;
@@ -731,7 +735,7 @@ static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_
         const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu, false };
         met = ball_drop_above(c, pos, b0, s, &above, edge);
     } else {
-        met = ball_drop(c, pos, b0, s, edge);
+        met = ball_drop(c, pos, b0, s, edge, true);
     }
     if (!met) {
         /* level, or tilted less than 45 degrees: the ball touches the plane within a radius
@@ -1201,7 +1205,7 @@ static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap, fm_vec
         return true;
     }
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
-    float done = coll_cb_move_swept(c, pos, v3_scale(c->up, -gap));
+    float done = coll_cb_step_swept(c, pos, v3_scale(c->up, -gap)); /* (a lift onto a tread) */
     return !(gap < -step_eps && done * -gap < -gap - step_eps);
 }
 

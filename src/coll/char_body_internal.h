@@ -151,6 +151,14 @@ static inline bool cb_sweep(const cb_ctx_t *c, fm_vec3_t center, float radius, f
     return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
                               c->body->settings.coll_types, hit);
 }
+/* cb_sweep for the stair step's sweeps (coll_gather_capsule_sweep_corner): the same answer */
+static inline bool cb_sweep_step(const cb_ctx_t *c, fm_vec3_t center, float radius, float ihh, fm_vec3_t disp,
+                                 coll_sweep_hit_t *hit)
+{
+    if (c->gather) return coll_gather_capsule_sweep_corner(c->gather, center, c->up, radius, ihh, disp, hit);
+    return coll_capsule_sweep(c->scene, center, c->up, radius, ihh, disp, c->body->settings.read_mask,
+                              c->body->settings.coll_types, hit);
+}
 /* cb_sweep for the slide's sweeps of the sweep capsule: one from where the recovery's
  * overlap query just looked skips what that query found clear (coll_gather_memo_t); the
  * same answer. */
@@ -274,6 +282,8 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
  *  contact (a contact within skin of the end of d counts as the end: the target itself).
  *  Returns the fraction of d travelled (1 when unblocked). */
 float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
+/** coll_cb_move_swept for the stair step's lift and move across (cb_sweep_step) */
+float coll_cb_step_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d);
 /** Unswept push by delta, kept only when the sweep capsule then overlaps nothing new or
  *  deeper than before (coll_capsule_overlaps before and after); false: not moved. */
 bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);

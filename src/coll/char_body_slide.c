@@ -102,12 +102,13 @@ static fm_vec3_t walking_plane(const cb_ctx_t *c, fm_vec3_t pos, const coll_swee
     return v3_len(nh) > 0.5f ? nh : hit->normal;
 }
 
-/* coll_cb_move_swept; where it stops short, *normal (when not NULL) is the normal of what
+/* coll_cb_move_swept (step: coll_cb_step_swept, through cb_sweep_step); where it stops
+ * short, *normal (when not NULL) is the normal of what
  * stopped it. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline float move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, fm_vec3_t *normal)
+static inline float move_swept_in(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, fm_vec3_t *normal, bool step)
 {
     float len = v3_len(d);
     if (!(len > c->tiny) || !isfinite(len)) {
@@ -115,7 +116,8 @@ static inline float move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, f
         return 1.0f;
     }
     coll_sweep_hit_t hit;
-    if (!cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit) ||
+    if (!(step ? cb_sweep_step(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit)
+               : cb_sweep(c, cb_sweep_center(c, *pos), c->radius, c->sweep_ihh, d, &hit)) ||
         !isfinite(hit.t)) {
         *pos = v3_add(*pos, d);
         return 1.0f;
@@ -138,7 +140,12 @@ static inline float move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d, f
 
 float coll_cb_move_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
 {
-    return move_swept(c, pos, d, NULL);
+    return move_swept_in(c, pos, d, NULL, false);
+}
+
+float coll_cb_step_swept(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t d)
+{
+    return move_swept_in(c, pos, d, NULL, true);
 }
 
 /**
@@ -225,9 +232,9 @@ static bool try_step(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t left, const co
     float base;
     if (!floor_height(c, foot0, above, c->snap, foot0, &base, false)) return false;
     fm_vec3_t p = *pos;
-    float lift = c->step * coll_cb_move_swept(c, &p, v3_scale(c->up, c->step));
+    float lift = c->step * coll_cb_step_swept(c, &p, v3_scale(c->up, c->step));
     if (!(lift > cb_len_tol(c, 1e-4f))) return false;
-    float f = coll_cb_move_swept(c, &p, h);
+    float f = coll_cb_step_swept(c, &p, h);
     if (!(f * hl > cb_len_tol(c, 1e-4f))) return false;
     /* down by the lift, keeping the contact that stops it */
     coll_sweep_hit_t dh;
@@ -742,7 +749,7 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
             if (k > 0 && dists[k - 1] >= reach) return false;
             fm_vec3_t p = *pos, n;
             const fm_vec3_t way = v3_scale(d, dists[k] < reach ? dists[k] : reach);
-            const float f = move_swept(c, &p, way, &n);
+            const float f = move_swept_in(c, &p, way, &n, false);
             if (f < 1.0f) {
                 /* Stopped by something walkable (a floor's face or an edge it could stand
                  * on; under a tilted up the way across up goes down into the level floor the
@@ -760,7 +767,7 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
                  * with no velocity to say so (soak s3 l46). */
                 if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
                 const fm_vec3_t rest = v3_scale(way, 1.0f - f);
-                if (move_swept(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL) < 1.0f ||
+                if (move_swept_in(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL, false) < 1.0f ||
                     !v3_finite(p) || !stands_at(c, &p, c->contact_eps))
                     continue;
                 *pos = p;

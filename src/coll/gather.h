@@ -84,6 +84,12 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir_unit,
                          coll_ray_hit_t *hit);
 bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit);
+/** coll_gather_capsule_sweep, the same answer, with a cull that pays where a capsule moves
+ *  diagonally beside the edges of triangles flat along an axis (a stair step's lift, move
+ *  across and come down beside the next riser and tread: the box test's corners) and costs
+ *  a few instructions on every other such triangle. */
+bool coll_gather_capsule_sweep_corner(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                                      float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit);
 /** A plane the caller knows a sweep stays above: every point of the swept capsule more than
  *  2 x margin above the plane through p with unit normal n, over the whole motion (the
  *  crack rule's ball dropped to two skins over the floor the foot ray found; its roll along
