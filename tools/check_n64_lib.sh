@@ -7,7 +7,9 @@
 #     refuses to mix o32 and o64 objects);
 #   - free of double-precision arithmetic and conversions (add.d, mul.d, cvt.d.w, cvt.s.d,
 #     c.lt.d, ...): the library is single precision. ldc1/sdc1 and dmtc1/dmfc1 are moves,
-#     not arithmetic, and o64 code may use them to save and restore FP registers.
+#     not arithmetic, and o64 code may use them to save and restore FP registers;
+#   - (libcoll's) without calls to fabsf or sqrtf: src/coll/coll_libm.h makes them the
+#     builtins, which -ffreestanding otherwise turns into libc calls.
 # Across the archives together:
 #   - undefined symbols are on a short libc/libm allow-list (with --libdragon-fmath also
 #     libdragon's own fm_ functions, which then come from libdragon);
@@ -52,6 +54,12 @@ for lib in "$@"; do
             NF >= 3 { m = $3; sub(/ .*/, "", m)
                       if (m ~ /^[a-z0-9]+(\.[a-z0-9]+)*\.d$/ || m ~ /\.d\./) print fn " " m }' | sort -u)
         [ -z "$dbl" ] || fail "$name has double-precision instructions: $(echo "$dbl" | head -n 8 | tr '\n' ';')"
+        # the library's own code inlines fabsf and sqrtf (src/coll/coll_libm.h): under
+        # -ffreestanding a file that reaches them another way calls the libc per use
+        case "$(basename "$lib")" in libccd*) ;; *)
+            calls=$($nm -u "$o" | awk '$2 == "fabsf" || $2 == "sqrtf" {print $2}' | tr '\n' ' ')
+            [ -z "$calls" ] || fail "$name calls libm's $calls(not inlined: include coll_libm.h first)" ;;
+        esac
     done
     pre=$(prefixes_for "$lib")
     for s in $($nm -g --defined-only "$lib" | awk 'NF==3{print $3}' | sort -u); do

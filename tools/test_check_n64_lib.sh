@@ -25,6 +25,8 @@ mk o32 "-mabi=32" "$ok"
 mk malloc "" 'void *malloc(unsigned long); void *coll_alloc(void) { return malloc(4); }'
 mk mips32 "-mabi=32 -march=mips32r2" "$ok"
 mk prefix "" 'float cb_slide(float a) { return a * 2.0f; }'   # an internal without the library prefix
+mk libmcall "" '#include <math.h>
+float coll_len(float x, float y) { return sqrtf(fabsf(x) + y); }'   # libm calls, not the builtins
 
 bad=0
 run() { bash "$top/tools/check_n64_lib.sh" "$tp" "$tmp/$1/libcoll.a" > "$tmp/$1.log" 2>&1; }
@@ -32,7 +34,7 @@ if run good; then echo "check-test: clean archive accepted"; else
     echo "check-test: FAIL: the clean archive was rejected:"; cat "$tmp/good.log"; bad=1; fi
 # case:reason the check must give (a rejection for another reason does not count)
 for c in double:double-precision u32cast:double-precision fmsym:fm_vec3_dot o32:o64 malloc:malloc \
-         mips32:"MIPS III" prefix:"outside its own prefixes"; do
+         mips32:"MIPS III" prefix:"outside its own prefixes" libmcall:"calls libm"; do
     t=${c%%:*}; why=${c#*:}
     if [ ! -f "$tmp/$t/libcoll.a" ]; then echo "check-test: FAIL: could not build case $t"; bad=1; continue; fi
     if run "$t"; then echo "check-test: FAIL: case $t passed the check"; bad=1

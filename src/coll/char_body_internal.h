@@ -6,7 +6,7 @@
 #ifndef COLL_CHAR_BODY_INTERNAL_H
 #define COLL_CHAR_BODY_INTERNAL_H
 
-#include <math.h>
+#include "coll_libm.h"
 #include "coll/char_body.h"
 #include "gather.h"
 #include "vec3.h"

@@ -21,7 +21,7 @@
 #include "vec3.h"
 #include "coll/scene.h"
 #include "mesh_format.h"
-#include <math.h>
+#include "coll_libm.h"
 #include <string.h>
 
 /* Plain comparisons (libm's fminf/fmaxf are not on the console's libc allow-list). */

@@ -7,7 +7,7 @@
 #ifndef COLL_PRIM_UTIL_H
 #define COLL_PRIM_UTIL_H
 
-#include <math.h>
+#include "coll_libm.h"
 #include <stdint.h>
 #include "prim.h"
 #include "vec3.h"

@@ -5,7 +5,7 @@
  * The queries keep their own precomputed matrix form (query.c's xf3_t) because they map
  * many points per instance; these serve single points: a platform's anchor, a carry.
  */
-#include <math.h>
+#include "coll_libm.h"
 #include "coll/common.h"
 
 /* No rotation and unit scale: a level placed where it was baked (most instances). The

@@ -7,7 +7,7 @@
 #ifndef COLL_VEC3_H
 #define COLL_VEC3_H
 
-#include <math.h>
+#include "coll_libm.h"
 #include <stdbool.h>
 #include "fm_math.h"
 
