@@ -228,9 +228,12 @@ static int closed_winding(const soak_level_t *lvl, const char_body_settings_t *s
 bool soak_check_inside_closed(const soak_level_t *lvl, const char_body_settings_t *s, const double p[3])
 {
     /* two rays in directions no generated edge or face lies along: both must agree (a ray
-     * through an edge shared by two triangles counts it twice or not at all) */
+     * through an edge shared by two triangles counts it twice or not at all). Both go up:
+     * a solid standing on the room floor may have no bottom face (a V valley's wedges, the
+     * floor closes them: soak s31 l310), and a ray down would leave it through the floor
+     * uncounted. */
     static const double d1[3] = {0.3713906763541037, 0.8121168928170934, 0.4501390297069412};
-    static const double d2[3] = {-0.5773502691896258, -0.6172133998483676, 0.5345224838248488};
+    static const double d2[3] = {-0.5773502691896258, 0.6172133998483676, 0.5345224838248488};
     return closed_winding(lvl, s, p, d1) > 0 && closed_winding(lvl, s, p, d2) > 0;
 }
 

@@ -433,8 +433,13 @@ static bool same_pos(const float *a, const float *b) { return a[0] == b[0] && a[
 
 /* A piece of at most SOAK_FLIP_MAX_TRIS triangles whose every edge (by position) is shared
  * by exactly one other of its triangles, which can be wound consistently: true, with
- * flip[t] set for the triangles to turn over so that all face out (positive volume). */
-static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool *flip)
+ * flip[t] set for the triangles to turn over so that all face out (positive volume).
+ * A piece standing upright on the room floor (on_floor: its local y = 0 is the floor's
+ * plane) may leave edges in that plane open, the floor closing the solid, and may be
+ * several such shells, each wound out by its own volume: a V valley's two wedges (slope,
+ * slot wall, back and ends, no bottom face: soak s31 l310). The volume is taken about the
+ * local origin, which lies in the floor's plane, so the missing bottom adds nothing. */
+static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool on_floor, bool *flip)
 {
     const uint32_t n = p->ntris;
     if (n < 4 || n > SOAK_FLIP_MAX_TRIS) return false;
@@ -452,32 +457,40 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
                     if (fw || bw) { found++; nb[t][j] = (int)u; same[t][j] = fw; }
                 }
             }
-            if (found != 1) return false;
+            if (found == 0 && on_floor && a[1] == 0.0f && b[1] == 0.0f) nb[t][j] = -1; /* closed by the floor */
+            else if (found != 1) return false;
         }
-    /* flood the orientation from triangle 0 */
-    int state[SOAK_FLIP_MAX_TRIS], stack[SOAK_FLIP_MAX_TRIS], sp = 0;
+    /* flood the orientation from a triangle of each shell (one shell unless on_floor) */
+    int state[SOAK_FLIP_MAX_TRIS], shell[SOAK_FLIP_MAX_TRIS], stack[SOAK_FLIP_MAX_TRIS], sp = 0, nshell = 0;
     for (uint32_t t = 0; t < n; t++) state[t] = -1;
-    state[0] = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        int t = stack[--sp];
-        for (int j = 0; j < 3; j++) {
-            int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
-            if (state[u] < 0) { state[u] = want; stack[sp++] = u; }
-            else if (state[u] != want) return false; /* not orientable */
+    for (uint32_t t0 = 0; t0 < n; t0++) {
+        if (state[t0] >= 0) continue;
+        if (nshell > 0 && !on_floor) return false; /* more than one shell */
+        state[t0] = 0;
+        shell[t0] = nshell;
+        stack[sp++] = (int)t0;
+        while (sp > 0) {
+            int t = stack[--sp];
+            for (int j = 0; j < 3; j++) {
+                int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
+                if (u < 0) continue; /* an edge on the floor */
+                if (state[u] < 0) { state[u] = want; shell[u] = nshell; stack[sp++] = u; }
+                else if (state[u] != want) return false; /* not orientable */
+            }
         }
+        nshell++;
     }
-    double vol = 0;
+    double vol[SOAK_FLIP_MAX_TRIS] = {0};
     for (uint32_t t = 0; t < n; t++) {
-        if (state[t] < 0) return false; /* more than one shell */
         const float *a = tri_vert(l, p, t, 0), *b = tri_vert(l, p, t, 1), *c = tri_vert(l, p, t, 2);
         double v = (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
                    (double)a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
                    (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
-        vol += state[t] ? -v : v;
+        vol[shell[t]] += state[t] ? -v : v;
     }
-    if (!(fabs(vol) > 1e-9)) return false;
-    for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol < 0);
+    for (int k = 0; k < nshell; k++)
+        if (!(fabs(vol[k]) > 1e-9)) return false;
+    for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol[shell[t]] < 0);
     return true;
 }
 
@@ -508,7 +521,9 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
      * by position, is shared by exactly two of its triangles: the checker's copy is then
      * wound consistently, outwards (flip[t]: its second and third vertices swapped). */
     bool flip[SOAK_FLIP_MAX_TRIS] = {false};
-    if (!closed) closed = orient_by_position(l, p, flip);
+    /* standing upright on the room floor (the real-world shapes: unscaled, a yaw only) */
+    const bool on_floor = pos.y == 0.0 && q.x == 0.0 && q.z == 0.0 && sc.x == 1.0 && sc.y == 1.0 && sc.z == 1.0;
+    if (!closed) closed = orient_by_position(l, p, on_floor, flip);
     /* a mirroring scale turns the winding inside out */
     if (sc.x * sc.y * sc.z < 0) closed = false;
     for (uint32_t t = 0; t < p->ntris && l->nwtris < SOAK_MAX_TRIS; t++) {
