@@ -970,7 +970,8 @@ static void test_checker_inside_a_closed_solid(void)
  * each, no bottom face; the room floor closes them), with modular tiles (tops 0.24-0.31)
  * inside it. Its sweep capsule touches the wedge's slope from under it and its back from
  * behind; the foot is 125.33 mm under a tile's top. The wedges are closed solids (closed by
- * the floor), wound outwards shell by shell; the body is inside one, points in the slot,
+ * the floor), their outside known shell by shell (kept in the generator's vertex order,
+ * `closed` 2 where the back face is the outside); the body is inside one, points in the slot,
  * over the slope and behind the back are not, and the footing oracle gives no verdict
  * there. */
 static void test_checker_inside_a_wedge_on_the_floor(void)
@@ -989,11 +990,12 @@ static void test_checker_inside_a_wedge_on_the_floor(void)
         TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, c));
         for (uint32_t i = t0; i < t0 + 10; i++) {
             const soak_wtri_t *w = &lvl.wtris[i];
-            TEST_ASSERT_EQUAL_UINT8(1, w->closed);
+            TEST_ASSERT_TRUE(w->closed == 1 || w->closed == 2); /* 2: its back face is the outside */
             double e1[3], e2[3], n[3], d[3];
             for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
             n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-            TEST_ASSERT_TRUE(n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0); /* faces away from the inside */
+            const double sg = w->closed == 2 ? -1.0 : 1.0;
+            TEST_ASSERT_TRUE(sg * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) > 0); /* the outside faces away from the inside */
         }
     }
     const fm_vec3_t in = rp.start;

@@ -439,8 +439,9 @@ static bool same_pos(const float *a, const float *b) { return a[0] == b[0] && a[
  * several such shells, each wound out by its own volume: a V valley's two wedges (slope,
  * slot wall, back and ends, no bottom face: soak s31 l310). The volume is taken about the
  * local origin, which lies in the floor's plane, so the missing bottom adds nothing. */
-static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool on_floor, bool *flip)
+static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool on_floor, bool *flip, bool *by_floor)
 {
+    *by_floor = false;
     const uint32_t n = p->ntris;
     if (n < 4 || n > SOAK_FLIP_MAX_TRIS) return false;
     int nb[SOAK_FLIP_MAX_TRIS][3];
@@ -457,7 +458,10 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
                     if (fw || bw) { found++; nb[t][j] = (int)u; same[t][j] = fw; }
                 }
             }
-            if (found == 0 && on_floor && a[1] == 0.0f && b[1] == 0.0f) nb[t][j] = -1; /* closed by the floor */
+            if (found == 0 && on_floor && a[1] == 0.0f && b[1] == 0.0f) {
+                nb[t][j] = -1; /* closed by the floor */
+                *by_floor = true;
+            }
             else if (found != 1) return false;
         }
     /* flood the orientation from a triangle of each shell (one shell unless on_floor) */
@@ -491,6 +495,7 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
     for (int k = 0; k < nshell; k++)
         if (!(fabs(vol[k]) > 1e-9)) return false;
     for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol[shell[t]] < 0);
+    if (nshell > 1) *by_floor = true;
     return true;
 }
 
@@ -523,13 +528,17 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
     bool flip[SOAK_FLIP_MAX_TRIS] = {false};
     /* standing upright on the room floor (the real-world shapes: unscaled, a yaw only) */
     const bool on_floor = pos.y == 0.0 && q.x == 0.0 && q.z == 0.0 && sc.x == 1.0 && sc.y == 1.0 && sc.z == 1.0;
-    if (!closed) closed = orient_by_position(l, p, on_floor, flip);
+    bool by_floor = false;
+    if (!closed) closed = orient_by_position(l, p, on_floor, flip, &by_floor);
     /* a mirroring scale turns the winding inside out */
     if (sc.x * sc.y * sc.z < 0) closed = false;
     for (uint32_t t = 0; t < p->ntris && l->nwtris < SOAK_MAX_TRIS; t++) {
         soak_wtri_t *w = &l->wtris[l->nwtris++];
         for (int jj = 0; jj < 3; jj++) {
-            const int j = closed && t < SOAK_FLIP_MAX_TRIS && flip[t] && jj > 0 ? 3 - jj : jj;
+            /* (closed by the floor: the vertex order kept, the winding in `closed`, 2 for a
+             * triangle whose back face is the outside; the soak's teleport targets are picked
+             * on these triangles, and the runs stay those of before) */
+            const int j = closed && !by_floor && t < SOAK_FLIP_MAX_TRIS && flip[t] && jj > 0 ? 3 - jj : jj;
             const float *v = l->verts + (size_t)(p->first_vert + l->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
             dv3 lv = v3((double)v[0] * sc.x, (double)v[1] * sc.y, (double)v[2] * sc.z);
             dv3 wv = v_add(pos, q_rot(q, lv));
@@ -537,7 +546,7 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
         }
         wtri_bound(w);
         w->mask = p->inst.write_mask;
-        w->closed = closed;
+        w->closed = (uint8_t)(!closed ? 0 : by_floor && t < SOAK_FLIP_MAX_TRIS && flip[t] ? 2 : 1);
     }
 }
 
