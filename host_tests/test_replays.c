@@ -965,6 +965,63 @@ static void test_checker_inside_a_closed_solid(void)
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, &rp.settings, under));
 }
 
+/* Soak s31 l310: the game teleported the body (r 0.22, height 1.95, step 0.195) into one of
+ * a V valley's two wedges (piece 8, triangles 410-429: slope, slot wall, back and ends
+ * each, no bottom face; the room floor closes them), with modular tiles (tops 0.24-0.31)
+ * inside it. Its sweep capsule touches the wedge's slope from under it and its back from
+ * behind; the foot is 125.33 mm under a tile's top. The wedges are closed solids (closed by
+ * the floor), their outside known shell by shell (kept in the generator's vertex order,
+ * `closed` 2 where the back face is the outside); the body is inside one, points in the slot,
+ * over the slope and behind the back are not, and the footing oracle gives no verdict
+ * there. */
+static void test_checker_inside_a_wedge_on_the_floor(void)
+{
+    static soak_frame_t fr[4];
+    soak_replay_t rp;
+    int line = 0;
+    replay_and_level(REPLAY_DIR "/soak_s31_l310_footing.replay", &rp, fr, 4, &line);
+    const char_body_settings_t *s = &rp.settings;
+    for (int shell = 0; shell < 2; shell++) {
+        const uint32_t t0 = 410u + 10u * (uint32_t)shell;
+        double c[3] = {0, 0, 0}; /* a point inside the (convex) wedge: its vertices' mean */
+        for (uint32_t i = t0; i < t0 + 10; i++)
+            for (int j = 0; j < 3; j++)
+                for (int k = 0; k < 3; k++) c[k] += lvl.wtris[i].v[j][k] / 30.0;
+        TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, c));
+        for (uint32_t i = t0; i < t0 + 10; i++) {
+            const soak_wtri_t *w = &lvl.wtris[i];
+            TEST_ASSERT_TRUE(w->closed == 1 || w->closed == 2); /* 2: its back face is the outside */
+            double e1[3], e2[3], n[3], d[3];
+            for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
+            n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+            const double sg = w->closed == 2 ? -1.0 : 1.0;
+            TEST_ASSERT_TRUE(sg * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) > 0); /* the outside faces away from the inside */
+        }
+    }
+    const fm_vec3_t in = rp.start;
+    soak_capsule_t full, sweep;
+    soak_capsules_at(s, in, &full, &sweep);
+    double mid[3];
+    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+    int32_t tri = -1;
+    double raw = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* no face near */
+    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, mid));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.12533, soak_check_footing(&lvl, s, in)); /* what the oracle said */
+    const double slot[3] = {-8.27, 0.5, 1.678}, over[3] = {mid[0], 2.6, mid[2]}, behind[3] = {mid[0], 1.2, 4.6};
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, slot));
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, over));
+    TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, behind));
+    soak_sim_begin(&osim, &lvl, s, in);
+    osim.excused = false;
+    osim.oracles = 1u << SOAK_FAIL_FOOTING;
+    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = 12;
+    osim.body.floor_normal = V(0, 1, 0);
+    const fm_vec3_t z = V(0, 0, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, in, z, z, true, false, false));
+    TEST_ASSERT_TRUE(osim.st.inside_frames == 1);
+}
+
 /* The footing oracle and the edge of the floor under the foot (soak seed 10 level 402: up
  * tilted 45 degrees, r 0.73, a staircase whose treads (44.5 degrees off up) and whose side
  * (45.6 degrees off up, one plane for every step) are both walkable). The foot stands on a
@@ -1405,6 +1462,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
     RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
     RUN_TEST(test_checker_inside_a_closed_solid);
+    RUN_TEST(test_checker_inside_a_wedge_on_the_floor);
     RUN_TEST(test_oracle_footing_split_face_is_one_contact);
     RUN_TEST(test_oracle_footing_out_held_by_the_whole_slope_quad);
     RUN_TEST(test_oracle_support);

@@ -220,7 +220,8 @@ static int closed_winding(const soak_level_t *lvl, const char_body_settings_t *s
         if (dot3(e2, q) / det <= 0) continue;
         double n[3];
         cross3(n, e1, e2);
-        wn += dot3(n, dir) > 0 ? 1 : -1;
+        const bool out = dot3(n, dir) > 0; /* through its front face */
+        wn += out == (w->closed != 2) ? 1 : -1; /* (2: its back face is the outside) */
     }
     return wn;
 }
@@ -228,9 +229,12 @@ static int closed_winding(const soak_level_t *lvl, const char_body_settings_t *s
 bool soak_check_inside_closed(const soak_level_t *lvl, const char_body_settings_t *s, const double p[3])
 {
     /* two rays in directions no generated edge or face lies along: both must agree (a ray
-     * through an edge shared by two triangles counts it twice or not at all) */
+     * through an edge shared by two triangles counts it twice or not at all). Both go up:
+     * a solid standing on the room floor may have no bottom face (a V valley's wedges, the
+     * floor closes them: soak s31 l310), and a ray down would leave it through the floor
+     * uncounted. */
     static const double d1[3] = {0.3713906763541037, 0.8121168928170934, 0.4501390297069412};
-    static const double d2[3] = {-0.5773502691896258, -0.6172133998483676, 0.5345224838248488};
+    static const double d2[3] = {-0.5773502691896258, 0.6172133998483676, 0.5345224838248488};
     return closed_winding(lvl, s, p, d1) > 0 && closed_winding(lvl, s, p, d2) > 0;
 }
 
@@ -449,7 +453,7 @@ static bool inside_face(const soak_wtri_t *w, const double up[3])
     double e1[3], e2[3], n[3];
     sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
     cross3(n, e1, e2);
-    return dot3(n, up) < 0;
+    return w->closed == 2 ? dot3(n, up) > 0 : dot3(n, up) < 0; /* (2: its back face is the outside) */
 }
 
 static void foot_point(const char_body_settings_t *s, fm_vec3_t owner, double up[3], double f[3], double *r)

@@ -433,9 +433,15 @@ static bool same_pos(const float *a, const float *b) { return a[0] == b[0] && a[
 
 /* A piece of at most SOAK_FLIP_MAX_TRIS triangles whose every edge (by position) is shared
  * by exactly one other of its triangles, which can be wound consistently: true, with
- * flip[t] set for the triangles to turn over so that all face out (positive volume). */
-static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool *flip)
+ * flip[t] set for the triangles to turn over so that all face out (positive volume).
+ * A piece standing upright on the room floor (on_floor: its local y = 0 is the floor's
+ * plane) may leave edges in that plane open, the floor closing the solid, and may be
+ * several such shells, each wound out by its own volume: a V valley's two wedges (slope,
+ * slot wall, back and ends, no bottom face: soak s31 l310). The volume is taken about the
+ * local origin, which lies in the floor's plane, so the missing bottom adds nothing. */
+static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, bool on_floor, bool *flip, bool *by_floor)
 {
+    *by_floor = false;
     const uint32_t n = p->ntris;
     if (n < 4 || n > SOAK_FLIP_MAX_TRIS) return false;
     int nb[SOAK_FLIP_MAX_TRIS][3];
@@ -452,32 +458,44 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
                     if (fw || bw) { found++; nb[t][j] = (int)u; same[t][j] = fw; }
                 }
             }
-            if (found != 1) return false;
+            if (found == 0 && on_floor && a[1] == 0.0f && b[1] == 0.0f) {
+                nb[t][j] = -1; /* closed by the floor */
+                *by_floor = true;
+            }
+            else if (found != 1) return false;
         }
-    /* flood the orientation from triangle 0 */
-    int state[SOAK_FLIP_MAX_TRIS], stack[SOAK_FLIP_MAX_TRIS], sp = 0;
+    /* flood the orientation from a triangle of each shell (one shell unless on_floor) */
+    int state[SOAK_FLIP_MAX_TRIS], shell[SOAK_FLIP_MAX_TRIS], stack[SOAK_FLIP_MAX_TRIS], sp = 0, nshell = 0;
     for (uint32_t t = 0; t < n; t++) state[t] = -1;
-    state[0] = 0;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        int t = stack[--sp];
-        for (int j = 0; j < 3; j++) {
-            int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
-            if (state[u] < 0) { state[u] = want; stack[sp++] = u; }
-            else if (state[u] != want) return false; /* not orientable */
+    for (uint32_t t0 = 0; t0 < n; t0++) {
+        if (state[t0] >= 0) continue;
+        if (nshell > 0 && !on_floor) return false; /* more than one shell */
+        state[t0] = 0;
+        shell[t0] = nshell;
+        stack[sp++] = (int)t0;
+        while (sp > 0) {
+            int t = stack[--sp];
+            for (int j = 0; j < 3; j++) {
+                int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
+                if (u < 0) continue; /* an edge on the floor */
+                if (state[u] < 0) { state[u] = want; shell[u] = nshell; stack[sp++] = u; }
+                else if (state[u] != want) return false; /* not orientable */
+            }
         }
+        nshell++;
     }
-    double vol = 0;
+    double vol[SOAK_FLIP_MAX_TRIS] = {0};
     for (uint32_t t = 0; t < n; t++) {
-        if (state[t] < 0) return false; /* more than one shell */
         const float *a = tri_vert(l, p, t, 0), *b = tri_vert(l, p, t, 1), *c = tri_vert(l, p, t, 2);
         double v = (double)a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
                    (double)a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
                    (double)a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0]);
-        vol += state[t] ? -v : v;
+        vol[shell[t]] += state[t] ? -v : v;
     }
-    if (!(fabs(vol) > 1e-9)) return false;
-    for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol < 0);
+    for (int k = 0; k < nshell; k++)
+        if (!(fabs(vol[k]) > 1e-9)) return false;
+    for (uint32_t t = 0; t < n; t++) flip[t] = (state[t] != 0) != (vol[shell[t]] < 0);
+    if (nshell > 1) *by_floor = true;
     return true;
 }
 
@@ -508,13 +526,19 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
      * by position, is shared by exactly two of its triangles: the checker's copy is then
      * wound consistently, outwards (flip[t]: its second and third vertices swapped). */
     bool flip[SOAK_FLIP_MAX_TRIS] = {false};
-    if (!closed) closed = orient_by_position(l, p, flip);
+    /* standing upright on the room floor (the real-world shapes: unscaled, a yaw only) */
+    const bool on_floor = pos.y == 0.0 && q.x == 0.0 && q.z == 0.0 && sc.x == 1.0 && sc.y == 1.0 && sc.z == 1.0;
+    bool by_floor = false;
+    if (!closed) closed = orient_by_position(l, p, on_floor, flip, &by_floor);
     /* a mirroring scale turns the winding inside out */
     if (sc.x * sc.y * sc.z < 0) closed = false;
     for (uint32_t t = 0; t < p->ntris && l->nwtris < SOAK_MAX_TRIS; t++) {
         soak_wtri_t *w = &l->wtris[l->nwtris++];
         for (int jj = 0; jj < 3; jj++) {
-            const int j = closed && t < SOAK_FLIP_MAX_TRIS && flip[t] && jj > 0 ? 3 - jj : jj;
+            /* (closed by the floor: the vertex order kept, the winding in `closed`, 2 for a
+             * triangle whose back face is the outside; the soak's teleport targets are picked
+             * on these triangles, and the runs stay those of before) */
+            const int j = closed && !by_floor && t < SOAK_FLIP_MAX_TRIS && flip[t] && jj > 0 ? 3 - jj : jj;
             const float *v = l->verts + (size_t)(p->first_vert + l->idx[(p->first_tri + t) * 3 + (uint32_t)j]) * 3;
             dv3 lv = v3((double)v[0] * sc.x, (double)v[1] * sc.y, (double)v[2] * sc.z);
             dv3 wv = v_add(pos, q_rot(q, lv));
@@ -522,7 +546,7 @@ static void world_tris(soak_level_t *l, const soak_piece_t *p)
         }
         wtri_bound(w);
         w->mask = p->inst.write_mask;
-        w->closed = closed;
+        w->closed = (uint8_t)(!closed ? 0 : by_floor && t < SOAK_FLIP_MAX_TRIS && flip[t] ? 2 : 1);
     }
 }
 

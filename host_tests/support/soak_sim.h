@@ -86,7 +86,10 @@ typedef struct {
     double rad;       ///< bounding-sphere radius
     uint8_t mask;     ///< write mask of its piece
     uint8_t closed;   ///< its piece is closed and consistently wound (every directed edge met
-                      ///< once reversed): its front face (by winding) is the outside of a solid
+                      ///< once reversed): its front face (by winding) is the outside of a solid;
+                      ///< 2: closed, its back face is the outside (a solid closed by the room
+                      ///< floor, kept in the generator's vertex order: the soak's teleport
+                      ///< targets are picked on these triangles)
 } soak_wtri_t;
 
 /** Generator versions. 1: the original generator (replays without a `gen` line);
