@@ -890,6 +890,28 @@ static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00814, soak_check_footing(&lvl, s, deeper));
 }
 
+/* Whether triangle w's front (its winding's normal, times sg) faces away from point c. */
+static bool faces_away_from(const soak_wtri_t *w, const double c[3], double sg)
+{
+    double e1[3], e2[3], n[3], d[3];
+    for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    return sg * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) > 0;
+}
+
+/* The footing oracle alone, on a body grounded on floor id at `in` (up +y): the verdict of
+ * one step that stays there. */
+static int footing_verdict_at(const char_body_settings_t *s, fm_vec3_t in, uint16_t floor_id)
+{
+    soak_sim_begin(&osim, &lvl, s, in);
+    osim.excused = false;
+    osim.oracles = 1u << SOAK_FAIL_FOOTING;
+    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = floor_id;
+    osim.body.floor_normal = V(0, 1, 0);
+    const fm_vec3_t z = V(0, 0, 0);
+    return oracle_step(in, in, z, z, true, false, false);
+}
+
 /* A body wholly inside a closed solid is in geometry (branch foot15). Soak s4 l325: the
  * game teleported a grounded body (r 0.105) into a staircase's step block (top 4.9563,
  * front face 12 mm beside its capsule, 1.3 mm over its head): no face within its radius,
@@ -927,13 +949,8 @@ static void test_checker_inside_a_closed_solid(void)
     /* the oracle on that state: no verdict (inside), a step out of it neither (it started
      * inside); 0.25 m back (out of the block, under its front face, over the tread below,
      * the foot 138 mm in the next step's block): outside, judged, fails as before */
-    soak_sim_begin(&osim, &lvl, s, in);
-    osim.excused = false;
-    osim.oracles = 1u << SOAK_FAIL_FOOTING;
-    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = 1;
-    osim.body.floor_normal = V(0, 1, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, footing_verdict_at(s, in, 1));
     const fm_vec3_t z = V(0, 0, 0);
-    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, in, z, z, true, false, false));
     TEST_ASSERT_TRUE(osim.st.inside_frames == 1); /* (no 64-bit asserts: Unity on MIPS has them off) */
     const fm_vec3_t out = V(in.x, in.y, in.z - 0.25f);
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, out, z, z, true, false, false));
@@ -953,10 +970,8 @@ static void test_checker_inside_a_closed_solid(void)
     for (uint32_t i = 460; i <= 467; i++) {
         const soak_wtri_t *w = &lvl.wtris[i];
         TEST_ASSERT_EQUAL_UINT8(1, w->closed);
-        double c[3] = {7.7, 5.0, 7.4}, e1[3], e2[3], n[3], d[3]; /* a point inside the ramp */
-        for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
-        n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        TEST_ASSERT_TRUE(n[0] * d[0] + n[1] * d[1] + n[2] * d[2] > 0); /* faces away from the inside */
+        const double c[3] = {7.7, 5.0, 7.4}; /* a point inside the ramp */
+        TEST_ASSERT_TRUE(faces_away_from(w, c, 1.0));
     }
     soak_capsules_at(&rp.settings, rp.start, &full, &sweep);
     for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
@@ -991,11 +1006,8 @@ static void test_checker_inside_a_wedge_on_the_floor(void)
         for (uint32_t i = t0; i < t0 + 10; i++) {
             const soak_wtri_t *w = &lvl.wtris[i];
             TEST_ASSERT_TRUE(w->closed == 1 || w->closed == 2); /* 2: its back face is the outside */
-            double e1[3], e2[3], n[3], d[3];
-            for (int k = 0; k < 3; k++) { e1[k] = w->v[1][k] - w->v[0][k]; e2[k] = w->v[2][k] - w->v[0][k]; d[k] = w->v[0][k] - c[k]; }
-            n[0] = e1[1] * e2[2] - e1[2] * e2[1]; n[1] = e1[2] * e2[0] - e1[0] * e2[2]; n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-            const double sg = w->closed == 2 ? -1.0 : 1.0;
-            TEST_ASSERT_TRUE(sg * (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) > 0); /* the outside faces away from the inside */
+            /* the outside faces away from the inside */
+            TEST_ASSERT_TRUE(faces_away_from(w, c, w->closed == 2 ? -1.0 : 1.0));
         }
     }
     const fm_vec3_t in = rp.start;
@@ -1012,13 +1024,7 @@ static void test_checker_inside_a_wedge_on_the_floor(void)
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, slot));
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, over));
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, behind));
-    soak_sim_begin(&osim, &lvl, s, in);
-    osim.excused = false;
-    osim.oracles = 1u << SOAK_FAIL_FOOTING;
-    osim.body.flags = CB_FLAG_GROUNDED; osim.body.floor_id = 12;
-    osim.body.floor_normal = V(0, 1, 0);
-    const fm_vec3_t z = V(0, 0, 0);
-    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(in, in, z, z, true, false, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, footing_verdict_at(s, in, 12));
     TEST_ASSERT_TRUE(osim.st.inside_frames == 1);
 }
 

@@ -1526,6 +1526,33 @@ static void test_gathered_sweep_above_a_floor_plane(void)
     TEST_ASSERT_TRUE(above_calls * 2 < plain_calls);
 }
 
+/* Appends to g_verts/g_idx a staircase strip across z -5 .. 5: flat at y 0 from x = x0, six
+ * steps (treads 0.28 m, risers 0.18 m) from x = 0, flat at y 1.08 to x = x1 (a real
+ * staircase's proportions: the bench's stairs_real). */
+static void add_stair_strip(uint32_t *nv, uint32_t *nt, float x0, float x1)
+{
+    float xs[24], ys[24];
+    int np = 0;
+    xs[np] = x0; ys[np++] = 0.0f;
+    for (int k = 0; k < 6; k++) {
+        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)k;
+        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)(k + 1);
+    }
+    xs[np] = x1; ys[np++] = 1.08f;
+    const uint32_t base = *nv;
+    for (int i = 0; i < np; i++)
+        for (int e = 0; e < 2; e++) {
+            g_verts[3 * *nv] = xs[i]; g_verts[3 * *nv + 1] = ys[i]; g_verts[3 * *nv + 2] = e ? 5.0f : -5.0f;
+            (*nv)++;
+        }
+    for (uint32_t i = 0; i + 1 < (uint32_t)np; i++) {
+        uint32_t a = base + 2 * i, b = a + 1, c = a + 3, d = a + 2;
+        uint32_t q[6] = { a, b, c, a, c, d };
+        for (int k = 0; k < 6; k++) g_idx[3 * *nt + (uint32_t)k] = q[k];
+        *nt += 2;
+    }
+}
+
 /* The crack rule's roll (char_body_floor.c, ball_held and roll_above): the ball resting on
  * an edge, lifted off its contact by a fifth of the skin, rolls down the contact's tangent
  * plane. It stays above that plane by its measured clearance, so the faces behind the edge
@@ -1539,25 +1566,7 @@ static void test_roll_above_its_contact_plane_matches_plain(void)
 {
     uint32_t nv = 0, nt = 0;
     /* the staircase strip, z -5 .. 5, along +x from x = 0 */
-    float xs[24], ys[24];
-    int np = 0;
-    xs[np] = -5.0f; ys[np++] = 0.0f;
-    for (int k = 0; k < 6; k++) {
-        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)k;
-        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)(k + 1);
-    }
-    xs[np] = 5.0f; ys[np++] = 1.08f;
-    for (int i = 0; i < np; i++)
-        for (int e = 0; e < 2; e++) {
-            g_verts[3 * nv] = xs[i]; g_verts[3 * nv + 1] = ys[i]; g_verts[3 * nv + 2] = e ? 5.0f : -5.0f;
-            nv++;
-        }
-    for (int i = 0; i + 1 < np; i++) {
-        uint32_t a = (uint32_t)(2 * i), b = a + 1, c = a + 3, d = a + 2;
-        uint32_t q[6] = { a, b, c, a, c, d };
-        for (int k = 0; k < 6; k++) g_idx[3 * nt + k] = q[k];
-        nt += 2;
-    }
+    add_stair_strip(&nv, &nt, -5.0f, 5.0f);
     /* two slabs 1 m thick at z > 10.2 and z < 9.8, x -20 .. 20 (their tops and crack sides) */
     for (int sl = 0; sl < 2; sl++) {
         float zin = sl ? 10.2f : 9.8f, zout = sl ? 30.0f : -10.0f;
@@ -2228,26 +2237,7 @@ static void test_grid_kinds_covered(void)
 static void test_gathered_sweep_box_corners_match_plain(void)
 {
     uint32_t nv = 0, nt = 0;
-    float xs[24], ys[24];
-    int np = 0;
-    xs[np] = -4; ys[np++] = 0;
-    for (int k = 0; k < 6; k++) {
-        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)k;
-        xs[np] = 0.28f * (float)k; ys[np++] = 0.18f * (float)(k + 1);
-    }
-    xs[np] = 4; ys[np++] = 1.08f;
-    for (int i = 0; i < np; i++) {
-        float v[2][3] = { { xs[i], ys[i], -5 }, { xs[i], ys[i], 5 } };
-        for (int k = 0; k < 2; k++)
-            for (int j = 0; j < 3; j++) g_verts[3 * (nv + (uint32_t)k) + (uint32_t)j] = v[k][j];
-        nv += 2;
-    }
-    for (uint32_t i = 0; i + 1 < (uint32_t)np; i++) {
-        uint32_t a = 2 * i, b = 2 * i + 1, c = 2 * i + 3, d = 2 * i + 2;
-        uint32_t q[6] = { a, b, c, a, c, d };
-        for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = q[k];
-        nt += 2;
-    }
+    add_stair_strip(&nv, &nt, -4.0f, 4.0f);
     const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
     coll_scene_t s;
     coll_query_stats_t st;
