@@ -890,6 +890,21 @@ static void test_oracle_footing_not_on_the_inside_of_a_solid(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.00814, soak_check_footing(&lvl, s, deeper));
 }
 
+/* A body at `in` inside a closed solid that the distance check cannot see: no face within
+ * its sweep capsule's radius, its centre (into mid) inside, and the footing oracle's
+ * measure there `footing` (what it said before the solid was known). */
+static void assert_unseen_inside(const char_body_settings_t *s, fm_vec3_t in, double footing, double mid[3])
+{
+    soak_capsule_t full, sweep;
+    soak_capsules_at(s, in, &full, &sweep);
+    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+    int32_t tri = -1;
+    double raw = 0;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* no face near */
+    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, mid));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-4, footing, soak_check_footing(&lvl, s, in)); /* what the oracle said */
+}
+
 /* Whether triangle w's front (its winding's normal, times sg) faces away from point c. */
 static bool faces_away_from(const soak_wtri_t *w, const double c[3], double sg)
 {
@@ -930,14 +945,10 @@ static void test_checker_inside_a_closed_solid(void)
     const char_body_settings_t *s = &rp.settings;
     soak_capsule_t full, sweep;
     const fm_vec3_t in = V(-0x1.a489bep+1f, 0x1.18cf3cp+2f, 0x1.99074ap+0f); /* the body after the teleport */
-    soak_capsules_at(s, in, &full, &sweep);
     double mid[3];
-    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
+    assert_unseen_inside(s, in, 0.13795, mid);
     int32_t tri = -1;
     double raw = 0;
-    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* no face near */
-    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, mid));
-    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.13795, soak_check_footing(&lvl, s, in)); /* what the oracle said */
     double above[3] = {mid[0], 5.2, mid[2]};          /* over the step's top (4.9563) */
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, above));
     double front[3] = {mid[0], mid[1], 1.40};          /* 8 cm in front of its front face */
@@ -1011,15 +1022,8 @@ static void test_checker_inside_a_wedge_on_the_floor(void)
         }
     }
     const fm_vec3_t in = rp.start;
-    soak_capsule_t full, sweep;
-    soak_capsules_at(s, in, &full, &sweep);
     double mid[3];
-    for (int k = 0; k < 3; k++) mid[k] = (sweep.a[k] + sweep.b[k]) * 0.5;
-    int32_t tri = -1;
-    double raw = 0;
-    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_static_pen(&lvl, s, &sweep, &tri, &raw)); /* no face near */
-    TEST_ASSERT_TRUE(soak_check_inside_closed(&lvl, s, mid));
-    TEST_ASSERT_DOUBLE_WITHIN(1e-4, 0.12533, soak_check_footing(&lvl, s, in)); /* what the oracle said */
+    assert_unseen_inside(s, in, 0.12533, mid);
     const double slot[3] = {-8.27, 0.5, 1.678}, over[3] = {mid[0], 2.6, mid[2]}, behind[3] = {mid[0], 1.2, 4.6};
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, slot));
     TEST_ASSERT_FALSE(soak_check_inside_closed(&lvl, s, over));
