@@ -1306,6 +1306,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     bool hole_only = false; /* only a hole can hold it (piece_beyond) */
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
                         (gap > contact_eps || level_beyond(c, *pos, &edge) ||
+                         (gap < -contact_eps && edge_len > 0.0f &&
+                          v3_dot(v3_sub(edge.point, cb_foot(c, *pos)), up) > c->step) ||
                          (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
                          piece_behind(c, *pos, &edge, edge_len, &hit)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
