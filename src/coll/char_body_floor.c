@@ -911,12 +911,21 @@ static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_
  * tread behind; a bump of uneven ground has ground at another height. One ray instead of
  * the full rule's sweeps.
  */
-static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge)
+__attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float gap)
 {
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
     fm_vec3_t side = v3_norm(v3_reject(edge->normal, up)); /* from the edge towards the ball */
     if (v3_len2(side) < 0.5f) return true; /* met right under its centre: the full rule decides */
     float c1 = v3_dot(v3_sub(edge->point, foot), up), top = c->radius + c->step;
+    /* Stepping up onto the floor found (gap < 0), the ball's first contact still above the
+     * step zone over that floor: no next tread (a stair's nosing ahead is within a step
+     * of the tread stepped onto: 0.2 of 0.25 on the bench's stairs), something holds the
+     * ball higher; the full rule decides. A 45-degree staircase climbing a V valley's slot,
+     * r 0.926: the first tread 6 cm up, the first contact the nosing two treads higher
+     * (0.70 m over that tread, step 0.56); the slopes on both sides hold the ball 0.52 m
+     * up, and the foot stood on the tread 176 mm under them (soak s32 l339). Out of line
+     * (noinline): inlined, the extra argument cost every walk step 45 instructions. */
+    if (gap < -c->contact_eps && c1 + gap > c->step) return true;
     fm_vec3_t o = v3_madd(v3_madd(foot, side, c->radius), up, top);
     coll_ray_hit_t h;
     if (!cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) || !isfinite(h.distance)) return false;
@@ -1321,7 +1330,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     float edge_len;
                     bool hole_only = false; /* only a hole can hold it (piece_beyond) */
                     if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
-                        (gap > contact_eps || level_beyond(c, *pos, &edge) ||
+                        (gap > contact_eps || level_beyond(c, *pos, &edge, gap) ||
                          (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
                          piece_behind(c, *pos, &edge, edge_len, &hit)) &&
                         ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
