@@ -1308,7 +1308,8 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                         (gap > contact_eps || level_beyond(c, *pos, &edge) ||
                          (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
                          piece_behind(c, *pos, &edge, edge_len, &hit)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
+                        (ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) ||
+                         (hole_only && ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, false, false, &w, &far))) &&
                         w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
