@@ -487,6 +487,7 @@ again:;
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         if (hole_only) /* no groove's side (level_beyond): no roll */
             goto hole;
+    roll:;
         coll_sweep_hit_t h2;
         fm_vec3_t across = v3_norm(v3_reject(downhill, up));
         /* Resting on an edge almost under its centre the tangent barely descends: rolled
@@ -671,6 +672,10 @@ again:;
         if (ball_in_hole(c, v3_madd(b1, up, -0.5f * r), v3_norm(v3_reject(h1.normal, up)), under)) {
             if (over_floor && -c1 > floor_gap - c->contact_eps) return false;
             return held_at(c1, reach, gap, up, h1.point, &h1, out, far_out);
+        }
+        if (hole_only) { /* no hole holds it: its roll may (a groove, a wedge: soak s35 l296) */
+            hole_only = false;
+            goto roll;
         }
         /* Over a floor, a first contact above the step zone (a stair's top nosing beside
          * the body, met by the part of the ball the sweep capsule's bottom ball covers too)
@@ -1308,8 +1313,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                         (gap > contact_eps || level_beyond(c, *pos, &edge) ||
                          (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
                          piece_behind(c, *pos, &edge, edge_len, &hit)) &&
-                        (ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) ||
-                         (hole_only && ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, false, false, &w, &far))) &&
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
                         w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
