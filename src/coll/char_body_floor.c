@@ -487,6 +487,7 @@ again:;
         fm_vec3_t b1 = v3_madd(v3_madd(b0, up, -d1), h1.normal, 0.2f * c->skin);
         if (hole_only) /* no groove's side (level_beyond): no roll */
             goto hole;
+    roll:;
         coll_sweep_hit_t h2;
         fm_vec3_t across = v3_norm(v3_reject(downhill, up));
         /* Resting on an edge almost under its centre the tangent barely descends: rolled
@@ -687,6 +688,10 @@ again:;
         if (ball_in_hole(c, v3_madd(b1, up, -0.5f * r), v3_norm(v3_reject(h1.normal, up)), under)) {
             if (over_floor && -c1 > floor_gap - c->contact_eps) return false;
             return held_at(c1, reach, gap, up, h1.point, &h1, out, far_out);
+        }
+        if (hole_only) { /* no hole holds it: its roll may (a groove, a wedge: soak s35 l296) */
+            hole_only = false;
+            goto roll;
         }
         /* Over a floor, a first contact above the step zone (a stair's top nosing beside
          * the body, met by the part of the ball the sweep capsule's bottom ball covers too)
