@@ -210,29 +210,6 @@ static bool drop_past_side(const cb_ctx_t *c, fm_vec3_t *b0, float len, coll_swe
     return slide_down(c, b0, len, v3_scale(h1->normal, 0.2f * c->skin), down, h1, d1);
 }
 
-/* drop_past_side for a nearly level first contact (its tangent plane sinks too little for
- * slide_down): the ball (b1: lifted off the contact) moved off it across up by a radius,
- * when nothing stops that move, then dropped straight down by the rest of the drop's
- * length; what it meets is the first contact (soak s34 l341: off a 0.35 m block's top edge
- * over two slabs 0.17 m high with a 16 mm crack between them, the foot in the crack; the
- * foot stood on the room floor 173 mm under the slabs). */
-static bool drop_off_level(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t across, float len, fm_vec3_t *b0,
-                           coll_sweep_hit_t *h1, float *d1)
-{
-    const float r = c->radius, rest = len - *d1;
-    const fm_vec3_t off = v3_scale(across, r);
-    coll_sweep_hit_t h;
-    if (!(rest > c->tiny) || cb_sweep(c, b1, r, 0.0f, off, &h)) return false;
-    if (!cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(c->up, -rest), &h) || !isfinite(h.t) ||
-        !v3_finite(h.normal) || !v3_finite(h.point))
-        return false;
-    *b0 = v3_add(*b0, off);
-    *d1 += (h.t > 0.0f ? h.t : 0.0f) * rest;
-    *h1 = h;
-    h1->t = *d1 / len;
-    return true;
-}
-
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
 static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
 {
@@ -601,9 +578,7 @@ again:;
             coll_sweep_hit_t h1p = h1;
             float d1p = d1;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
-                !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) &&
-                (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
-                 (n1u * n1u >= 0.9f && v3_len(across) > 0.5f && drop_off_level(c, b1, across, len, &b0p, &h1p, &d1p))) &&
+                !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) && drop_past_side(c, &b0p, len, &h1p, &d1p) &&
                 floor_face(c, &h1p)) {
                 b0 = b0p;
                 h1 = h1p;
