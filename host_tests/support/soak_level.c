@@ -460,6 +460,7 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
             }
             if (found == 0 && on_floor && a[1] == 0.0f && b[1] == 0.0f) {
                 nb[t][j] = -1; /* closed by the floor */
+                same[t][j] = false;
                 *by_floor = true;
             }
             else if (found != 1) return false;
@@ -476,8 +477,9 @@ static bool orient_by_position(const soak_level_t *l, const soak_piece_t *p, boo
         while (sp > 0) {
             int t = stack[--sp];
             for (int j = 0; j < 3; j++) {
-                int u = nb[t][j], want = state[t] ^ (same[t][j] ? 1 : 0);
-                if (u < 0) continue; /* an edge on the floor */
+                int u = nb[t][j];
+                if (u < 0) continue; /* an edge on the floor: no neighbour, no orientation to pass on */
+                int want = state[t] ^ (same[t][j] ? 1 : 0);
                 if (state[u] < 0) { state[u] = want; shell[u] = nshell; stack[sp++] = u; }
                 else if (state[u] != want) return false; /* not orientable */
             }
