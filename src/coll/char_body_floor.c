@@ -558,6 +558,29 @@ again:;
             if (!met && cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &h2)) {
                 met = true;
                 descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
+                /* Over a floor, the drop a radius across met the floor under the foot: the
+                 * far side of the gap may be a piece narrower than a radius, passed over by
+                 * the move. Moved a half and then a quarter radius across, the drop meets it
+                 * (soak s33 l1: an 18 mm crack between tiles 44 and 29 mm high, the lower
+                 * one 0.6 m wide, r 0.98; the foot stood on the floor in the crack, 29 mm
+                 * under that tile's top, the ball held in no hole: the edges are parallel).
+                 * Only what the drop meets beyond the first contact (across it, by more than
+                 * the skin) is such a far side: moved a quarter radius off an edge 47 mm over
+                 * the floor, the ball dropped back onto that very edge (0.97 along up), was
+                 * held on it, and the body, not lifted there, hung at rest 18.5 mm over the
+                 * floor, not grounded (soak s36 l164, r 0.64); a shorter move meets it too. */
+                for (int k = 0; k < 2 && over_floor && isfinite(h2.t) && v3_finite(h2.point) &&
+                                -v3_dot(v3_sub(h2.point, foot), up) > floor_gap - cb_len_tol(c, CB_STEP_EPS);
+                     k++) {
+                    coll_sweep_hit_t hk;
+                    off = v3_scale(off, 0.5f);
+                    if (!cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &hk) || !isfinite(hk.t) ||
+                        !v3_finite(hk.point))
+                        continue;
+                    if (!(v3_dot(v3_sub(hk.point, h1.point), across) > c->skin)) break;
+                    h2 = hk;
+                    descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
+                }
             }
             /* (rolled off a nearly level edge: only a floor's face met there is the far side;
              * anything else, and the roll's answer stands) */
