@@ -651,6 +651,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      * triangle alone (166 mm); with the quad's other diagonal, 0). */
     const double top = step + r + 0.01;
     double hold = 0, held = 0; /* held: the largest raise a contact needs (top: none clears it) */
+    bool tangent = false; /* the ball raised by hold rests on the surface under the foot (below) */
     if (under >= 0 && z1 <= SOAK_FOOT_TOL) {
         double un[3], unused;
         hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
@@ -665,6 +666,35 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
             if (!(dot3(n, un) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ud) < 1e-6)) continue;
             double h = raise_to_clear(bc, up, r, w, top);
             if (h > hold) hold = h;
+        }
+        /* The ball raised by hold rests on that surface itself, touching it at one point T,
+         * when hold is the raise its whole plane needs (T lies on the surface's triangles);
+         * and nothing is in its way there when no triangle crosses the segment from T to that
+         * ball's centre (T is not under a piece beside the foot: the floor of a crack in a
+         * ramp, the ramp's plane lowered, runs on under the ramp, where T lies; below). Then
+         * the surface holds the ball as the floor under the foot holds it on a flat floor,
+         * and each contact is judged from there: one that raise clears holds nothing, one it
+         * does not by what it needs beyond it. Under an up 15 degrees off a tile field's
+         * normal, the foot on a tile lower than its neighbours, 6 mm from one's edge: the
+         * ball raised onto the tile (34.4 mm, the slope rule) clears every neighbour but one
+         * it still overlaps by 5.6 mm, a ledge beside it; all counted from the foot, three
+         * surrounded it and failed the body by 11.09 mm (soak s37 l330). */
+        if (plane && hold > 0) {
+            const double cs = dot3(un, up), dn = dot3(un, bc) - ud;
+            if (cs > 0 && hold >= (r - dn) / cs - 1e-7) {
+                double cc[3], tp[3];
+                for (int k = 0; k < 3; k++) {
+                    cc[k] = bc[k] + up[k] * hold;
+                    tp[k] = cc[k] - un[k] * (r - 1e-6);
+                }
+                bool open = true;
+                for (uint32_t i = 0; i < lvl->nwtris && open; i++) {
+                    const soak_wtri_t *w = &lvl->wtris[i];
+                    if (!tri_seen(w->mask, s) || dist3(cc, w->c) > w->rad + r) continue;
+                    open = soak_seg_tri_dist(tp, cc, w->v[0], w->v[1], w->v[2]) > 1e-7;
+                }
+                tangent = open;
+            }
         }
     }
     /* The points of the floor the foot stands on (its triangles in case 1's planes) closest
@@ -721,8 +751,9 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         double hi = raise_to_clear(bc, up, r, w, top);
         if (hi < 0) { held = top; continue; } /* not cleared by any raise in range */
         if (hi > held) held = hi;
+        if (tangent && hi <= hold) continue; /* the ball resting on the surface under the foot clears it */
         for (int k = 0; k < 3; k++) cu[nc][k] = dh[k] / l;
-        cex[nc] = hi - allow;
+        cex[nc] = hi - (tangent && hold > allow ? hold : allow);
         ctri[nc] = (int32_t)i;
         nc++;
     }
