@@ -862,10 +862,10 @@ static void replay_and_level(const char *path, soak_replay_t *rp, soak_frame_t *
  * its neighbours (0.1956 on two sides, 0.1884, a corner at 0.2121), 6 mm from one's edge.
  * The full ball overlaps A by the slope rule (34.4 mm along up); raised that much it rests
  * on A, touching it inside A, and clears every neighbour but one, which it overlaps by
- * 5.6 mm: a ledge beside it. Counted from the foot, three neighbours surrounded the ball
- * and the body failed by 11.09 mm. Judged from the ball resting on A it passes; the same
- * pit with its neighbours 60 mm higher (too deep for the ball to rest on A anywhere near
- * the foot) still fails. */
+ * 5.6 mm: a ledge beside it, and A out-holds the rest. Counted from the foot, three
+ * neighbours surrounded the ball and the body failed by 11.09 mm. The same pit with its
+ * neighbours 60 mm higher (the ball resting on A overlaps neighbours on both sides: too
+ * deep for it) still fails. */
 static void test_oracle_footing_judged_from_the_ball_resting_on_the_floor(void)
 {
     static soak_frame_t fr[4];
