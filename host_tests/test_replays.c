@@ -857,6 +857,44 @@ static void replay_and_level(const char *path, soak_replay_t *rp, soak_frame_t *
     TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, rp->level_seed, rp->gen));
 }
 
+/* Soak s37 l330 (generator 2): up 15 degrees off a tile field's normal (0.51 m tiles of
+ * different heights, no gaps), r 0.976. The foot stands on a tile (A, top 0.1840) lower than
+ * its neighbours (0.1956 on two sides, 0.1884, a corner at 0.2121), 6 mm from one's edge.
+ * The full ball overlaps A by the slope rule (34.4 mm along up); raised that much it rests
+ * on A, touching it inside A, and clears every neighbour but one, which it overlaps by
+ * 5.6 mm: a ledge beside it, and A out-holds the rest. Counted from the foot, three
+ * neighbours surrounded the ball and the body failed by 11.09 mm. The same pit with its
+ * neighbours 60 mm higher (the ball resting on A overlaps neighbours on both sides: too
+ * deep for it) still fails. */
+static void test_oracle_footing_judged_from_the_ball_resting_on_the_floor(void)
+{
+    static soak_frame_t fr[4];
+    soak_replay_t rp;
+    int line = 0;
+    replay_and_level(REPLAY_DIR "/soak_s37_l330_footing.replay", &rp, fr, 4, &line);
+    const char_body_settings_t *s = &rp.settings;
+    const fm_vec3_t p = V(-0x1.242ed6p+4f, 0x1.930ad2p+0f, 0x1.74586ap+3f); /* the body after the step */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.0, soak_check_footing(&lvl, s, p)); /* was 11.09 mm */
+    /* 3 mm under A: the surface under the foot holds nothing (the foot is not on it), and
+     * the three neighbours surround the ball, 3 mm more than before: 14.09 mm */
+    const fm_vec3_t q = V(p.x - 0.003f * s->up.x, p.y - 0.003f * s->up.y, p.z - 0.003f * s->up.z);
+    TEST_ASSERT_DOUBLE_WITHIN(2e-4, 0.01409, soak_check_footing(&lvl, s, q));
+    /* every tile top higher than A near the foot raised 60 mm: a pit the ball cannot reach
+     * the floor of (it needs 0.34 m clear of each side; A is 0.51 m wide) */
+    const double foot[3] = {-17.889, 0.184, 11.642};
+    for (uint32_t i = 0; i < lvl.nwtris; i++) {
+        soak_wtri_t *w = &lvl.wtris[i];
+        double d2 = 0;
+        for (int j = 0; j < 3; j++) d2 += (w->c[j] - foot[j]) * (w->c[j] - foot[j]);
+        if (d2 > 2.0 * 2.0) continue;
+        for (int v = 0; v < 3; v++)
+            if (w->v[v][1] > 0.186 && w->v[v][1] < 0.3) w->v[v][1] += 0.06;
+        w->c[1] = (w->v[0][1] + w->v[1][1] + w->v[2][1]) / 3;
+        w->rad += 0.06;
+    }
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, s, p) > 0.03);
+}
+
 /* The footing oracle and the inside of a closed solid (soak seed 4 level 20: up 48 degrees
  * off vertical, r 0.1865, a field of tiles 0.22 m high on the room floor, both steep for
  * this up). The body's foot in a crossing of cracks between four tiles: the line along up
@@ -1469,6 +1507,7 @@ int main(void)
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);
     RUN_TEST(test_oracle_footing_ledge_of_nine_contacts);
     RUN_TEST(test_oracle_footing_out_held_by_the_slope_under_the_foot);
+    RUN_TEST(test_oracle_footing_judged_from_the_ball_resting_on_the_floor);
     RUN_TEST(test_oracle_footing_not_on_the_inside_of_a_solid);
     RUN_TEST(test_oracle_footing_ridge_of_the_floor_under_the_foot);
     RUN_TEST(test_checker_inside_a_closed_solid);

@@ -508,7 +508,7 @@ static bool contacts_on_one_ledge(const soak_level_t *lvl, const double e1[3], c
     enum { MAXV = 3 * 64 }; /* every contact (MAXC): 9 around s3 l369 */
     double a[MAXV];
     int na = 0;
-    if (3 * n > MAXV) return false;
+    if (n < 1 || 3 * n > MAXV) return false;
     for (int i = 0; i < n; i++) {
         const soak_wtri_t *w = &lvl->wtris[ctri[ord[i]]];
         for (int v = 0; v < 3; v++) {
@@ -651,6 +651,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
      * triangle alone (166 mm); with the quad's other diagonal, 0). */
     const double top = step + r + 0.01;
     double hold = 0, held = 0; /* held: the largest raise a contact needs (top: none clears it) */
+    bool tangent = false; /* the ball raised by hold rests on the surface under the foot (below) */
     if (under >= 0 && z1 <= SOAK_FOOT_TOL) {
         double un[3], unused;
         hold = raise_to_clear(bc, up, r, &lvl->wtris[under], top);
@@ -665,6 +666,39 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
             if (!(dot3(n, un) > 1 - 1e-9 && fabs(dot3(n, w->v[0]) - ud) < 1e-6)) continue;
             double h = raise_to_clear(bc, up, r, w, top);
             if (h > hold) hold = h;
+        }
+        /* The ball raised by hold rests on that surface itself, touching it at one point T,
+         * when hold is the raise its whole plane needs (T lies on the surface's triangles),
+         * and nothing is in its way there when no triangle crosses the segment from T to that
+         * ball's centre (the floor of a crack in a ramp, the ramp's plane lowered, runs on
+         * under the ramp, where T lies: it holds nothing there). Then, below, when the
+         * contacts that raise does not clear are one ledge beside the foot (or none), the
+         * surface out-holds them all: the ball rests on it beside that ledge, as on a flat
+         * floor. Under an up 15 degrees off a tile field's normal, the foot on a tile lower
+         * than its neighbours, 6 mm from one's edge: raised onto the tile by the slope rule
+         * (34.4 mm) the ball clears every neighbour but one, which it overlaps by 5.6 mm;
+         * counted from the foot, three neighbours surrounded the ball and failed the body by
+         * 11.09 mm (soak s37 l330). Contacts left on both sides are judged from the foot as
+         * before: in a hole between tiles 0.15 m high under an 11 degree up, the ball raised
+         * onto the floor clears one side (12 of 19 mm) but still overlaps two tiles 142
+         * degrees apart by 0.12-0.15 m; that body sank into the hole (soak s6 l429, 12.05
+         * mm, on the body before its fix). */
+        if (plane && hold > 0) {
+            const double cs = dot3(un, up), dn = dot3(un, bc) - ud;
+            if (cs > 0 && hold >= (r - dn) / cs - 1e-7) {
+                double cc[3], tp[3];
+                for (int k = 0; k < 3; k++) {
+                    cc[k] = bc[k] + up[k] * hold;
+                    tp[k] = cc[k] - un[k] * (r - 1e-6);
+                }
+                bool open = true;
+                for (uint32_t i = 0; i < lvl->nwtris && open; i++) {
+                    const soak_wtri_t *w = &lvl->wtris[i];
+                    if (!tri_seen(w->mask, s) || dist3(cc, w->c) > w->rad + r) continue;
+                    open = soak_seg_tri_dist(tp, cc, w->v[0], w->v[1], w->v[2]) > 1e-7;
+                }
+                tangent = open;
+            }
         }
     }
     /* The points of the floor the foot stands on (its triangles in case 1's planes) closest
@@ -692,7 +726,7 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (dist3(fpt[nf], bc) < r) nf++;
     }
     enum { MAXC = 64 };
-    double cu[MAXC][3], cex[MAXC];
+    double cu[MAXC][3], cex[MAXC], chi[MAXC];
     int32_t ctri[MAXC];
     int nc = 0;
     for (uint32_t i = 0; i < lvl->nwtris && nc < MAXC; i++) {
@@ -723,11 +757,28 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         if (hi > held) held = hi;
         for (int k = 0; k < 3; k++) cu[nc][k] = dh[k] / l;
         cex[nc] = hi - allow;
+        chi[nc] = hi;
         ctri[nc] = (int32_t)i;
         nc++;
     }
     double worst = ex1 > 0 ? ex1 : 0;
     if (held <= hold) nc = 0; /* all out-held by the surface under the foot */
+    double e1[3] = {1, 0, 0}, e2[3];
+    if (fabs(up[0]) > 0.9) { e1[0] = 0; e1[1] = 1; }
+    double eu = dot3(e1, up);
+    for (int k = 0; k < 3; k++) e1[k] -= up[k] * eu;
+    double el = sqrt(dot3(e1, e1));
+    for (int k = 0; k < 3; k++) e1[k] /= el;
+    cross3(e2, up, e1);
+    if (tangent && nc > 0) {
+        /* the contacts the ball resting on the surface under the foot still overlaps: one
+         * ledge beside it (their triangles on one side of a line beside the foot) or none,
+         * and that surface out-holds the others; otherwise all are judged from the foot */
+        int left[MAXC], nl = 0;
+        for (int i = 0; i < nc; i++)
+            if (chi[i] > hold) left[nl++] = i;
+        if (nl == 0 || contacts_on_one_ledge(lvl, e1, e2, bc, ctri, left, nl)) nc = 0;
+    }
     /* The contacts hold the ball (a crack, a slot, a hole) only where they surround the
      * foot across up: no half-plane of directions is free of them (no angular gap between
      * them wider than 180 degrees, SOAK_CRACK_OPEN of rounding allowed), so the ball
@@ -747,13 +798,6 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
         while (k > 0 && cex[ord[k - 1]] < cex[i]) { ord[k] = ord[k - 1]; k--; }
         ord[k] = i;
     }
-    double e1[3] = {1, 0, 0}, e2[3];
-    if (fabs(up[0]) > 0.9) { e1[0] = 0; e1[1] = 1; }
-    double eu = dot3(e1, up);
-    for (int k = 0; k < 3; k++) e1[k] -= up[k] * eu;
-    double el = sqrt(dot3(e1, e1));
-    for (int k = 0; k < 3; k++) e1[k] /= el;
-    cross3(e2, up, e1);
     double ang[MAXC];
     for (int k = 0; k < nc; k++) {
         double a = atan2(dot3(cu[ord[k]], e2), dot3(cu[ord[k]], e1));
