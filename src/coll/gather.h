@@ -47,6 +47,9 @@ typedef struct {
     uint8_t read_mask, types;
     bool valid;          ///< false: overflowed (or nothing gathered): every query goes to the scene
     float scale;         ///< the gathered box's size against the one asked (gather_shrink)
+    /** At least every gathered triangle's hi.y (the largest a triangle kept had; a shrink
+     *  keeps it): a query box whose low y is above it meets none of them (gather_sweep_scan) */
+    float ytop;
     uint16_t ntris;
     coll_gather_tri_t tris[COLL_GATHER_MAX];
 } coll_gather_t;
