@@ -7,6 +7,7 @@
 #include "vec3.h"
 #include "gather.h"
 #include "grid_walk.h"
+#include <float.h>
 
 /* A kept triangle's box lo..hi meets the gathered box (the walk's test below, fused there with the box's computation). */
 static inline bool box_meets(const fm_vec3_t *lo, const fm_vec3_t *hi, const coll_gather_t *g)
@@ -104,6 +105,7 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
     const coll_scene_t *scene = g->scene;
     fm_vec3_t blo = *w->llo, bhi = *w->lhi;
     fm_vec3_t glo = g->lo, ghi = g->hi; /* the gathered box (changed only by gather_shrink) */
+    float ytop = g->ytop;
     coll_gather_tri_t spare;           /* a triangle that meets it with the buffer full */
     const coll_mesh_t *m = w->m;
     const uint8_t *codes = NULL;
@@ -173,8 +175,10 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
             gt->inst = inst;
             gt->tri = (int32_t)t;
             gt->prep.ready = false; /* filled by the first exact test */
+            ytop = f_max(ytop, gt->hi.y);
         }
     }
+    g->ytop = ytop;
     return true;
 }
 
@@ -185,6 +189,7 @@ void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo
     g->read_mask = read_mask;
     g->types = types;
     g->ntris = 0;
+    g->ytop = -FLT_MAX;
     g->valid = false;
     if (!scene || !vfin(&lo) || !vfin(&hi)) return;
     for (int a = 0; a < 3; a++) {
@@ -319,6 +324,7 @@ CAND_INLINE void emit_tri(coll_gather_t *g, const coll_gather_cache_tri_t *ct, c
     gt->inst = inst;
     gt->tri = (int32_t)ct->tri;
     gt->prep.ready = false; /* filled by the first exact test */
+    g->ytop = f_max(g->ytop, gt->hi.y);
 }
 
 /* A cached triangle's local box meets a local box (tri_box_reject's test: all three
@@ -503,6 +509,7 @@ static bool gather_from_cache(coll_gather_t *g, const coll_gather_cache_t *c)
     const coll_scene_t *scene = g->scene;
     if (!c->valid || c->scene != scene || c->ninst != scene->mesh_count) return false;
     g->ntris = 0;
+    g->ytop = -FLT_MAX;
     for (uint16_t i = 0; i < scene->mesh_count; i++) {
         const coll_mesh_instance_t *inst = scene->meshes[i];
         const coll_gather_cache_inst_t *ci = &c->inst[i];
@@ -560,6 +567,7 @@ static inline void gather_head(coll_gather_t *g, const coll_scene_t *scene, fm_v
     g->read_mask = read_mask;
     g->types = types;
     g->ntris = 0;
+    g->ytop = -FLT_MAX;
     g->valid = true;
     g->scale = 1.0f;
     box_of(lo, hi, &g->origin, &g->lo, &g->hi);

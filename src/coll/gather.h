@@ -49,6 +49,11 @@ typedef struct {
     float scale;         ///< the gathered box's size against the one asked (gather_shrink)
     uint16_t ntris;
     coll_gather_tri_t tris[COLL_GATHER_MAX];
+    /** At least every gathered triangle's hi.y (the largest a triangle kept had; a shrink
+     *  keeps it): a query box whose low y is above it meets none of them (gather_sweep_scan).
+     *  (After tris: ahead of them it moved their offset, and the console's query loops
+     *  over them got dearer.) */
+    float ytop;
 } coll_gather_t;
 
 /** Gathers the mesh triangles (seen through read_mask, when types has COLL_TYPE_MESH) that

@@ -855,6 +855,9 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     /* (memo: set once a hit at t = 0 is held, below) */
     const coll_gather_memo_t *skip = NULL;
+    /* every gathered triangle below the swept box (the slide's shortened capsule over a
+     * floor): gather_tri's first compare would reject each */
+    if (g->ytop < glo.y) return;
     for (uint16_t k = 0; k < g->ntris; k++) {
         fm_vec3_t w0, shape[3];
         if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
