@@ -523,7 +523,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
      * went into a walkable floor: under a tilted up the input across up can point into the
      * floor more than the jump lifts off it, and the step zone, unswept, sank up to 0.7 m
      * into the floor over the rise, too deep to lift out of at its top (soak s1 l302). */
-    const bool rising = jumping && !foot_landed && v3_dot(v3_sub(slid, start), up) > 0.0f;
+    const bool rising = jumping && !foot_landed && v3_dot(v3_sub(slid, start), up) > 0.0f && !coll_cb_rise_sunk(&c, pos);
     if (!coll_cb_probe_floor(&c, &pos, was_grounded, rising)) {
         /* Falling, only the move across up is undone: the body still falls straight down
          * from where it was (landing in front of a kerb it has no room to climb, under an

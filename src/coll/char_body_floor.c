@@ -1347,6 +1347,31 @@ static void snap_kept_over(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, 
     coll_cb_move_swept(c, pos, v3_scale(up, -s->gap));
 }
 
+/* A jump's rise skips the probe, so nothing looks at a walkable face the step zone (unswept)
+ * went under. Where the capsule has room to be lifted onto it, the step after the rise does
+ * so. Where it has none (an overhang over it), no later step can: the body rose into a place
+ * it cannot stand, and the probe undoes the step as any other. Under an up 38.9 degrees
+ * off a room's wall (walkable, 0.0007 inside the floor angle's cosine), the body at rest on
+ * the steep floor beside it, its foot in the crease under the wall's bottom edge, a low
+ * overhang 1.92 m over the floor: a jump moved the foot 0.28 m along the wall, under it,
+ * the overhang stopped the rise, and the body stood grounded on the wall with its foot
+ * 348 mm inside it (soak s40 l110). The foot ray of the probe, and a lift only where it
+ * finds such a face. */
+bool coll_cb_rise_sunk(const cb_ctx_t *c, fm_vec3_t pos)
+{
+    const fm_vec3_t up = c->up;
+    const float above = c->radius + c->step, step_eps = cb_len_tol(c, CB_STEP_EPS);
+    coll_ray_hit_t hit;
+    if (!cb_ray(c, v3_madd(cb_foot(c, pos), up, above), v3_scale(up, -1.0f), above, &hit) ||
+        !v3_finite(hit.normal) || !isfinite(hit.distance))
+        return false;
+    const float gap = hit.distance - above;
+    if (!(gap < -step_eps) || !(v3_dot(hit.normal, up) >= c->body->cos_floor_max_angle)) return false;
+    if (hit.instance && (hit.instance->flags & COLL_INSTANCE_ONE_WAY)) return false; /* jumped up through */
+    fm_vec3_t p = pos;
+    return !stand_on(c, &p, gap, hit.normal);
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;

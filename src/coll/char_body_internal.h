@@ -325,5 +325,8 @@ fm_vec3_t coll_cb_carry(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
  *  anchor. Returns false when the body needs a lift onto the floor that the capsule has no
  *  room for (it cannot stand where it is). */
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping);
+/** A rising step (a jump, its probe skipped) ended with the foot under a walkable face in
+ *  the step zone that the capsule has no room to be lifted onto: it cannot be there. */
+bool coll_cb_rise_sunk(const cb_ctx_t *c, fm_vec3_t pos);
 
 #endif
