@@ -640,11 +640,21 @@ again:;
             fm_vec3_t b0p = b0;
             coll_sweep_hit_t h1p = h1;
             float d1p = d1;
+            /* A contact ahead of the motion counts only where the ball slides down past it
+             * onto a floor's face that is not ahead of the motion (behind or beside the
+             * foot): the piece the foot just walked off. Walking off a tile 0.16 m high
+             * towards a ramp's low side edge 0.47 m above the foot, the ball rested on that
+             * edge, ahead; slid down past it, it met the tile's top behind the foot, which
+             * holds it with the edge; the rule gave up and the foot stood on the floor
+             * beside the tile, 81 mm under the ball resting on both (soak s41 l275). The
+             * next tread met climbing stairs lies ahead: not counted, as before. */
+            const bool ahead = v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
-                !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) &&
-                (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
-                 (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
-                  drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
+                (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
+                             !(v3_dot(v3_sub(h1p.point, foot), b->velocity) > 0.0f)
+                       : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
+                             (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
+                              drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
                 floor_face(c, &h1p)) {
                 b0 = b0p;
                 h1 = h1p;
@@ -1347,6 +1357,23 @@ static void snap_kept_over(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, 
     coll_cb_move_swept(c, pos, v3_scale(up, -s->gap));
 }
 
+/* The crack rule over a walkable floor the foot ray found `gap` below the foot (< 0: above
+ * it): the ball does not reach that floor, it rests on edges (a gap narrower than the
+ * capsule, a hole) that hold the foot higher than the floor by more than the step
+ * tolerance. *w: where it is held; *far: the ball's other contact. */
+static bool held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, float gap,
+                      support_t *w, fm_vec3_t *far)
+{
+    coll_sweep_hit_t edge;
+    float edge_len;
+    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
+    return !ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
+           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
+            (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
+           ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, w, far) &&
+           w->gap < gap - cb_len_tol(c, CB_STEP_EPS);
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -1408,15 +1435,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * tread stays a step down. */
                     support_t w;
                     fm_vec3_t far;
-                    coll_sweep_hit_t edge;
-                    float edge_len;
-                    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-                    if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
-                        (gap > contact_eps || level_beyond(c, *pos, &edge, gap) ||
-                         (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
-                         piece_behind(c, *pos, &edge, edge_len, &hit)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
-                        w.gap < gap - step_eps) {
+                    if (held_over(c, *pos, reach, &hit, gap, &w, &far)) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
                          * only the roll's end counted, soak s3 l124) */
@@ -1466,16 +1485,29 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                              * not the one under it (soak s18 l121: a walking step stood on
                              * the room floor 56 mm under the tile's top). */
                             coll_ray_hit_t top;
+                            bool on_top = false;
                             const float len = under.distance + 2.0f * c->skin - step_eps;
                             if (len > 0.0f &&
                                 cb_ray(c, v3_madd(under.point, up, step_eps), up, len, &top) &&
                                 v3_finite(top.normal) && v3_finite(top.point) && isfinite(top.distance) &&
                                 top.distance > 0.0f && -v3_dot(top.normal, up) >= b->cos_floor_max_angle) {
                                 float g3 = g2 - step_eps - top.distance;
-                                if (g3 < -step_eps)
+                                if (g3 < -step_eps) {
                                     s = (support_t){true, false, g3, v3_scale(top.normal, -1.0f), top.point, top.id,
                                                     top.instance};
+                                    on_top = true;
+                                }
                             }
+                            /* The floor past the steep face, as one the foot ray found
+                             * directly: the crack rule asks whether edges around the foot
+                             * hold the ball above it. Under an up 5 degrees off y the ray
+                             * from over the foot met a tile's side (steep for that up) and,
+                             * past it, the room floor in a hole between four tiles 0.18-0.20
+                             * m high (r 0.77); the foot stood on that floor, 182 mm under the
+                             * ball resting on the tiles' edges (soak s41 l186). */
+                            support_t w;
+                            fm_vec3_t far;
+                            if (!on_top && held_over(c, *pos, reach, &under, g2, &w, &far)) s = w;
                         }
                         break;
                     }
