@@ -814,7 +814,12 @@ again:;
  * every floor triangle under the ball, is skipped. The stop short of the plane keeps its
  * triangles out of reach, so their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
-static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
+/* Inline in both callers: every grounded step asks it from coll_cb_probe_floor (a call of its
+ * own, once held_over calls it too, cost the console's walk +0.6 %). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
                                coll_sweep_hit_t *edge, float *edge_len)
 {
     const fm_vec3_t up = c->up;
@@ -959,7 +964,10 @@ static inline bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
  * a descending body, +0.64 % of the course, and found nothing; the same hole under an up
  * along the floor's normal is not looked at (not seen in any soak so far).
  */
-static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
+#if defined(__GNUC__)
+__attribute__((always_inline)) /* as ball_reaches_floor: inline in both callers */
+#endif
+static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
                          const coll_ray_hit_t *under)
 {
     const fm_vec3_t up = c->up;
@@ -1357,21 +1365,26 @@ static void snap_kept_over(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, 
     coll_cb_move_swept(c, pos, v3_scale(up, -s->gap));
 }
 
-/* The crack rule over a walkable floor the foot ray found `gap` below the foot (< 0: above
- * it): the ball does not reach that floor, it rests on edges (a gap narrower than the
- * capsule, a hole) that hold the foot higher than the floor by more than the step
- * tolerance. *w: where it is held; *far: the ball's other contact. */
-static bool held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, float gap,
-                      support_t *w, fm_vec3_t *far)
+/* The crack rule over a walkable floor found past a steep face `gap` below the foot (< 0:
+ * above it), as coll_cb_probe_floor asks it over the floor its foot ray finds directly: the
+ * ball does not reach that floor, it rests on edges (a gap narrower than the capsule, a
+ * hole) that hold the foot higher than the floor by more than the step tolerance: then *s
+ * is where it is held. Kept out of line: a rare path, and inlined its locals grew the caller's frame
+ * (every walking step paid for it: the console's walk +0.7 %). */
+static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach,
+                                                const coll_ray_hit_t *hit, float gap, support_t *s)
 {
+    support_t w;
+    fm_vec3_t far;
     coll_sweep_hit_t edge;
     float edge_len;
     bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-    return !ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
-           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
-            (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
-           ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, w, far) &&
-           w->gap < gap - cb_len_tol(c, CB_STEP_EPS);
+    if (!ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
+        (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
+         (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
+        ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
+        w.gap < gap - cb_len_tol(c, CB_STEP_EPS))
+        *s = w;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
@@ -1435,7 +1448,15 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * tread stays a step down. */
                     support_t w;
                     fm_vec3_t far;
-                    if (held_over(c, *pos, reach, &hit, gap, &w, &far)) {
+                    coll_sweep_hit_t edge;
+                    float edge_len;
+                    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
+                    if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
+                        (gap > contact_eps || level_beyond(c, *pos, &edge, gap) ||
+                         (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
+                         piece_behind(c, *pos, &edge, edge_len, &hit)) &&
+                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
+                        w.gap < gap - step_eps) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
                          * only the roll's end counted, soak s3 l124) */
@@ -1478,26 +1499,6 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
                         if (g2 < -step_eps) {
                             s = (support_t){true, false, g2, under.normal, under.point, under.id, under.instance};
-                            /* A walkable face at the steep face's low edge, level with it
-                             * within the skin (a tile whose top meets a slope's bottom):
-                             * the look past the face started under it. The first face met
-                             * from the floor found up to the steep hit is the floor there,
-                             * not the one under it (soak s18 l121: a walking step stood on
-                             * the room floor 56 mm under the tile's top). */
-                            coll_ray_hit_t top;
-                            bool on_top = false;
-                            const float len = under.distance + 2.0f * c->skin - step_eps;
-                            if (len > 0.0f &&
-                                cb_ray(c, v3_madd(under.point, up, step_eps), up, len, &top) &&
-                                v3_finite(top.normal) && v3_finite(top.point) && isfinite(top.distance) &&
-                                top.distance > 0.0f && -v3_dot(top.normal, up) >= b->cos_floor_max_angle) {
-                                float g3 = g2 - step_eps - top.distance;
-                                if (g3 < -step_eps) {
-                                    s = (support_t){true, false, g3, v3_scale(top.normal, -1.0f), top.point, top.id,
-                                                    top.instance};
-                                    on_top = true;
-                                }
-                            }
                             /* The floor past the steep face, as one the foot ray found
                              * directly: the crack rule asks whether edges around the foot
                              * hold the ball above it. Under an up 5 degrees off y the ray
@@ -1505,9 +1506,24 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                              * past it, the room floor in a hole between four tiles 0.18-0.20
                              * m high (r 0.77); the foot stood on that floor, 182 mm under the
                              * ball resting on the tiles' edges (soak s41 l186). */
-                            support_t w;
-                            fm_vec3_t far;
-                            if (!on_top && held_over(c, *pos, reach, &under, g2, &w, &far)) s = w;
+                            held_over(c, *pos, reach, &under, g2, &s);
+                            /* A walkable face at the steep face's low edge, level with it
+                             * within the skin (a tile whose top meets a slope's bottom):
+                             * the look past the face started under it. The first face met
+                             * from the floor found up to the steep hit is the floor there,
+                             * not the one under it (soak s18 l121: a walking step stood on
+                             * the room floor 56 mm under the tile's top). */
+                            coll_ray_hit_t top;
+                            const float len = under.distance + 2.0f * c->skin - step_eps;
+                            if (len > 0.0f &&
+                                cb_ray(c, v3_madd(under.point, up, step_eps), up, len, &top) &&
+                                v3_finite(top.normal) && v3_finite(top.point) && isfinite(top.distance) &&
+                                top.distance > 0.0f && -v3_dot(top.normal, up) >= b->cos_floor_max_angle) {
+                                float g3 = g2 - step_eps - top.distance;
+                                if (g3 < -step_eps)
+                                    s = (support_t){true, false, g3, v3_scale(top.normal, -1.0f), top.point, top.id,
+                                                    top.instance};
+                            }
                         }
                         break;
                     }
