@@ -640,11 +640,21 @@ again:;
             fm_vec3_t b0p = b0;
             coll_sweep_hit_t h1p = h1;
             float d1p = d1;
+            /* A contact ahead of the motion counts only where the ball slides down past it
+             * onto a floor's face that is not ahead of the motion (behind or beside the
+             * foot): the piece the foot just walked off. Walking off a tile 0.16 m high
+             * towards a ramp's low side edge 0.47 m above the foot, the ball rested on that
+             * edge, ahead; slid down past it, it met the tile's top behind the foot, which
+             * holds it with the edge; the rule gave up and the foot stood on the floor
+             * beside the tile, 81 mm under the ball resting on both (soak s41 l275). The
+             * next tread met climbing stairs lies ahead: not counted, as before. */
+            const bool ahead = v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
-                !(v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f) &&
-                (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
-                 (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
-                  drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
+                (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
+                             !(v3_dot(v3_sub(h1p.point, foot), b->velocity) > 0.0f)
+                       : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
+                             (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
+                              drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
                 floor_face(c, &h1p)) {
                 b0 = b0p;
                 h1 = h1p;
@@ -804,7 +814,12 @@ again:;
  * every floor triangle under the ball, is skipped. The stop short of the plane keeps its
  * triangles out of reach, so their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
-static bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
+/* Inline in both callers: every grounded step asks it from coll_cb_probe_floor (a call of its
+ * own, once held_over calls it too, cost the console's walk +0.6 %). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *floor,
                                coll_sweep_hit_t *edge, float *edge_len)
 {
     const fm_vec3_t up = c->up;
@@ -949,7 +964,10 @@ static inline bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
  * a descending body, +0.64 % of the course, and found nothing; the same hole under an up
  * along the floor's normal is not looked at (not seen in any soak so far).
  */
-static bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
+#if defined(__GNUC__)
+__attribute__((always_inline)) /* as ball_reaches_floor: inline in both callers */
+#endif
+static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
                          const coll_ray_hit_t *under)
 {
     const fm_vec3_t up = c->up;
@@ -1372,6 +1390,28 @@ bool coll_cb_rise_sunk(const cb_ctx_t *c, fm_vec3_t pos)
     return !stand_on(c, &p, gap, hit.normal);
 }
 
+/* The crack rule over a walkable floor found past a steep face `gap` below the foot (< 0:
+ * above it), as coll_cb_probe_floor asks it over the floor its foot ray finds directly: the
+ * ball does not reach that floor, it rests on edges (a gap narrower than the capsule, a
+ * hole) that hold the foot higher than the floor by more than the step tolerance: then *s
+ * is where it is held. Kept out of line: a rare path, and inlined its locals grew the caller's frame
+ * (every walking step paid for it: the console's walk +0.7 %). */
+static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach,
+                                                const coll_ray_hit_t *hit, float gap, support_t *s)
+{
+    support_t w;
+    fm_vec3_t far;
+    coll_sweep_hit_t edge;
+    float edge_len;
+    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
+    if (!ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
+        (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
+         (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
+        ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
+        w.gap < gap - cb_len_tol(c, CB_STEP_EPS))
+        *s = w;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -1484,6 +1524,14 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (v3_dot(under.normal, up) >= b->cos_floor_max_angle) {
                         if (g2 < -step_eps) {
                             s = (support_t){true, false, g2, under.normal, under.point, under.id, under.instance};
+                            /* The floor past the steep face, as one the foot ray found
+                             * directly: the crack rule asks whether edges around the foot
+                             * hold the ball above it. Under an up 5 degrees off y the ray
+                             * from over the foot met a tile's side (steep for that up) and,
+                             * past it, the room floor in a hole between four tiles 0.18-0.20
+                             * m high (r 0.77); the foot stood on that floor, 182 mm under the
+                             * ball resting on the tiles' edges (soak s41 l186). */
+                            held_over(c, *pos, reach, &under, g2, &s);
                             /* A walkable face at the steep face's low edge, level with it
                              * within the skin (a tile whose top meets a slope's bottom):
                              * the look past the face started under it. The first face met
