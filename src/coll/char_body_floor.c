@@ -675,14 +675,7 @@ again:;
              * contact (once; soak s25 l380) */
             if (over_floor && !rolled_off && !flat && !walled && floor_face(c, &h2) && v3_dot(h2.normal, up) > 0.02f &&
                 -v3_dot(v3_sub(h2.point, foot), up) < floor_gap - cb_len_tol(c, CB_STEP_EPS)) {
-                const float t = h2.t > 0.0f ? h2.t : 0.0f;
-                b0 = v3_madd(b0, v3_reject(way, up), t);
-                d1 += descent;
-                h1 = h2;
-                h1.t = d1 / len;
-                rolled_off = true;
-                n1u = v3_dot(h1.normal, up);
-                goto again;
+                goto roll_on;
             }
             goto hole;
         }
@@ -746,14 +739,7 @@ again:;
             if (onto_floor && c2 < c1 && !rolled_off && !flat && !walled &&
                 -c2 < floor_gap - cb_len_tol(c, CB_STEP_EPS) &&
                 !(v3_dot(v3_sub(h2.point, foot), b->velocity) > 0.0f)) {
-                const float t = h2.t > 0.0f ? h2.t : 0.0f;
-                b0 = v3_madd(b0, v3_reject(way, up), t);
-                d1 += descent;
-                h1 = h2;
-                h1.t = d1 / len;
-                rolled_off = true;
-                n1u = v3_dot(h1.normal, up);
-                goto again;
+                goto roll_on;
             }
             goto hole;
         }
@@ -771,6 +757,16 @@ again:;
          * back into it every other step, at rest in the air (soak s7 l293) */
         if (flat && -contact > reach) goto hole;
         return held_at(contact, reach, gap, normal, far, &h1, out, far_out);
+    roll_on: { /* the roll's contact h2 becomes the first contact (once): roll on from it */
+        const float t = h2.t > 0.0f ? h2.t : 0.0f;
+        b0 = v3_madd(b0, v3_reject(way, up), t);
+        d1 += descent;
+        h1 = h2;
+        h1.t = d1 / len;
+        rolled_off = true;
+        n1u = v3_dot(h1.normal, up);
+        goto again;
+    }
     hole: /* the roll found nothing to hold the ball: held only in a hole (ball_in_hole) */
         if (ball_in_hole(c, v3_madd(b1, up, -0.5f * r), v3_norm(v3_reject(h1.normal, up)), under)) {
             if (over_floor && -c1 > floor_gap - c->contact_eps) return false;
