@@ -435,8 +435,8 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
  * no room to stand anywhere near (soak_check_room_to_stand). The recover pushed the sweep
  * capsule clear, but the body is still in the game's overlap: a body (r 0.57, h 2.31)
  * teleported into a triangle soup, pushed out into a pocket whose walkable slope crosses
- * its step zone under a soup face 0.3 m over its head, no place to stand within 3.4 m
- * (soak s43 l368). Both oracles at once ask the impossible there; the excuse lasts while
+ * its step zone under a soup face 0.3 m over its head; the nearest place to stand, 1.29 m
+ * away, is behind the pocket's wall (soak s43 l368). Both oracles at once ask the impossible there; the excuse lasts while
  * the body stays so wedged (counted, and as "stuck" past SOAK_RECOVER_FRAMES). Where a
  * state passes (the ball resting on nothing: airborne, soak s13 l195; a place to stand
  * near: s27 l164) the oracles judge the body as before. */
