@@ -132,6 +132,65 @@ static void test_checker_flags_bad_body_states(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONFINITE, soak_sim_check(&sim, false, true));
 }
 
+/* A body the game wedged (branch foot29): teleported into a triangle soup, pushed out
+ * into a pocket whose walkable slope crosses the step zone 100 mm over the foot under a
+ * soup face, with no place to stand within one straight move (soak s43 l368). Grounded,
+ * the footing fails; airborne at rest, the support would: the teleport's excuse lasts while
+ * it stays so wedged. Only an excuse goes on: a body that was never excused there is
+ * judged. And 5 cm into an open floor (room to stand right there) the excuse ends. */
+static void test_checker_wedged_by_the_game(void)
+{
+    static soak_sim_t sim;
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate_v(&lvl, 0x04a97ed1fc60b0d6ull, 2));
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.radius = 0x1.25f57p-1f; s.height = 0x1.282fdap+1f; s.step_height = 0x1.21a374p-1f;
+    s.floor_snap_distance = 0x1.94a572p-1f; s.floor_max_angle = 0x1.1422c4p+0f;
+    s.coll_types = 1; s.read_mask = 1;
+    fm_vec3_t wedged = {{0x1.b9645ap+3f, 0x1.392c04p+2f, -0x1.f63178p+2f}}, up = {{0.0f, 1.0f, 0.0f}};
+    soak_sim_begin(&sim, &lvl, &s, wedged);
+    sim.excused = false;
+    sim.owner = wedged;
+    char_body_t *b = &sim.body;
+    b->flags = CB_FLAG_GROUNDED; b->floor_id = 15; b->floor_normal = up;
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, &s, wedged) > 0.099);
+    TEST_ASSERT_TRUE(soak_check_touches_walkable(&lvl, &s, wedged));
+    TEST_ASSERT_FALSE(soak_check_room_to_stand(&lvl, &s, wedged));
+    soak_motion_t m;
+    memset(&m, 0, sizeof m);
+    m.pos0 = m.pos1 = wedged; m.dt = 1.0f / 60; m.grounded0 = true;
+    /* never excused: the footing fails */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, false, true));
+    TEST_ASSERT_FALSE(sim.excused);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, soak_sim_check_motion(&sim, &m));
+    /* the game's teleport ended there: excused, and on the next frames still */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, true, true));
+    TEST_ASSERT_TRUE(sim.excused);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, false, true));
+    TEST_ASSERT_TRUE(sim.excused);
+    TEST_ASSERT_EQUAL_INT(2, (int)sim.st.wedged_frames);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check_motion(&sim, &m));
+
+    /* the room of level 3 alone, the foot 5 cm into its floor: the floor is room to stand */
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate(&lvl, 3));
+    lvl.nwtris = lvl.pieces[0].ntris;
+    lvl.npieces = 1;
+    lvl.nbodies = 0;
+    char_body_settings_t s3 = CHAR_BODY_SETTINGS_DEFAULT; /* r 0.5, height 2, step 0.25, snap 0.3 */
+    s3.center_offset.y = 1.0f;                              /* foot at the owner origin */
+    fm_vec3_t sunk = {{0.0f, -0.05f, 0.0f}};
+    soak_sim_begin(&sim, &lvl, &s3, sunk);
+    sim.owner = sunk;
+    b = &sim.body;
+    b->flags = CB_FLAG_GROUNDED; b->floor_id = 1; b->floor_normal = up;
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, &s3, sunk) > 0.049);
+    TEST_ASSERT_TRUE(soak_check_touches_walkable(&lvl, &s3, sunk));
+    TEST_ASSERT_TRUE(soak_check_room_to_stand(&lvl, &s3, sunk));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&sim, true, true));
+    TEST_ASSERT_FALSE(sim.excused);
+    m.pos0 = m.pos1 = sunk;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, soak_sim_check_motion(&sim, &m));
+}
+
 /* The walkable-slope allowance: a ball whose foot point stands on a 40-degree ramp with a
  * step too small for the seed's rule is tolerated exactly r - (r + step) cos(40 deg). */
 static void test_checker_allowance_follows_the_seed_rule(void)
@@ -1491,6 +1550,7 @@ int main(void)
     RUN_TEST(test_checker_segment_triangle_distance);
     RUN_TEST(test_checker_sees_penetration_and_floor_reach);
     RUN_TEST(test_checker_flags_bad_body_states);
+    RUN_TEST(test_checker_wedged_by_the_game);
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
     RUN_TEST(test_checker_pushout_depth_ignores_the_allowance);
     RUN_TEST(test_oracle_direction);

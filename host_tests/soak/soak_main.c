@@ -17,6 +17,8 @@
  *                        settings of a human-sized character, a spawn point and random
  *                        walking and jumping, frames/N frames each, under the same checks
  *        [--trace L]          print the body's state every frame of level (body) L
+ *        [--shrink-min N]     a shrunk failing replay holds at least N frames (to see the
+ *                             steps before the failing one)
  *   soak --replay FILE [--bless]     replay one file (bless: store this arch's final state)
  *   soak --replay-dir DIR            replay every *.replay in DIR
  *
@@ -47,6 +49,7 @@ static state_t g_state[MAX_LEVEL_FRAMES];
 static int g_gen = SOAK_GEN_CURRENT, g_checks = SOAK_CHECKS_CURRENT;
 static const char *g_level_file;
 static uint32_t g_oracles = SOAK_ORACLES_ALL;
+static uint32_t g_shrink_min = 1; /* --shrink-min N: a shrunk replay holds at least N frames */
 
 /* --oracles direction,progress,...: the behaviour oracles to run (default all) */
 static int parse_oracles(const char *v)
@@ -78,7 +81,7 @@ static void replay_header(soak_replay_t *rp, uint64_t lseed)
 static bool shrink(uint64_t lseed, const char_body_settings_t *s, fm_vec3_t start, uint32_t fail_frame, int kind,
                    soak_replay_t *rp)
 {
-    for (uint32_t k = 1; k <= fail_frame; k *= 2) {
+    for (uint32_t k = g_shrink_min ? g_shrink_min : 1; k <= fail_frame; k *= 2) {
         uint32_t first = fail_frame + 1 - k;
         const state_t *st = &g_state[first];
         if (st->excused) continue; /* the shrunk start must be overlap-free */
@@ -183,6 +186,7 @@ static void add_stats(soak_stats_t *a, const soak_stats_t *b)
     a->frames += b->frames;
     for (int k = 0; k < SOAK_FAIL_COUNT; k++) a->hard[k] += b->hard[k];
     a->soft_pen_frames += b->soft_pen_frames;
+    a->wedged_frames += b->wedged_frames;
     a->inside_frames += b->inside_frames;
     a->stuck_events += b->stuck_events;
     a->excused_escapes += b->excused_escapes;
@@ -214,6 +218,7 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
            what, (unsigned long long)st->soft_pen_frames, st->max_soft_pen * 1000.0, SOAK_RECOVER_FRAMES,
            (unsigned long long)st->stuck_events, (unsigned long long)st->excused_escapes, st->frames ? 100.0 * (double)st->on_floor_frames / (double)st->frames : 0.0,
            st->frames ? 100.0 * (double)st->steep_frames / (double)st->frames : 0.0);
+    if (st->wedged_frames) printf(", wedged by the game with no room %llu", (unsigned long long)st->wedged_frames);
     if (secs > 0) printf(", %.0f frames/s", (double)st->frames / secs);
     printf("\n");
     printf("%s: reported only: frames with the sweep capsule > 1 cm inside a static collider body: %llu (max %.1f mm)\n",
@@ -330,6 +335,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--oracles") && v) { if (parse_oracles(v) != 0) return 2; i++; }
         else if (!strcmp(a, "--level") && v) { g_level_file = v; i++; }
         else if (!strcmp(a, "--bodies") && v) { bodies = (unsigned)strtoul(v, NULL, 0); i++; }
+        else if (!strcmp(a, "--shrink-min") && v) { g_shrink_min = (uint32_t)strtoul(v, NULL, 0); i++; }
         else if (!strcmp(a, "--trace") && v) { trace_level = strtol(v, NULL, 0); i++; }
         else if (!strcmp(a, "--bless")) bless = true;
         else if (!strcmp(a, "-v")) verbose = true;

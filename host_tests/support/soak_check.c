@@ -1022,3 +1022,67 @@ bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settin
     }
     return false;
 }
+
+/* Room to stand near the body at owner, within one straight move: a walkable static
+ * triangle (either face, not the inside of a closed solid) crossed by a line along up
+ * through a point within 5 r of the foot across up (columns r / 2 apart), between snap +
+ * 2 r below the foot and step_height + 2 r above it, where a body standing with its foot on
+ * it (1 cm over it) passes the state checks (its sweep capsule at most SOAK_PEN_TOL inside
+ * any static triangle beyond the slope allowance) and the footing oracle, and the sweep
+ * capsule swept straight there from owner comes no more than SOAK_PEN_TOL into anything.
+ * The body's own stand search looks 0.5 r .. 4 r away across up in eight directions,
+ * lifting by at most r + step: this looks wider and finer. Brute force; asked only where
+ * a footing and a support verdict would both fail (soak_sim_check), never on an ordinary
+ * step. */
+bool soak_check_room_to_stand(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner)
+{
+    double up[3], f[3], r;
+    foot_point(s, owner, up, f, &r);
+    double ax[3] = {1, 0, 0};
+    if (fabs(up[0]) > 0.9) { ax[0] = 0; ax[2] = 1; }
+    double e1[3], e2[3], a = dot3(ax, up);
+    for (int k = 0; k < 3; k++) e1[k] = ax[k] - up[k] * a;
+    double l = sqrt(dot3(e1, e1));
+    for (int k = 0; k < 3; k++) e1[k] /= l;
+    cross3(e2, up, e1);
+    soak_capsule_t full0, sweep0;
+    soak_capsules_at(s, owner, &full0, &sweep0);
+    const double below = (double)s->floor_snap_distance + 2 * r, above = (double)s->step_height + 2 * r;
+    const double span = 5 * r, pitch = 0.5 * r;
+    const int n = 10;
+    for (int i = -n; i <= n; i++)
+        for (int j = -n; j <= n; j++) {
+            double u = i * pitch, v = j * pitch;
+            if (u * u + v * v > span * span * (1 + 1e-9)) continue;
+            double p[3];
+            for (int k = 0; k < 3; k++) p[k] = f[k] + e1[k] * u + e2[k] * v;
+            for (uint32_t t = 0; t < lvl->nwtris; t++) {
+                const soak_wtri_t *w = &lvl->wtris[t];
+                if (!tri_seen(w->mask, s)) continue;
+                double dc[3];
+                sub3(dc, w->c, p);
+                double hu = dot3(dc, up), hx[3];
+                for (int k = 0; k < 3; k++) hx[k] = dc[k] - up[k] * hu;
+                if (sqrt(dot3(hx, hx)) > w->rad || hu < -below - w->rad || hu > above + w->rad) continue;
+                double nn[3], allow;
+                if (!tri_walkable(w, s, up, nn, &allow) || inside_face(w, up)) continue;
+                double d[3];
+                sub3(d, w->v[0], p);
+                double h = dot3(nn, d) / dot3(nn, up);
+                if (!(h >= -below && h <= above)) continue;
+                double x[3] = {p[0] + up[0] * h, p[1] + up[1] * h, p[2] + up[2] * h};
+                if (pt_tri_dist(x, w) > 1e-9) continue;
+                /* the body standing there: owner moved as the foot is, 1 cm over x */
+                double D[3];
+                for (int k = 0; k < 3; k++) D[k] = x[k] + up[k] * 0.01 - f[k];
+                fm_vec3_t o = {{(float)(owner.x + D[0]), (float)(owner.y + D[1]), (float)(owner.z + D[2])}};
+                soak_capsule_t full, sweep;
+                soak_capsules_at(s, o, &full, &sweep);
+                if (soak_check_static_pen(lvl, s, &sweep, NULL, NULL) > SOAK_PEN_TOL) continue;
+                if (soak_check_footing(lvl, s, o) > SOAK_FOOT_TOL) continue;
+                if (swept_nearest(lvl, s, &sweep0, D) < -SOAK_PEN_TOL) continue;
+                return true;
+            }
+        }
+    return false;
+}

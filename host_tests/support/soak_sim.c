@@ -428,6 +428,24 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
     return SOAK_FAIL_NONE;
 }
 
+/* The game put the body (a teleport, an up change, a mover: an excused overlap) where no
+ * state of it passes both the footing and the support oracles, and no walk leads to one:
+ * its foot is below the walkable surface under it (grounded, the footing fails), its full
+ * capsule rests on walkable geometry (airborne at rest, the support fails), and there is
+ * no room to stand anywhere near (soak_check_room_to_stand). The recover pushed the sweep
+ * capsule clear, but the body is still in the game's overlap: a body (r 0.57, h 2.31)
+ * teleported into a triangle soup, pushed out into a pocket whose walkable slope crosses
+ * its step zone under a soup face 0.3 m over its head; the nearest place to stand, 1.29 m
+ * away, is behind the pocket's wall (soak s43 l368). Both oracles at once ask the impossible there; the excuse lasts while
+ * the body stays so wedged (counted, and as "stuck" past SOAK_RECOVER_FRAMES). Where a
+ * state passes (the ball resting on nothing: airborne, soak s13 l195; a place to stand
+ * near: s27 l164) the oracles judge the body as before. */
+static bool wedged_by_game(const soak_sim_t *sim, const char_body_settings_t *s, fm_vec3_t pos)
+{
+    return soak_check_footing(sim->lvl, s, pos) > SOAK_FOOT_TOL && soak_check_touches_walkable(sim->lvl, s, pos) &&
+           !soak_check_room_to_stand(sim->lvl, s, pos);
+}
+
 int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
 {
     char_body_t *b = &sim->body;
@@ -485,6 +503,11 @@ int soak_sim_check(soak_sim_t *sim, bool excuse, bool stepped)
             FAIL(SOAK_FAIL_PENETRATION, "sweep capsule %.2f mm into static tri %d (%.2f mm past the slope allowance), pos (%.4f %.4f %.4f)",
                  raw * 1000.0, (int)tri, pen * 1000.0, (double)pos.x, (double)pos.y, (double)pos.z);
         }
+    } else if ((excuse || sim->excused) && wedged_by_game(sim, s, pos)) {
+        /* still in the overlap the game made, though the sweep capsule is clear of it */
+        sim->st.wedged_frames++;
+        if (++sim->excused_frames == SOAK_RECOVER_FRAMES) sim->st.stuck_events++;
+        sim->excused = true;
     } else {
         sim->excused = false;
         sim->excused_frames = 0;

@@ -252,6 +252,7 @@ const char *soak_fail_name(int kind);
 typedef struct {
     uint64_t frames, hard[SOAK_FAIL_COUNT];
     uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
+    uint64_t wedged_frames;       ///< frames excused as wedged by the game with no room (soak_sim_check)
     uint64_t inside_frames;       ///< oracle failures withheld: the step started or ended wholly
                                   ///< inside a closed solid
     uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
@@ -332,6 +333,10 @@ bool soak_check_free_flat(const soak_level_t *lvl, const char_body_settings_t *s
  *  bottom ball centre, resting on it: the contact normal is within the walkable angle
  *  (not a floor's edge touched with the ball's side). */
 bool soak_check_touches_walkable(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
+/** Whether the full capsule could stand somewhere near the body at owner: on a walkable
+ *  static triangle within 5 r of the foot across up, snap + 2 r below to step + 2 r above
+ *  it, clear of everything (the excuse for a body the game wedged, soak_sim_check). */
+bool soak_check_room_to_stand(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
 /** Full and sweep capsules of settings s at owner position owner. */
 void soak_capsules_at(const char_body_settings_t *s, fm_vec3_t owner, soak_capsule_t *full, soak_capsule_t *sweep);
 /** Prints the body state, the deepest triangle and the library's own overlap view (diagnosis). */
