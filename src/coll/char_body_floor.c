@@ -441,9 +441,13 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
      * contact's distance from that plane along the plane's normal: on the shared edge of
      * two coplanar triangles the contact normal is 0.3 degrees off, and along it a point
      * 0.6 m away on the same plane was 1.9 mm off it; the rule lifted a body walking on a
-     * slope too steep for its capsule 0.27 m off it, and it fell.) */
+     * slope too steep for its capsule 0.27 m off it, and it fell.) Within half the step
+     * tolerance, not 1e-3 (1 + r): a tile 1.3 mm over the floor is another plane, and the
+     * ball in a 19 mm crack between two such tiles rests on their edges; taken for the
+     * floor's plane (r 0.72: 1.72 mm), the foot stood on the floor in the crack, 1.09 mm
+     * under the ball resting on both (soak s45 l366). */
     if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < 1e-3f * (c->unit + r))
+        fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS))
         return false;
     /* (past_side: once, off a wall face the ball leans on at the drop's start, within
      * CB_MARGIN across it) */
