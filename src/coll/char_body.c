@@ -543,7 +543,17 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
             if (mem.crack_no_floor) coll_cb_slide(&c, &pos, v3_scale(up, fall), NULL, false);
             else coll_cb_move_swept(&c, &pos, v3_scale(up, fall));
             body->velocity = v3_scale(v3_sub(pos, start), 1.0f / dt);
-            kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+            /* That slide stopped dead (under a tenth of the fall: the ball on an edge its
+             * foot is past, the push off the edge straight into a wall beside it) is no fall:
+             * the start "fits" only falling, the fall that never happens. Not kept: the
+             * search of coll_cb_unwedge (an airborne start, crack_no_floor) finds a way. A
+             * body (r 0.60, step 0.44) jumped beside an overhang's ledge 1.89 m high and
+             * came down with its sweep capsule's bottom on the ledge's end, 6 cm past its
+             * edge, a triangle soup's sloping edge against its other side: it hung there at
+             * rest in the air, its foot 0.44 m under the ledge's top, for ever (soak s44
+             * l175). */
+            if (!(mem.crack_no_floor && -v3_dot(v3_sub(pos, start), up) < -0.1f * fall))
+                kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
         }
         if (!kept) {
             pos = start;

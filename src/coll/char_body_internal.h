@@ -105,7 +105,8 @@ typedef struct {
     /** Set by the floor probe when the crack rule alone, with no floor in the foot ray's
      *  reach, held the ball on edges it has no room to be lifted onto (the probe failed
      *  there); cleared once per step (char_body_move_and_slide_in). The step's fall-only retry
-     *  then slides, and coll_cb_unwedge treats an airborne start as wedged (soak s30 l14). */
+     *  then slides (and is not kept where that slide stopped dead: soak s44 l175), and
+     *  coll_cb_unwedge treats an airborne start as wedged (soak s30 l14). */
     bool crack_no_floor;
 } cb_mem_t;
 
