@@ -567,6 +567,39 @@ PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc
     return sep > 0.0f && sep * sep > rr * rr * uu;
 }
 
+/* sweep_separated_k along the boundary axis, which also tells (*clear) whether the start
+ * alone (t = 0: the motion's term left out) is separated along u by more than r (allowance
+ * 1e-5 of the coordinates' magnitude, sweep_separated's): then the segment's distance to the
+ * triangle at the start is more than r (a distance is at least the separation along any
+ * axis), so there is neither an overlap nor a contact at t = 0, and the start's closest pair
+ * would serve only the cull along its own direction. */
+PRIM_INLINE bool sweep_separated_start(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack,
+                                       float r, bool *clear)
+{
+    const fm_vec3_t u = *pu;
+    *clear = false;
+    float uu = v3_len2(u);
+    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
+    const tri_t *t = &c->tri;
+    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
+    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
+    float tm = f_max(t0, f_max(t1, t2));
+    float sep0 = f_min(sa, sb) - tm;
+    if (!(sep0 > 0.0f)) return false;
+    float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
+    float mg = sweep_mag(c);
+    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - tm; /* (sweep_separated_k's, term for term) */
+    if (sep > 0.0f) {
+        sep -= slack * u1 * mg;
+        float rr = rc * 1.0001f + 1e-7f;
+        if (sep > 0.0f && sep * sep > rr * rr * uu) return true;
+    }
+    sep0 -= 1e-5f * u1 * mg;
+    float r0 = r * 1.0001f + 1e-6f;
+    *clear = sep0 > 0.0f && sep0 * sep0 > r0 * r0 * uu;
+    return false;
+}
+
 /* sweep_separated_k (rc, slack), telling apart a miss by the allowance alone: 1 separated,
  * 2 separated without the allowance but not with it, 0 not even without it. */
 PRIM_INLINE int sweep_separated_why(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
@@ -777,8 +810,15 @@ static bool tri_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, co
             float l = v3_len2(u);
             if (l < bestl) { bestl = l; sep = u; }
         }
-        if (confirm ? sweep_separated_k(&c, &sep, rin, t_max, 1e-6f) : sweep_separated(&c, &sep, r, t_max))
+        bool clear;
+        if (confirm ? sweep_separated_start(&c, &sep, rin, t_max, 1e-6f, r, &clear)
+                    : sweep_separated_start(&c, &sep, r, t_max, 1e-5f, r, &clear))
             return false;
+        /* the start clear along it: as far (no start pair; the features find any contact),
+         * where the coordinates are small (the end cull's `small` below); in large ones (a
+         * crack's 100 m floor) the pair's axis measured from its point on the triangle
+         * culls candidates that would otherwise reach the features */
+        far = far || (clear && 1e-6f * sweep_mag(&c) < r - (rin * 1.0001f + 1e-7f));
     }
     /* Then, with a hit held, its normal (held): the held contact's neighbour across their
      * shared edge (a stair's nosing: the tread and the riser, or a quad's two triangles)
