@@ -167,6 +167,15 @@ static bool floor_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
     return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) >= c->body->cos_floor_max_angle;
 }
 
+/* A walkable contact (an edge or a face) whose normal leans across up against from's: the
+ * other side of a groove from the contact the ball slid down past. */
+static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll_sweep_hit_t *from)
+{
+    return v3_finite(h->normal) && v3_finite(from->normal) &&
+           v3_dot(h->normal, c->up) >= c->body->cos_floor_max_angle &&
+           v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
+}
+
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
  * of the drop's length along up; what it meets is the first contact (drop_past_side). */
 static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
@@ -647,7 +656,13 @@ again:;
              * edge, ahead; slid down past it, it met the tile's top behind the foot, which
              * holds it with the edge; the rule gave up and the foot stood on the floor
              * beside the tile, 81 mm under the ball resting on both (soak s41 l275). The
-             * next tread met climbing stairs lies ahead: not counted, as before. */
+             * next tread met climbing stairs lies ahead: not counted, as before. What the
+             * slide meets may be another piece's walkable edge on the groove's other side
+             * across up (not a face): the two edges hold the ball. Walking at 12 m/s off a
+             * ramp's side (r 0.52) into a pocket between it, a second ramp's low end rising
+             * the other way and a tile, the slide past the first ramp's side edge met the
+             * second ramp's slope-and-side edge; the rule gave up and the foot stood on the
+             * room floor, 88 mm under the ball resting on the edges (soak s42 l217). */
             const bool ahead = v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
@@ -655,7 +670,7 @@ again:;
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
-                floor_face(c, &h1p)) {
+                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1))) {
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
