@@ -662,11 +662,16 @@ again:;
              * ramp's side (r 0.52) into a pocket between it, a second ramp's low end rising
              * the other way and a tile, the slide past the first ramp's side edge met the
              * second ramp's slope-and-side edge; the rule gave up and the foot stood on the
-             * room floor, 88 mm under the ball resting on the edges (soak s42 l217). */
-            const bool ahead = v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f;
+             * room floor, 88 mm under the ball resting on the edges (soak s42 l217).
+             * Ahead across up: the velocity's part along up (a body lifted in the step,
+             * landing, climbing) says nothing about which side of the foot a contact lies
+             * on; in s42 l217 +2.25 m/s along up made that first ramp's edge, behind the foot
+             * across up, count as ahead. */
+            const fm_vec3_t vel = v3_reject(b->velocity, up);
+            const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
-                             !(v3_dot(v3_sub(h1p.point, foot), b->velocity) > 0.0f)
+                             !(v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f)
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
