@@ -830,8 +830,9 @@ again:;
  * every floor triangle under the ball, is skipped. The stop short of the plane keeps its
  * triangles out of reach, so their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
-/* Inline in both callers: every grounded step asks it from coll_cb_probe_floor (a call of its
- * own, once held_over calls it too, cost the console's walk +0.6 %). */
+/* Inline in crack_held, itself inline in both its callers: every grounded step asks it from
+ * coll_cb_probe_floor (a call of its own, once held_over calls it too, cost the console's
+ * walk +0.6 %). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -981,7 +982,7 @@ static inline bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
  * along the floor's normal is not looked at (not seen in any soak so far).
  */
 #if defined(__GNUC__)
-__attribute__((always_inline)) /* as ball_reaches_floor: inline in both callers */
+__attribute__((always_inline)) /* as ball_reaches_floor: inline in crack_held */
 #endif
 static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
                          const coll_ray_hit_t *under)
@@ -1406,26 +1407,40 @@ bool coll_cb_rise_sunk(const cb_ctx_t *c, fm_vec3_t pos)
     return !stand_on(c, &p, gap, hit.normal);
 }
 
-/* The crack rule over a walkable floor found past a steep face `gap` below the foot (< 0:
- * above it), as coll_cb_probe_floor asks it over the floor its foot ray finds directly: the
- * ball does not reach that floor, it rests on edges (a gap narrower than the capsule, a
- * hole) that hold the foot higher than the floor by more than the step tolerance: then *s
- * is where it is held. Kept out of line: a rare path, and inlined its locals grew the caller's frame
- * (every walking step paid for it: the console's walk +0.7 %). */
+/* The crack rule over a walkable floor `hit`, `gap` below the foot (< 0: above it), as
+ * coll_cb_probe_floor asks it over the floor its foot ray finds directly and held_over over
+ * one found past a steep face: the ball does not reach that floor (ball_reaches_floor), the
+ * edge it met first may be a side of a gap or hole (level_beyond, piece_beyond,
+ * piece_behind), and the edges hold it (ball_held) higher than the floor by more than the
+ * step tolerance: then *w is where it is held and *far its far contact. Inline in both
+ * callers (ball_reaches_floor is asked on every grounded step: as it, a call of its own on
+ * that path costs the console's walk). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool crack_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, float gap,
+                              support_t *w, fm_vec3_t *far)
+{
+    coll_sweep_hit_t edge;
+    float edge_len;
+    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
+    return !ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
+           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
+            (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
+           ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, w, far) &&
+           w->gap < gap - cb_len_tol(c, CB_STEP_EPS);
+}
+
+/* The crack rule (crack_held) over a walkable floor found past a steep face `gap` below the
+ * foot: where the edges hold the ball, *s is where. Kept out of line: a rare path, and
+ * inlined its locals grew the caller's frame (every walking step paid for it: the
+ * console's walk +0.7 %). */
 static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach,
                                                 const coll_ray_hit_t *hit, float gap, support_t *s)
 {
     support_t w;
     fm_vec3_t far;
-    coll_sweep_hit_t edge;
-    float edge_len;
-    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-    if (!ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
-        (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
-         (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
-        ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
-        w.gap < gap - cb_len_tol(c, CB_STEP_EPS))
-        *s = w;
+    if (crack_held(c, pos, reach, hit, gap, &w, &far)) *s = w;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
@@ -1489,15 +1504,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * tread stays a step down. */
                     support_t w;
                     fm_vec3_t far;
-                    coll_sweep_hit_t edge;
-                    float edge_len;
-                    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-                    if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
-                        (gap > contact_eps || level_beyond(c, *pos, &edge, gap) ||
-                         (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
-                         piece_behind(c, *pos, &edge, edge_len, &hit)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
-                        w.gap < gap - step_eps) {
+                    if (crack_held(c, *pos, reach, &hit, gap, &w, &far)) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
                          * only the roll's end counted, soak s3 l124) */
