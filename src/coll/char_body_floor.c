@@ -167,6 +167,15 @@ static bool floor_face(const cb_ctx_t *c, const coll_sweep_hit_t *h)
     return coll_cb_face_normal(h, &fn) && v3_dot(fn, c->up) >= c->body->cos_floor_max_angle;
 }
 
+/* A walkable contact (an edge or a face) whose normal leans across up against from's: the
+ * other side of a groove from the contact the ball slid down past. */
+static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll_sweep_hit_t *from)
+{
+    return v3_finite(h->normal) && v3_finite(from->normal) &&
+           v3_dot(h->normal, c->up) >= c->body->cos_floor_max_angle &&
+           v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
+}
+
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
  * of the drop's length along up; what it meets is the first contact (drop_past_side). */
 static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
@@ -651,15 +660,26 @@ again:;
              * edge, ahead; slid down past it, it met the tile's top behind the foot, which
              * holds it with the edge; the rule gave up and the foot stood on the floor
              * beside the tile, 81 mm under the ball resting on both (soak s41 l275). The
-             * next tread met climbing stairs lies ahead: not counted, as before. */
-            const bool ahead = v3_dot(v3_sub(h1.point, foot), b->velocity) > 0.0f;
+             * next tread met climbing stairs lies ahead: not counted, as before. What the
+             * slide meets may be another piece's walkable edge on the groove's other side
+             * across up (not a face): the two edges hold the ball. Walking at 12 m/s off a
+             * ramp's side (r 0.52) into a pocket between it, a second ramp's low end rising
+             * the other way and a tile, the slide past the first ramp's side edge met the
+             * second ramp's slope-and-side edge; the rule gave up and the foot stood on the
+             * room floor, 88 mm under the ball resting on the edges (soak s42 l217).
+             * Ahead across up: the velocity's part along up (a body lifted in the step,
+             * landing, climbing) says nothing about which side of the foot a contact lies
+             * on; in s42 l217 +2.25 m/s along up made that first ramp's edge, behind the foot
+             * across up, count as ahead. */
+            const fm_vec3_t vel = v3_reject(b->velocity, up);
+            const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
-                             !(v3_dot(v3_sub(h1p.point, foot), b->velocity) > 0.0f)
+                             !(v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f)
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
-                floor_face(c, &h1p)) {
+                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1))) {
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
@@ -814,8 +834,9 @@ again:;
  * every floor triangle under the ball, is skipped. The stop short of the plane keeps its
  * triangles out of reach, so their sweeps end in the early plane reject. Otherwise *edge is what the ball met first.
  */
-/* Inline in both callers: every grounded step asks it from coll_cb_probe_floor (a call of its
- * own, once held_over calls it too, cost the console's walk +0.6 %). */
+/* Inline in crack_held, itself inline in both its callers: every grounded step asks it from
+ * coll_cb_probe_floor (a call of its own, once held_over calls it too, cost the console's
+ * walk +0.6 %). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -965,7 +986,7 @@ static inline bool piece_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
  * along the floor's normal is not looked at (not seen in any soak so far).
  */
 #if defined(__GNUC__)
-__attribute__((always_inline)) /* as ball_reaches_floor: inline in both callers */
+__attribute__((always_inline)) /* as ball_reaches_floor: inline in crack_held */
 #endif
 static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float edge_len,
                          const coll_ray_hit_t *under)
@@ -1390,26 +1411,40 @@ bool coll_cb_rise_sunk(const cb_ctx_t *c, fm_vec3_t pos)
     return !stand_on(c, &p, gap, hit.normal);
 }
 
-/* The crack rule over a walkable floor found past a steep face `gap` below the foot (< 0:
- * above it), as coll_cb_probe_floor asks it over the floor its foot ray finds directly: the
- * ball does not reach that floor, it rests on edges (a gap narrower than the capsule, a
- * hole) that hold the foot higher than the floor by more than the step tolerance: then *s
- * is where it is held. Kept out of line: a rare path, and inlined its locals grew the caller's frame
- * (every walking step paid for it: the console's walk +0.7 %). */
+/* The crack rule over a walkable floor `hit`, `gap` below the foot (< 0: above it), as
+ * coll_cb_probe_floor asks it over the floor its foot ray finds directly and held_over over
+ * one found past a steep face: the ball does not reach that floor (ball_reaches_floor), the
+ * edge it met first may be a side of a gap or hole (level_beyond, piece_beyond,
+ * piece_behind), and the edges hold it (ball_held) higher than the floor by more than the
+ * step tolerance: then *w is where it is held and *far its far contact. Inline in both
+ * callers (ball_reaches_floor is asked on every grounded step: as it, a call of its own on
+ * that path costs the console's walk). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline bool crack_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, float gap,
+                              support_t *w, fm_vec3_t *far)
+{
+    coll_sweep_hit_t edge;
+    float edge_len;
+    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
+    return !ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
+           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
+            (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
+           ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, w, far) &&
+           w->gap < gap - cb_len_tol(c, CB_STEP_EPS);
+}
+
+/* The crack rule (crack_held) over a walkable floor found past a steep face `gap` below the
+ * foot: where the edges hold the ball, *s is where. Kept out of line: a rare path, and
+ * inlined its locals grew the caller's frame (every walking step paid for it: the
+ * console's walk +0.7 %). */
 static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos, float reach,
                                                 const coll_ray_hit_t *hit, float gap, support_t *s)
 {
     support_t w;
     fm_vec3_t far;
-    coll_sweep_hit_t edge;
-    float edge_len;
-    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-    if (!ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
-        (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
-         (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
-        ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
-        w.gap < gap - cb_len_tol(c, CB_STEP_EPS))
-        *s = w;
+    if (crack_held(c, pos, reach, hit, gap, &w, &far)) *s = w;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
@@ -1473,15 +1508,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                      * tread stays a step down. */
                     support_t w;
                     fm_vec3_t far;
-                    coll_sweep_hit_t edge;
-                    float edge_len;
-                    bool hole_only = false; /* only a hole can hold it (piece_beyond) */
-                    if (!ball_reaches_floor(c, *pos, &hit, &edge, &edge_len) &&
-                        (gap > contact_eps || level_beyond(c, *pos, &edge, gap) ||
-                         (hole_only = piece_beyond(c, *pos, &edge, &hit)) ||
-                         piece_behind(c, *pos, &edge, edge_len, &hit)) &&
-                        ball_held(c, *pos, reach, &hit, gap, &edge, edge_len, hole_only, false, &w, &far) &&
-                        w.gap < gap - step_eps) {
+                    if (crack_held(c, *pos, reach, &hit, gap, &w, &far)) {
                         /* the ball between an edge and the very floor under the foot:
                          * either of its contacts on it (the first, or the roll's end;
                          * only the roll's end counted, soak s3 l124) */
