@@ -713,12 +713,11 @@ CAND_INLINE void gather_tri_place(const coll_gather_tri_t *gt, const fm_vec3_t *
     shape[2] = gt->e2;
 }
 
-/* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
+/* Gathered triangle gt relative to a query origin at rel (from the gather's): first vertex
  * w0 and shape (shape[0] = 0); false when its box misses glo..ghi (gather_box). */
-CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
+CAND_INLINE bool gather_tri(const coll_gather_tri_t *gt, const fm_vec3_t *rel, const fm_vec3_t *glo,
                             const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
-    const coll_gather_tri_t *gt = &g->tris[k];
     /* height first: the slide's shortened capsule floats over the floor triangles gathered
      * for the probe, and a box beside them in height rejects them in one compare */
     if (gt->hi.y < glo->y || gt->lo.y > ghi->y || gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z ||
@@ -731,10 +730,9 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
 /* gather_tri for a ray: its box is thin across its direction (the foot ray's along up: the
  * floor triangles beside it are out of its box across up, while their heights span its
  * reach), so across first; the same test, in another order. */
-CAND_INLINE bool gather_tri_ray(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
+CAND_INLINE bool gather_tri_ray(const coll_gather_tri_t *gt, const fm_vec3_t *rel, const fm_vec3_t *glo,
                                 const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
-    const coll_gather_tri_t *gt = &g->tris[k];
     if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
         gt->lo.y > ghi->y)
         return false;
@@ -778,10 +776,10 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
      * a ray down the edge two triangles share, the second would compute its plane
      * distance, point and normal only to be dropped). */
     float smax = rb.best;
-    for (uint16_t k = 0; sheared && k < g->ntris; k++) {
+    coll_gather_tri_t *gt = g->tris, *gend = sheared ? gt + g->ntris : gt;
+    for (; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri_ray(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
-        coll_gather_tri_t *gt = &g->tris[k];
+        if (!gather_tri_ray(gt, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t o;
         coll_prim_hit_t ph;
         fm_vec3_negate(&o, &w0);
@@ -858,18 +856,19 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     /* every gathered triangle below the swept box (the slide's shortened capsule over a
      * floor): gather_tri's first compare would reject each */
     if (g->ytop < glo.y) return;
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    /* (a pointer walk: the console's loop over a uint16_t index paid its wrap and the
+     * address product at every triangle) */
+    for (coll_gather_tri_t *gt = g->tris, *gend = gt + g->ntris; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
+        if (!gather_tri(gt, rel, &glo, &ghi, &w0, shape)) continue;
         /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
-        if (skip && memo_clear(skip, k)) continue;
-        fm_vec3_t u = one_way_up(g->tris[k].inst);
+        if (skip && memo_clear(skip, (uint16_t)(gt - g->tris))) continue;
+        fm_vec3_t u = one_way_up(gt->inst);
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
          * as tight as its plane */
-        coll_gather_tri_t *gt = &g->tris[k];
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
         if (corner && !tilted && gather_corner_clear(gt, &glo, &ghi, q->r + q->eps)) continue;
         /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
@@ -1015,13 +1014,12 @@ CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center,
     fm_vec3_t glo, ghi;
     gather_box(&rel, &lo, &hi, &glo, &ghi);
     uint32_t nm = 0;
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    for (coll_gather_tri_t *gt = g->tris, *gend = gt + g->ntris; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
-        fm_vec3_t u = one_way_up(g->tris[k].inst);
-        if (overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &g->tris[k], &c) && memo &&
-            nm < COLL_GATHER_MEMO_MAX)
-            memo->clear[nm++] = (uint8_t)k;
+        if (!gather_tri(gt, &rel, &glo, &ghi, &w0, shape)) continue;
+        fm_vec3_t u = one_way_up(gt->inst);
+        if (overlap_tri(&q, gt->inst, gt->tri, &w0, shape, &u, gt, &c) && memo && nm < COLL_GATHER_MEMO_MAX)
+            memo->clear[nm++] = (uint8_t)(gt - g->tris);
     }
     /* (not for a near-zero inner half height: tri_sweep makes such a segment its midpoint,
      * the overlap test does not) */
