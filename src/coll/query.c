@@ -668,38 +668,37 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
 
 /* ------------------------------------------------------------------ gathered ------- */
 
-/* The query box lo..hi (relative to the query's own origin at rel from the gather's) lies
- * inside the gathered box: every triangle that can touch the query was gathered. */
-/* The query box lo..hi (relative to the query origin at rel from the gather's) lies inside
- * the gathered box. */
-CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
-{
-    for (int a = 0; a < 3; a++)
-        if (!(lo->v[a] + rel->v[a] >= g->lo.v[a]) || !(hi->v[a] + rel->v[a] <= g->hi.v[a])) return false;
-    return true;
-}
-
-/* gather_inside for a query answered here or on the scene, counted as one or the other
- * (an overflowed gather answers nothing: not counted). */
-CAND_INLINE bool gather_covers(const coll_gather_t *g, const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi)
-{
-    if (!g->valid) return false;
-    if (!gather_inside(g, rel, lo, hi)) {
-        STATS_ADD(g->scene, gather_misses);
-        return false;
-    }
-    STATS_ADD(g->scene, gather_queries);
-    return true;
-}
-
 /* A query box lo..hi (relative to the query origin at rel from the gather's) in the
- * gather's frame, where the gathered triangles' boxes are: each candidate then costs two
- * compares an axis, not two subtractions more. */
+ * gather's frame, where the gathered box and the gathered triangles' boxes are: each
+ * candidate then costs two compares an axis, not two subtractions more. */
 CAND_INLINE void gather_box(const fm_vec3_t *rel, const fm_vec3_t *lo, const fm_vec3_t *hi, fm_vec3_t *glo,
                             fm_vec3_t *ghi)
 {
     fm_vec3_add(glo, lo, rel);
     fm_vec3_add(ghi, hi, rel);
+}
+
+/* The query box glo..ghi (gather_box: in the gather's frame) lies inside the gathered box:
+ * every triangle that can touch the query was gathered. (On the box the scan then uses: the
+ * console paid its six sums twice when this test made its own.) */
+CAND_INLINE bool gather_inside(const coll_gather_t *g, const fm_vec3_t *glo, const fm_vec3_t *ghi)
+{
+    for (int a = 0; a < 3; a++)
+        if (!(glo->v[a] >= g->lo.v[a]) || !(ghi->v[a] <= g->hi.v[a])) return false;
+    return true;
+}
+
+/* gather_inside for a query answered here or on the scene, counted as one or the other
+ * (an overflowed gather answers nothing: not counted). */
+CAND_INLINE bool gather_covers(const coll_gather_t *g, const fm_vec3_t *glo, const fm_vec3_t *ghi)
+{
+    if (!g->valid) return false;
+    if (!gather_inside(g, glo, ghi)) {
+        STATS_ADD(g->scene, gather_misses);
+        return false;
+    }
+    STATS_ADD(g->scene, gather_queries);
+    return true;
 }
 
 /* A gathered triangle relative to a query origin at rel (from the gather's): first vertex
@@ -713,12 +712,11 @@ CAND_INLINE void gather_tri_place(const coll_gather_tri_t *gt, const fm_vec3_t *
     shape[2] = gt->e2;
 }
 
-/* Gathered triangle k relative to a query origin at rel (from the gather's): first vertex
+/* Gathered triangle gt relative to a query origin at rel (from the gather's): first vertex
  * w0 and shape (shape[0] = 0); false when its box misses glo..ghi (gather_box). */
-CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
+CAND_INLINE bool gather_tri(const coll_gather_tri_t *gt, const fm_vec3_t *rel, const fm_vec3_t *glo,
                             const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
-    const coll_gather_tri_t *gt = &g->tris[k];
     /* height first: the slide's shortened capsule floats over the floor triangles gathered
      * for the probe, and a box beside them in height rejects them in one compare */
     if (gt->hi.y < glo->y || gt->lo.y > ghi->y || gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z ||
@@ -731,10 +729,9 @@ CAND_INLINE bool gather_tri(const coll_gather_t *g, uint16_t k, const fm_vec3_t 
 /* gather_tri for a ray: its box is thin across its direction (the foot ray's along up: the
  * floor triangles beside it are out of its box across up, while their heights span its
  * reach), so across first; the same test, in another order. */
-CAND_INLINE bool gather_tri_ray(const coll_gather_t *g, uint16_t k, const fm_vec3_t *rel, const fm_vec3_t *glo,
+CAND_INLINE bool gather_tri_ray(const coll_gather_tri_t *gt, const fm_vec3_t *rel, const fm_vec3_t *glo,
                                 const fm_vec3_t *ghi, fm_vec3_t *w0, fm_vec3_t shape[3])
 {
-    const coll_gather_tri_t *gt = &g->tris[k];
     if (gt->hi.x < glo->x || gt->lo.x > ghi->x || gt->hi.z < glo->z || gt->lo.z > ghi->z || gt->hi.y < glo->y ||
         gt->lo.y > ghi->y)
         return false;
@@ -763,12 +760,12 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
         lo.v[a] = f_min(0.0f, e) - slack;
         hi.v[a] = f_max(0.0f, e) + slack;
     }
-    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+    fm_vec3_t glo, ghi;
+    gather_box(&rel, &lo, &hi, &glo, &ghi);
+    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &glo, &ghi))
         return coll_raycast(g->scene, origin, dir, max_dist, g->read_mask, g->types, hit);
     best_hit_t rb;
     best_init(&rb, max_dist);
-    fm_vec3_t glo, ghi;
-    gather_box(&rel, &lo, &hi, &glo, &ghi);
     /* ray_tri on each candidate, with the ray's shear worked out once and each triangle's
      * raw normal (and a hit's unit normal) from its prep: the same expressions */
     coll_ray_shear_t sh;
@@ -778,10 +775,10 @@ bool coll_gather_raycast(coll_gather_t *g, fm_vec3_t origin, fm_vec3_t dir, floa
      * a ray down the edge two triangles share, the second would compute its plane
      * distance, point and normal only to be dropped). */
     float smax = rb.best;
-    for (uint16_t k = 0; sheared && k < g->ntris; k++) {
+    coll_gather_tri_t *gt = g->tris, *gend = sheared ? gt + g->ntris : gt;
+    for (; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri_ray(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
-        coll_gather_tri_t *gt = &g->tris[k];
+        if (!gather_tri_ray(gt, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t o;
         coll_prim_hit_t ph;
         fm_vec3_negate(&o, &w0);
@@ -846,30 +843,30 @@ CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
  * stair step's sweeps), so every other query keeps its code (perf20: the test in every copy
  * cost the crack course 1.3-2.8 %; asked by every capsule sweep, the walk 0.3 %). */
 CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
-                                   fm_vec3_t lo, fm_vec3_t hi, const coll_gather_above_t *above,
-                                   const fm_vec3_t *center, const coll_gather_memo_t *memo, bool corner,
-                                   best_hit_t *sb)
+                                   fm_vec3_t lo, fm_vec3_t hi, fm_vec3_t glo, fm_vec3_t ghi,
+                                   const coll_gather_above_t *above, const fm_vec3_t *center,
+                                   const coll_gather_memo_t *memo, bool corner, best_hit_t *sb)
 {
-    fm_vec3_t glo, ghi, ap;
-    gather_box(rel, &lo, &hi, &glo, &ghi);
+    fm_vec3_t ap;
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     /* (memo: set once a hit at t = 0 is held, below) */
     const coll_gather_memo_t *skip = NULL;
     /* every gathered triangle below the swept box (the slide's shortened capsule over a
      * floor): gather_tri's first compare would reject each */
     if (g->ytop < glo.y) return;
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    /* (a pointer walk: the console's loop over a uint16_t index paid its wrap and the
+     * address product at every triangle) */
+    for (coll_gather_tri_t *gt = g->tris, *gend = gt + g->ntris; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, rel, &glo, &ghi, &w0, shape)) continue;
+        if (!gather_tri(gt, rel, &glo, &ghi, &w0, shape)) continue;
         /* A hit held at t = 0: this triangle is tested over t_max = 0, where tri_sweep
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
-        if (skip && memo_clear(skip, k)) continue;
-        fm_vec3_t u = one_way_up(g->tris[k].inst);
+        if (skip && memo_clear(skip, (uint16_t)(gt - g->tris))) continue;
+        fm_vec3_t u = one_way_up(gt->inst);
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
          * as tight as its plane */
-        coll_gather_tri_t *gt = &g->tris[k];
         bool tilted = gt->hi.x - gt->lo.x > q->eps && gt->hi.y - gt->lo.y > q->eps && gt->hi.z - gt->lo.z > q->eps;
         if (corner && !tilted && gather_corner_clear(gt, &glo, &ghi, q->r + q->eps)) continue;
         /* Wholly within margin above the plane the sweep stays 2 x margin above: at least
@@ -896,9 +893,10 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
  * gathered: a gathered hit no later than t is the sweep's hit. */
 static float gather_covered_part(const coll_gather_t *g, const fm_vec3_t *rel, const capsule_q_t *q)
 {
-    fm_vec3_t lo, hi;
+    fm_vec3_t lo, hi, glo, ghi;
     swept_box(q, 0.0f, &lo, &hi);
-    if (!gather_inside(g, rel, &lo, &hi)) return -1.0f;
+    gather_box(rel, &lo, &hi, &glo, &ghi);
+    if (!gather_inside(g, &glo, &ghi)) return -1.0f;
     float t = 1.0f;
     for (int a = 0; a < 3; a++) {
         float d = q->disp.v[a];
@@ -909,7 +907,8 @@ static float gather_covered_part(const coll_gather_t *g, const fm_vec3_t *rel, c
     t *= 0.999f; /* below the rounding of the division; the box check below decides */
     if (!(t > 0.0f)) return 0.0f;
     swept_box(q, t, &lo, &hi);
-    return gather_inside(g, rel, &lo, &hi) ? t : 0.0f;
+    gather_box(rel, &lo, &hi, &glo, &ghi);
+    return gather_inside(g, &glo, &ghi) ? t : 0.0f;
 }
 
 /* A gathered sweep whose box reaches outside the gathered box (the crack rule's roll): the
@@ -930,9 +929,10 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
         if (covered >= 0.1f) {
             best_hit_t sb;
             best_init(&sb, covered);
-            fm_vec3_t lo, hi;
+            fm_vec3_t lo, hi, glo, ghi;
             swept_box(q, covered, &lo, &hi);
-            gather_sweep_scan(g, q, rel, lo, hi, above, &center, memo, false, &sb);
+            gather_box(rel, &lo, &hi, &glo, &ghi);
+            gather_sweep_scan(g, q, rel, lo, hi, glo, ghi, above, &center, memo, false, &sb);
             if (sb.have) {
                 STATS_ADD(g->scene, gather_queries);
                 if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, q, g->read_mask, &sb);
@@ -954,17 +954,18 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement)) return false;
     capsule_q_t q;
     capsule_setup(&q, &axis, radius, inner_half_height, &displacement);
-    fm_vec3_t rel, lo, hi;
+    fm_vec3_t rel, lo, hi, glo, ghi;
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 1.0f, &lo, &hi);
+    gather_box(&rel, &lo, &hi, &glo, &ghi);
     memo = memo_for(memo, g, &center, &axis, radius, inner_half_height);
-    if (!(g->types & COLL_TYPE_MESH) || !g->valid || !gather_inside(g, &rel, &lo, &hi))
+    if (!(g->types & COLL_TYPE_MESH) || !g->valid || !gather_inside(g, &glo, &ghi))
         return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, above, memo,
                                     hit);
     STATS_ADD(g->scene, gather_queries);
     best_hit_t sb;
     best_init(&sb, 1.0f);
-    gather_sweep_scan(g, &q, &rel, lo, hi, above, &center, memo, corner, &sb);
+    gather_sweep_scan(g, &q, &rel, lo, hi, glo, ghi, above, &center, memo, corner, &sb);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
 }
@@ -1007,21 +1008,20 @@ CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center,
     fm_vec3_t rel, lo, hi;
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 0.0f, &lo, &hi);
-    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &rel, &lo, &hi))
+    fm_vec3_t glo, ghi;
+    gather_box(&rel, &lo, &hi, &glo, &ghi);
+    if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &glo, &ghi))
         return coll_capsule_overlaps(g->scene, center, axis, radius, inner_half_height, g->read_mask, g->types, out,
                                      max_out);
     /* (the memo's old record is replaced as this one is written: its key, below) */
     contacts_t c = { out, max_out, 0, 0, center };
-    fm_vec3_t glo, ghi;
-    gather_box(&rel, &lo, &hi, &glo, &ghi);
     uint32_t nm = 0;
-    for (uint16_t k = 0; k < g->ntris; k++) {
+    for (coll_gather_tri_t *gt = g->tris, *gend = gt + g->ntris; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
-        if (!gather_tri(g, k, &rel, &glo, &ghi, &w0, shape)) continue;
-        fm_vec3_t u = one_way_up(g->tris[k].inst);
-        if (overlap_tri(&q, g->tris[k].inst, g->tris[k].tri, &w0, shape, &u, &g->tris[k], &c) && memo &&
-            nm < COLL_GATHER_MEMO_MAX)
-            memo->clear[nm++] = (uint8_t)k;
+        if (!gather_tri(gt, &rel, &glo, &ghi, &w0, shape)) continue;
+        fm_vec3_t u = one_way_up(gt->inst);
+        if (overlap_tri(&q, gt->inst, gt->tri, &w0, shape, &u, gt, &c) && memo && nm < COLL_GATHER_MEMO_MAX)
+            memo->clear[nm++] = (uint8_t)(gt - g->tris);
     }
     /* (not for a near-zero inner half height: tri_sweep makes such a segment its midpoint,
      * the overlap test does not) */
