@@ -551,20 +551,34 @@ static float sweep_mag(sweep_ctx_t *c)
     return m;
 }
 
-PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+/* The segment's and the triangle's extents along the axis u: the segment's lower end at the
+ * start (seg0), the motion's part towards the triangle (move, <= 0), the triangle's upper
+ * end (tri); false for an axis too short or not finite. */
+typedef struct { float uu, seg0, move, tri; } axis_span_t;
+PRIM_INLINE bool axis_span(const sweep_ctx_t *c, fm_vec3_t u, float t_max, axis_span_t *s)
 {
-    const fm_vec3_t u = *pu;
-    float uu = v3_len2(u);
-    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
+    s->uu = v3_len2(u);
+    if (!(s->uu > V3_TINY_LEN2) || !f_finite(s->uu)) return false;
     const tri_t *t = &c->tri;
     float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
     float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
-    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    s->seg0 = f_min(sa, sb);
+    s->move = f_min(sd, 0.0f);
+    s->tri = f_max(t0, f_max(t1, t2));
+    return true;
+}
+
+PRIM_INLINE bool sweep_separated_k(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
+{
+    const fm_vec3_t u = *pu;
+    axis_span_t s;
+    if (!axis_span(c, u, t_max, &s)) return false;
+    float sep = s.seg0 + s.move - s.tri;
     if (!(sep > 0.0f)) return false;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
     sep -= slack * u1 * sweep_mag(c);
     float rr = rc * 1.0001f + 1e-7f;
-    return sep > 0.0f && sep * sep > rr * rr * uu;
+    return sep > 0.0f && sep * sep > rr * rr * s.uu;
 }
 
 /* sweep_separated_k along the boundary axis, which also tells (*clear) whether the start
@@ -578,25 +592,21 @@ PRIM_INLINE bool sweep_separated_start(sweep_ctx_t *c, const fm_vec3_t *pu, floa
 {
     const fm_vec3_t u = *pu;
     *clear = false;
-    float uu = v3_len2(u);
-    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return false;
-    const tri_t *t = &c->tri;
-    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
-    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
-    float tm = f_max(t0, f_max(t1, t2));
-    float sep0 = f_min(sa, sb) - tm;
+    axis_span_t s;
+    if (!axis_span(c, u, t_max, &s)) return false;
+    float sep0 = s.seg0 - s.tri;
     if (!(sep0 > 0.0f)) return false;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
     float mg = sweep_mag(c);
-    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - tm; /* (sweep_separated_k's, term for term) */
+    float sep = s.seg0 + s.move - s.tri; /* (sweep_separated_k's, term for term) */
     if (sep > 0.0f) {
         sep -= slack * u1 * mg;
         float rr = rc * 1.0001f + 1e-7f;
-        if (sep > 0.0f && sep * sep > rr * rr * uu) return true;
+        if (sep > 0.0f && sep * sep > rr * rr * s.uu) return true;
     }
     sep0 -= 1e-5f * u1 * mg;
     float r0 = r * 1.0001f + 1e-6f;
-    *clear = sep0 > 0.0f && sep0 * sep0 > r0 * r0 * uu;
+    *clear = sep0 > 0.0f && sep0 * sep0 > r0 * r0 * s.uu;
     return false;
 }
 
@@ -605,18 +615,15 @@ PRIM_INLINE bool sweep_separated_start(sweep_ctx_t *c, const fm_vec3_t *pu, floa
 PRIM_INLINE int sweep_separated_why(sweep_ctx_t *c, const fm_vec3_t *pu, float rc, float t_max, float slack)
 {
     const fm_vec3_t u = *pu;
-    float uu = v3_len2(u);
-    if (!(uu > V3_TINY_LEN2) || !f_finite(uu)) return 0;
-    const tri_t *t = &c->tri;
-    float sa = v3_dot(u, c->a), sb = v3_dot(u, c->b), sd = v3_dot(u, c->d) * t_max;
-    float t0 = v3_dot(u, t->v[0]), t1 = v3_dot(u, t->v[1]), t2 = v3_dot(u, t->v[2]);
-    float sep = f_min(sa, sb) + f_min(sd, 0.0f) - f_max(t0, f_max(t1, t2));
+    axis_span_t s;
+    if (!axis_span(c, u, t_max, &s)) return 0;
+    float sep = s.seg0 + s.move - s.tri;
     if (!(sep > 0.0f)) return 0;
     float u1 = fabsf(u.x) + fabsf(u.y) + fabsf(u.z);
     float rr = rc * 1.0001f + 1e-7f;
     float sepa = sep - slack * u1 * sweep_mag(c);
-    if (sepa > 0.0f && sepa * sepa > rr * rr * uu) return 1;
-    return sep * sep > rr * rr * uu ? 2 : 0;
+    if (sepa > 0.0f && sepa * sepa > rr * rr * s.uu) return 1;
+    return sep * sep > rr * rr * s.uu ? 2 : 0;
 }
 
 /* |u . w| summed term by term: what the rounding of u . w (and of w's own subtraction)
