@@ -263,6 +263,66 @@ static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
               f_min(f_max(o.z, t->lo.z), t->hi.z));
 }
 
+/** Contacts ball_in_hole looks at where the first look's CB_BALL_CONTACTS were not all. */
+#define CB_HOLE_CONTACTS 48
+
+/* Every contact of a ball (as cb_ball_overlaps), the deepest max_out kept in out: how many
+ * there were in all (may exceed max_out). */
+static inline uint32_t cb_ball_overlaps_total(const cb_ctx_t *c, fm_vec3_t center, float radius, coll_contact_t *out,
+                                              uint32_t max_out)
+{
+    if (c->gather) return coll_gather_capsule_overlaps(c->gather, center, c->up, radius, 0.0f, out, max_out);
+    return coll_capsule_overlaps(c->scene, center, c->up, radius, 0.0f, c->body->settings.read_mask,
+                                 c->body->settings.coll_types, out, max_out);
+}
+
+/** ball_in_hole's surround test on the contacts ct[0..n) of the ball lowered in the hole: with
+ *  the first contact's direction `side`, three or more directions across up leaving no gap of
+ *  180 degrees or more. */
+static bool hole_around(const cb_ctx_t *c, fm_vec3_t side, const coll_ray_hit_t *under, const coll_contact_t *ct,
+                        uint32_t n, fm_vec3_t *dir /* n + 1 */)
+{
+    const fm_vec3_t up = c->up;
+    uint32_t m = 0;
+    /* the contact the ball rests on (ball_held's first): lowered half a radius below it,
+     * the ball meets a taller piece's edge it first touched on that piece's side, its
+     * normal no longer under the ball (soak s5 l30: a hole between pieces 0.17 and 0.50 m
+     * high under a tilted up, that edge the only contact on its side) */
+    dir[m++] = side;
+    for (uint32_t i = 0; i < n; i++) {
+        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f)) continue; /* not under the ball */
+        /* the plane the foot is over is no side of a hole (the next tread down, and its
+         * triangles' edges, under a ball lowered between two nosings) */
+        if (under && fabsf(v3_dot(v3_sub(ct[i].point, under->point), under->normal)) <= c->contact_eps) continue;
+        fm_vec3_t d = v3_reject(ct[i].normal, up);
+        if (!(v3_len2(d) > 1e-6f)) continue; /* a face right under the centre: no side */
+        dir[m++] = v3_norm(d);
+    }
+    if (m < 3) return false;
+    /* a gap of 180 degrees or more: all the others on one side of one of them */
+    for (uint32_t i = 0; i < m; i++) {
+        bool left = true, right = true;
+        for (uint32_t j = 0; j < m && (left || right); j++) {
+            float s = v3_dot(v3_cross(dir[i], dir[j]), up);
+            if (s < 0.0f) left = false;
+            if (s > 0.0f) right = false;
+        }
+        if (left || right) return false;
+    }
+    return true;
+}
+
+/* ball_in_hole's look at up to CB_HOLE_CONTACTS contacts, where the first look kept only the
+ * deepest CB_BALL_CONTACTS of more */
+static __attribute__((noinline)) bool hole_around_more(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side,
+                                                       const coll_ray_hit_t *under)
+{
+    coll_contact_t ct[CB_HOLE_CONTACTS];
+    fm_vec3_t dir[CB_HOLE_CONTACTS + 1];
+    const uint32_t total = cb_ball_overlaps_total(c, bc, c->radius, ct, CB_HOLE_CONTACTS);
+    return hole_around(c, side, under, ct, total > CB_HOLE_CONTACTS ? CB_HOLE_CONTACTS : total, dir);
+}
+
 /**
  * The crack rule's ball held in a hole between three or more pieces (tile corners around a
  * gap, blocks of different heights): its roll from the first contact meets nothing, or
@@ -307,35 +367,17 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
         if (!beyond) return false;
     }
     coll_contact_t ct[CB_BALL_CONTACTS];
-    const uint32_t n = cb_ball_overlaps(c, bc, reach, ct);
+    const uint32_t total = cb_ball_overlaps_total(c, bc, reach, ct, CB_BALL_CONTACTS);
+    const uint32_t n = total > CB_BALL_CONTACTS ? CB_BALL_CONTACTS : total;
     fm_vec3_t dir[CB_BALL_CONTACTS + 1];
-    uint32_t m = 0;
-    /* the contact the ball rests on (ball_held's first): lowered half a radius below it,
-     * the ball meets a taller piece's edge it first touched on that piece's side, its
-     * normal no longer under the ball (soak s5 l30: a hole between pieces 0.17 and 0.50 m
-     * high under a tilted up, that edge the only contact on its side) */
-    dir[m++] = side;
-    for (uint32_t i = 0; i < n; i++) {
-        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f)) continue; /* not under the ball */
-        /* the plane the foot is over is no side of a hole (the next tread down, and its
-         * triangles' edges, under a ball lowered between two nosings) */
-        if (under && fabsf(v3_dot(v3_sub(ct[i].point, under->point), under->normal)) <= c->contact_eps) continue;
-        fm_vec3_t d = v3_reject(ct[i].normal, up);
-        if (!(v3_len2(d) > 1e-6f)) continue; /* a face right under the centre: no side */
-        dir[m++] = v3_norm(d);
-    }
-    if (m < 3) return false;
-    /* a gap of 180 degrees or more: all the others on one side of one of them */
-    for (uint32_t i = 0; i < m; i++) {
-        bool left = true, right = true;
-        for (uint32_t j = 0; j < m && (left || right); j++) {
-            float s = v3_dot(v3_cross(dir[i], dir[j]), up);
-            if (s < 0.0f) left = false;
-            if (s > 0.0f) right = false;
-        }
-        if (left || right) return false;
-    }
-    return true;
+    if (hole_around(c, side, under, ct, n, dir)) return true;
+    /* The query keeps the deepest CB_BALL_CONTACTS: near copies of a slab (two slabs 1.5 mm
+     * apart, each edge met by several triangles) filled them all, and a tile's edge on the
+     * hole's other side, shallower, was dropped; the rest lay on one side, no hole, and the
+     * foot stood on the floor, 61 mm under the ball resting on the slab's edge, the tile's
+     * and a second slab's corner (soak s47 l73). With more contacts than kept: all of them
+     * (up to CB_HOLE_CONTACTS), out of line (rare; its frame off the caller's). */
+    return total > CB_BALL_CONTACTS && hole_around_more(c, bc, side, under);
 }
 
 /** ball_held's answer: the ball rests on its first contact h1 (lowest contact `contact`
