@@ -282,39 +282,6 @@ static fm_vec3_t follow_slope(fm_vec3_t in_h, fm_vec3_t up, fm_vec3_t n, float u
     return v3_scale(v, speed / l);
 }
 
-/* The airborne step's gathered box (gather_step's lo..hi, centre and below) narrowed per
- * axis: the box lo..hi is wide across up by the whole speed along up (a fall of 9 m/s:
- * 0.15 m each side, twice the triangles under a body on Jolt's terrain). Across up the
- * motion is at most the input, the air velocity and the slide; along up the speed along
- * up, the air velocity, the slide and a step of gravity (an axis at up_a to up: the one
- * times sqrt(1 - up_a^2) plus the other times |up_a|). *half: about lo..hi's centre (its
- * bits: the gathered triangles' relative forms are the same), each half extent the smaller
- * of lo..hi's and that motion's; a query beyond it goes to the scene as before. Out of
- * line and airborne only: a grounded step's box hardly narrows (its speed along up is
- * small), and computed there the console's walk paid +1.9 %. */
-static __attribute__((noinline)) void air_half(const cb_ctx_t *c, fm_vec3_t input, float carry, float below, float dt,
-                                               fm_vec3_t center, fm_vec3_t lo, fm_vec3_t hi, fm_vec3_t *half)
-{
-    const char_body_t *b = c->body;
-    const fm_vec3_t up = c->up;
-    const float s_in = v3_len(v3_reject(input, up)), s_air = v3_len(b->air_velocity);
-    const float s_up = fabsf(v3_dot(b->velocity, up)), s_fall = b->settings.gravity * dt;
-    const float sk4 = 4.0f * c->skin;
-    const float m_across = (s_in + s_air + b->slide_speed) * dt + carry + sk4;
-    const float m_along = (s_up + s_air + b->slide_speed + s_fall) * dt + carry + sk4;
-    for (int a = 0; a < 3; a++) {
-        const float ua = fabsf(up.v[a]), sa = 1.0f - ua * ua;
-        const float o = 0.5f * (lo.v[a] + hi.v[a]);
-        const float et = ua * (c->half_height - c->radius) + c->radius +
-                         m_across * (sa > 0.0f ? sqrtf(sa) : 0.0f) + m_along * ua;
-        const float dlo = up.v[a] > 0.0f ? -up.v[a] * below : -up.v[a] * c->step;
-        const float dhi = up.v[a] > 0.0f ? up.v[a] * c->step : -up.v[a] * below;
-        const float th = f_max(o - (center.v[a] - et + dlo), (center.v[a] + et + dhi) - o);
-        half->v[a] = 0.5f * (hi.v[a] - lo.v[a]);
-        if (th < half->v[a]) half->v[a] = th;
-    }
-}
-
 /** Gathers the candidates of a step that starts at pos (see cb_ctx_t.gather). */
 static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_vec3_t input, fm_vec3_t carry_d,
                         float dt)
@@ -337,19 +304,11 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         lo.v[a] = center.v[a] - ext + (up.v[a] > 0.0f ? -up.v[a] * below : -up.v[a] * c->step);
         hi.v[a] = center.v[a] + ext + (up.v[a] > 0.0f ? up.v[a] * c->step : -up.v[a] * below);
     }
-    /* airborne: the box about the same centre, narrower across up (air_half) */
-    fm_vec3_t half;
-    const bool air = !(b->flags & CB_FLAG_GROUNDED);
-    if (air) air_half(c, input, carry, below, dt, center, lo, hi, &half);
     if (!b->gather_cache) {
-        if (!air) half = v3_scale(v3_sub(hi, lo), 0.5f); /* (coll_gather_begin's centre and half extents) */
-        coll_gather_begin_oh(g, c->scene, v3_scale(v3_add(lo, hi), 0.5f), half, b->settings.read_mask,
-                             b->settings.coll_types);
+        coll_gather_begin(g, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types);
         return;
     }
-    const fm_vec3_t *hp = air ? &half : NULL;
-    if (coll_gather_from_cache(g, b->gather_cache, c->scene, lo, hi, hp, b->settings.read_mask,
-                               b->settings.coll_types))
+    if (coll_gather_from_cache(g, b->gather_cache, c->scene, lo, hi, b->settings.read_mask, b->settings.coll_types))
         return;
     /* With a cache, a refill keeps the triangles of a larger box: this step's, and where it
      * will be CB_GATHER_CACHE_STEPS steps on at this velocity (the input across up, along
@@ -369,8 +328,7 @@ static void gather_step(const cb_ctx_t *c, coll_gather_t *g, fm_vec3_t pos, fm_v
         flo.v[a] = lo.v[a] + (ahead.v[a] < 0.0f ? ahead.v[a] : 0.0f) - mg;
         fhi.v[a] = hi.v[a] + (ahead.v[a] > 0.0f ? ahead.v[a] : 0.0f) + mg;
     }
-    coll_gather_refill(g, b->gather_cache, c->scene, lo, hi, hp, flo, fhi, b->settings.read_mask,
-                       b->settings.coll_types);
+    coll_gather_refill(g, b->gather_cache, c->scene, lo, hi, flo, fhi, b->settings.read_mask, b->settings.coll_types);
 }
 
 /**

@@ -185,28 +185,17 @@ CAND_INLINE bool gather_walk(coll_gather_t *g, grid_walk_t *w, const coll_mesh_i
 void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
                        uint8_t types)
 {
-    fm_vec3_t o, h;
-    for (int a = 0; a < 3; a++) {
-        o.v[a] = 0.5f * (lo.v[a] + hi.v[a]);
-        h.v[a] = 0.5f * (hi.v[a] - lo.v[a]);
-    }
-    coll_gather_begin_oh(g, scene, o, h, read_mask, types);
-}
-
-void coll_gather_begin_oh(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t half,
-                          uint8_t read_mask, uint8_t types)
-{
     g->scene = scene;
     g->read_mask = read_mask;
     g->types = types;
     g->ntris = 0;
     g->ytop = -FLT_MAX;
     g->valid = false;
-    if (!scene || !vfin(&origin) || !vfin(&half)) return;
-    g->origin = origin;
+    if (!scene || !vfin(&lo) || !vfin(&hi)) return;
     for (int a = 0; a < 3; a++) {
-        g->hi.v[a] = half.v[a];
-        g->lo.v[a] = -half.v[a];
+        g->origin.v[a] = 0.5f * (lo.v[a] + hi.v[a]);
+        g->hi.v[a] = 0.5f * (hi.v[a] - lo.v[a]);
+        g->lo.v[a] = -g->hi.v[a];
     }
     g->valid = true;
     g->scale = 1.0f;
@@ -572,7 +561,7 @@ static inline bool cache_usable(const coll_gather_cache_t *cache, const coll_sce
 }
 
 static inline void gather_head(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
-                               const fm_vec3_t *half, uint8_t read_mask, uint8_t types)
+                               uint8_t read_mask, uint8_t types)
 {
     g->scene = scene;
     g->read_mask = read_mask;
@@ -582,31 +571,13 @@ static inline void gather_head(coll_gather_t *g, const coll_scene_t *scene, fm_v
     g->valid = true;
     g->scale = 1.0f;
     box_of(lo, hi, &g->origin, &g->lo, &g->hi);
-    if (half) {
-        g->hi = *half;
-        for (int a = 0; a < 3; a++) g->lo.v[a] = -half->v[a];
-    }
-}
-
-/* coll_gather_begin of lo..hi, or with half: of the box about its centre with those half
- * extents (coll_gather_begin_oh). */
-static void gather_begin_h(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi,
-                           const fm_vec3_t *half, uint8_t read_mask, uint8_t types)
-{
-    if (!half) {
-        coll_gather_begin(g, scene, lo, hi, read_mask, types);
-        return;
-    }
-    fm_vec3_t o, glo, ghi;
-    box_of(lo, hi, &o, &glo, &ghi);
-    coll_gather_begin_oh(g, scene, o, *half, read_mask, types);
 }
 
 bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                            fm_vec3_t hi, const fm_vec3_t *half, uint8_t read_mask, uint8_t types)
+                            fm_vec3_t hi, uint8_t read_mask, uint8_t types)
 {
     if (!cache_usable(cache, scene, lo, hi, types) || !cache->valid) return false;
-    gather_head(g, scene, lo, hi, half, read_mask, types);
+    gather_head(g, scene, lo, hi, read_mask, types);
     if (!gather_from_cache(g, cache)) return false;
     cache->hits++;
     if (cache->since < 255u) cache->since++;
@@ -618,16 +589,15 @@ bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const 
 }
 
 void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                        fm_vec3_t hi, const fm_vec3_t *half, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask,
-                        uint8_t types)
+                        fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
 {
     if (!cache_usable(cache, scene, lo, hi, types)) {
-        gather_begin_h(g, scene, lo, hi, half, read_mask, types);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     if (cache->backoff) {
         cache->backoff--;
-        gather_begin_h(g, scene, lo, hi, half, read_mask, types);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     /* a refill costs about twice a gather: after refills that served no other step (a body
@@ -637,7 +607,7 @@ void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll
         if (cache->wasted < 3u) cache->wasted++;
         cache->valid = 0;
         cache->backoff = (uint8_t)((2u << cache->wasted) - 1u);
-        gather_begin_h(g, scene, lo, hi, half, read_mask, types);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     if (cache->since) cache->wasted = 0;
@@ -646,12 +616,12 @@ void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll
         flo.v[a] = f_min(flo.v[a], lo.v[a]);
         fhi.v[a] = f_max(fhi.v[a], hi.v[a]);
     }
-    gather_head(g, scene, lo, hi, half, read_mask, types);
+    gather_head(g, scene, lo, hi, read_mask, types);
     if (!vfin(&flo) || !vfin(&fhi) || !cache_fill(cache, scene, flo, fhi, read_mask, g)) {
         cache->valid = 0;
         cache->overflows++;
         cache->backoff = CACHE_BACKOFF;
-        gather_begin_h(g, scene, lo, hi, half, read_mask, types);
+        coll_gather_begin(g, scene, lo, hi, read_mask, types);
         return;
     }
     cache->fills++;
@@ -664,8 +634,8 @@ void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll
 void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
                               fm_vec3_t hi, fm_vec3_t flo, fm_vec3_t fhi, uint8_t read_mask, uint8_t types)
 {
-    if (!coll_gather_from_cache(g, cache, scene, lo, hi, NULL, read_mask, types))
-        coll_gather_refill(g, cache, scene, lo, hi, NULL, flo, fhi, read_mask, types);
+    if (!coll_gather_from_cache(g, cache, scene, lo, hi, read_mask, types))
+        coll_gather_refill(g, cache, scene, lo, hi, flo, fhi, read_mask, types);
 }
 
 /* Debug aid: built with -DGATHER_CACHE_CHECK, every gather made through a cache is

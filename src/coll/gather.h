@@ -61,10 +61,6 @@ typedef struct {
 void coll_gather_begin(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t lo, fm_vec3_t hi, uint8_t read_mask,
                        uint8_t types);
 
-/** coll_gather_begin for the box origin +- half (the box's centre and half extents given). */
-void coll_gather_begin_oh(coll_gather_t *g, const coll_scene_t *scene, fm_vec3_t origin, fm_vec3_t half,
-                          uint8_t read_mask, uint8_t types);
-
 /** coll_gather_begin through a gather cache (coll_gather_cache_t, char_body.h): when the
  *  cache covers the box (the same scene and mesh list, each walked instance on the same
  *  mesh, and the box's mesh-local box under each instance's transform now inside the one
@@ -78,14 +74,11 @@ void coll_gather_begin_cached(coll_gather_t *g, coll_gather_cache_t *cache, cons
                               fm_vec3_t hi, fm_vec3_t fill_lo, fm_vec3_t fill_hi, uint8_t read_mask, uint8_t types);
 /** coll_gather_begin_cached's two halves: the gather from the cache when it covers the box
  *  (true; false: g not usable), and the refill for fill_lo..fill_hi then the gather from it
- *  (or coll_gather_begin's gather). The caller computes the refill's box only on a miss.
- *  half (NULL: none): the gathered box is the one about lo..hi's centre with these half
- *  extents (at most lo..hi's), as coll_gather_begin_oh's. */
+ *  (or coll_gather_begin's gather). The caller computes the refill's box only on a miss. */
 bool coll_gather_from_cache(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                            fm_vec3_t hi, const fm_vec3_t *half, uint8_t read_mask, uint8_t types);
+                            fm_vec3_t hi, uint8_t read_mask, uint8_t types);
 void coll_gather_refill(coll_gather_t *g, coll_gather_cache_t *cache, const coll_scene_t *scene, fm_vec3_t lo,
-                        fm_vec3_t hi, const fm_vec3_t *half, fm_vec3_t fill_lo, fm_vec3_t fill_hi,
-                        uint8_t read_mask, uint8_t types);
+                        fm_vec3_t hi, fm_vec3_t fill_lo, fm_vec3_t fill_hi, uint8_t read_mask, uint8_t types);
 /** Empties a cache (its counters too). */
 void coll_gather_cache_reset(coll_gather_cache_t *cache);
 
