@@ -1450,9 +1450,9 @@ static void test_overlap_axis_culls_only_what_the_sweep_drops(void)
         memset(&prep, 0, sizeof prep);
         coll_prim_hit_t h;
         bool clear = false;
-        fm_vec3_t axis;
+        coll_tri_axis_t axis;
         if (coll_capsule_triangle_overlap_clear(seg, fr, tri, &prep, &h, &clear, &axis) || !clear) continue;
-        if (axis.x == 0.0f && axis.y == 0.0f && axis.z == 0.0f) continue;
+        if (axis.u.x == 0.0f && axis.u.y == 0.0f && axis.u.z == 0.0f) continue;
         n++;
         bool culls = coll_tri_sweep_axis_culls(seg, fr, &d, tri, t_max, &axis);
         bool got = coll_tri_sweep_prep(seg, fr, &d, tri, &prep, t_max, NULL, &h);
