@@ -139,6 +139,10 @@ typedef struct {
     float radius, ihh;
     uint8_t n;
     uint8_t clear[COLL_GATHER_MEMO_MAX]; ///< indices into g->tris
+    /** clear[i]'s boundary axis, when the exact test found it clear along that axis (else
+     *  zero): a sweep of that capsule from there tests it over its motion first, as its own
+     *  exact test would (coll_tri_sweep_axis_culls), and skips the triangle where it separates. */
+    coll_tri_axis_t axis_of[COLL_GATHER_MEMO_MAX];
 } coll_gather_memo_t;
 _Static_assert(COLL_GATHER_MAX <= 256, "coll_gather_memo_t stores gathered-triangle indices in a byte");
 

@@ -135,8 +135,24 @@ bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const f
  *  allowance far above that pair's rounding: then a sweep of the same segment (the same seg
  *  values) and radius against the same triangle (the same tri values) with t_max = 0, which
  *  computes that pair (coll_tri_sweep_prep: no motion), finds no overlap and nothing. */
+/** A segment's and a triangle's boundary axis u (tri_sweep's first separating axis; zero:
+ *  none) and their extents along it: the segment's lower end seg0, the triangle's upper end
+ *  top (u . the points, as the sweep's own cull computes them). */
+typedef struct {
+    fm_vec3_t u;
+    float seg0, top;
+} coll_tri_axis_t;
 bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
-                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear);
+                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear,
+                                         coll_tri_axis_t *axis);
+/** With axis (not NULL) set by coll_capsule_triangle_overlap_clear for a segment and
+ *  triangle (zero when it found them clear otherwise than by the boundary axis): true when
+ *  coll_tri_sweep_prep of that very segment, radius and triangle (the same values, its prep
+ *  ready) moved by disp over t_max would be dropped by its boundary-axis cull (the same
+ *  axis, the same expressions: sweep_separated_start), so would find nothing. False
+ *  when it cannot tell. */
+bool coll_tri_sweep_axis_culls(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                               float t_max, const coll_tri_axis_t *axis);
 
 #ifdef COLL_METHOD_HOOKS
 /*

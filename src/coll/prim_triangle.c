@@ -989,7 +989,7 @@ bool coll_capsule_triangle_sweep(const fm_vec3_t seg[2], float r, const fm_vec3_
 }
 
 static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3], coll_tri_prep_t *prep,
-                        coll_prim_hit_t *hit, bool *clear)
+                        coll_prim_hit_t *hit, bool *clear, coll_tri_axis_t *axis)
 {
     if (!seg || !tri || !hit) return false;
     if (!(r >= 0.0f) || !prim_room_ok(prim_room_bits(r) | prim_room3(seg[0]) | prim_room3(seg[1]))) return false;
@@ -1033,8 +1033,16 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
         }
         float uu = v3_len2(u);
         if (uu > V3_TINY_LEN2 && f_finite(uu)) {
-            float sep = f_min(v3_dot(u, seg[0]), v3_dot(u, seg[1])) -
-                        f_max(v3_dot(u, t.v[0]), f_max(v3_dot(u, t.v[1]), v3_dot(u, t.v[2])));
+            float seg0 = f_min(v3_dot(u, seg[0]), v3_dot(u, seg[1]));
+            float top = f_max(v3_dot(u, t.v[0]), f_max(v3_dot(u, t.v[1]), v3_dot(u, t.v[2])));
+            float sep = seg0 - top;
+            /* (the axis tri_sweep's boundary cull would take for this segment and triangle,
+             * and its extents: the same p, edges and expressions as axis_span's) */
+            if (axis) {
+                axis->u = u;
+                axis->seg0 = seg0;
+                axis->top = top;
+            }
             float mag = v3_abs_sum(seg[0]) + v3_abs_sum(seg[1]) + v3_abs_sum(t.v[0]) + v3_abs_sum(t.v[1]) + v3_abs_sum(t.v[2]);
             sep -= 1e-5f * v3_abs_sum(u) * mag;
             float rr = rin * 1.0001f + 1e-7f;
@@ -1062,20 +1070,47 @@ static bool tri_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
 bool coll_capsule_triangle_overlap(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                    coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, NULL, hit, NULL);
+    return tri_overlap(seg, r, tri, NULL, hit, NULL, NULL);
 }
 
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                         coll_tri_prep_t *p, coll_prim_hit_t *hit)
 {
-    return tri_overlap(seg, r, tri, p, hit, NULL);
+    return tri_overlap(seg, r, tri, p, hit, NULL, NULL);
 }
 
 bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
-                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear)
+                                         coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear,
+                                         coll_tri_axis_t *axis)
 {
     *clear = false;
-    return tri_overlap(seg, r, tri, p, hit, clear);
+    if (axis) axis->u = v3(0.0f, 0.0f, 0.0f);
+    return tri_overlap(seg, r, tri, p, hit, clear, axis);
+}
+
+bool coll_tri_sweep_axis_culls(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp, const fm_vec3_t tri[3],
+                               float t_max, const coll_tri_axis_t *axis)
+{
+    /* tri_sweep's state as its boundary cull reads it: the segment's ends (not a sphere's
+     * midpoint: only a segment reaches that cull without a far start), the motion, the
+     * triangle's vertices (the prep's setup keeps tri's values) and the magnitude not yet
+     * made */
+    if (!(r >= 0.0f) || !(t_max >= 0.0f)) return false;
+    sweep_ctx_t c;
+    c.a = seg[0];
+    c.b = seg[1];
+    c.d = *disp;
+    for (int i = 0; i < 3; i++) c.tri.v[i] = tri[i];
+    c.s = v3_sub(c.b, c.a);
+    c.ss = v3_dot(c.s, c.s);
+    if (!(c.ss > 1e-14f)) return false; /* a sphere: that cull runs only on a far start */
+    if (!(v3_dot(c.d, c.d) * t_max * t_max > 1e-24f)) return false; /* not moving: no such cull */
+    c.mag = -1.0f;
+    c.t_max = t_max;
+    const float tol = f_min(COLL_PRIM_TOUCH_TOL, 0.25f * r);
+    float rin = r - tol;
+    bool clear;
+    return sweep_separated_start(&c, &axis->u, rin, t_max, 1e-6f, r, &clear);
 }
 
 /* ---------------------------------------------------------------- ray */

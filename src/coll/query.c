@@ -594,17 +594,19 @@ static int plane_rejects(float r, const fm_vec3_t seg[2], const fm_vec3_t shape[
  * true when the exact test computed its closest pair and found no overlap
  * (coll_capsule_triangle_overlap_clear; gathered triangles only). */
 static bool overlap_tri(const capsule_q_t *q, const coll_mesh_instance_t *inst, int32_t t, const fm_vec3_t *w0,
-                        const fm_vec3_t shape[3], const fm_vec3_t *u, coll_gather_tri_t *gt, contacts_t *c)
+                        const fm_vec3_t shape[3], const fm_vec3_t *u, coll_gather_tri_t *gt, contacts_t *c,
+                        coll_tri_axis_t *axis)
 {
     fm_vec3_t seg[2];
     fm_vec3_sub(&seg[0], &q->seg[0], w0);
     fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    if (axis) axis->u.x = axis->u.y = axis->u.z = 0.0f;
     int pr = plane_rejects(q->r, seg, shape);
     if (pr) return pr == 2 && gt; /* (2: clear of rin: no overlap, remembered as clear) */
     if (!one_way_capsule(u, shape, seg, q->r)) return false;
     coll_prim_hit_t ph;
     bool clear = false;
-    bool got = gt ? coll_capsule_triangle_overlap_clear(seg, q->r, shape, &gt->prep, &ph, &clear)
+    bool got = gt ? coll_capsule_triangle_overlap_clear(seg, q->r, shape, &gt->prep, &ph, &clear, axis)
                   : coll_capsule_triangle_overlap(seg, q->r, shape, &ph);
     if (got && ph.depth > 0.0f) {
         fm_vec3_add(&ph.point, &ph.point, w0);
@@ -624,7 +626,7 @@ static void overlap_instance(const coll_scene_t *scene, const coll_mesh_instance
             uint32_t t;
             fm_vec3_t shape[3], w0, tri[3];
             if (!grid_walk_take_in_box(&w, k, &iw.x, &iw.o_l, &iw.lo, &iw.hi, &t, &w0, shape, tri)) continue;
-            overlap_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, NULL, c);
+            overlap_tri(q, inst, (int32_t)t, &w0, shape, &iw.up1, NULL, c, NULL);
         }
     grid_walk_end(&w, scene);
 }
@@ -836,6 +838,37 @@ CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
     return false;
 }
 
+/* The memo's overlap found gathered triangle gt (w0, shape: placed for this sweep) clear
+ * along its boundary axis: the sweep's exact test would take that axis first (the same
+ * segment, triangle and expressions: coll_tri_sweep_axis_culls); true when it separates
+ * over the sweep's motion to t_max, where that test would find nothing. The recovery's
+ * look and the slide's first sweep from the same place: a stair's riser and tread halves
+ * beyond their diagonals beside the capsule, ~1.1k console instructions each. */
+CAND_INLINE bool memo_axis_culls(const coll_gather_memo_t *memo, const coll_gather_t *g, const coll_gather_tri_t *gt,
+                                 const capsule_q_t *q, const fm_vec3_t *w0, const fm_vec3_t shape[3], float t_max,
+                                 uint8_t *mj)
+{
+    /* (the memo's triangles are in the gather's order, as the scan visits them: a cursor) */
+    uint8_t k = (uint8_t)(gt - g->tris), i = *mj;
+    while (i < memo->n && memo->clear[i] < k) i++;
+    *mj = i;
+    if (!(i < memo->n && memo->clear[i] == k)) return false;
+    const coll_tri_axis_t *ax = &memo->axis_of[i];
+    /* first the separation along it, roughly (its own test follows where this passes; one
+     * this rejects the sweep's test finds too close along it, within rounding, and tests
+     * on): the triangles the motion goes into (the hit, its tie across the nosing) stop here */
+    const fm_vec3_t *u = &ax->u;
+    float uu = fm_vec3_dot(u, u);
+    if (!(uu > 0.0f)) return false;
+    float sep = ax->seg0 + f_min(fm_vec3_dot(u, &q->disp) * t_max, 0.0f) - ax->top;
+    float rin = q->r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * q->r);
+    if (!(sep > 0.0f) || !(sep * sep > rin * rin * uu)) return false;
+    fm_vec3_t seg[2];
+    fm_vec3_sub(&seg[0], &q->seg[0], w0);
+    fm_vec3_sub(&seg[1], &q->seg[1], w0);
+    return coll_tri_sweep_axis_culls(seg, q->r, &q->disp, shape, t_max, ax);
+}
+
 /* The gathered triangles against a capsule sweep (rel: its centre from the gather's origin;
  * lo..hi: its box swept to sb's limit) into sb. memo: memo_for's (NULL: none). corner (a
  * constant at each call): the box test's corners (gather_corner_clear) for the triangles
@@ -851,6 +884,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
     /* (memo: set once a hit at t = 0 is held, below) */
     const coll_gather_memo_t *skip = NULL;
+    uint8_t mj = 0; /* (memo_axis_culls' cursor) */
     /* every gathered triangle below the swept box (the slide's shortened capsule over a
      * floor): gather_tri's first compare would reject each */
     if (g->ytop < glo.y) return;
@@ -863,6 +897,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
         if (skip && memo_clear(skip, (uint16_t)(gt - g->tris))) continue;
+        if (memo && !skip && memo_axis_culls(memo, g, gt, q, &w0, shape, sb->best, &mj)) continue;
         fm_vec3_t u = one_way_up(gt->inst);
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
@@ -1020,8 +1055,11 @@ CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center,
         fm_vec3_t w0, shape[3];
         if (!gather_tri(gt, &rel, &glo, &ghi, &w0, shape)) continue;
         fm_vec3_t u = one_way_up(gt->inst);
-        if (overlap_tri(&q, gt->inst, gt->tri, &w0, shape, &u, gt, &c) && memo && nm < COLL_GATHER_MEMO_MAX)
+        coll_tri_axis_t ax;
+        if (overlap_tri(&q, gt->inst, gt->tri, &w0, shape, &u, gt, &c, &ax) && memo && nm < COLL_GATHER_MEMO_MAX) {
+            memo->axis_of[nm] = ax;
             memo->clear[nm++] = (uint8_t)(gt - g->tris);
+        }
     }
     /* (not for a near-zero inner half height: tri_sweep makes such a segment its midpoint,
      * the overlap test does not) */
