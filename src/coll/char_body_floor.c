@@ -892,9 +892,10 @@ static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const co
     float nu = v3_dot(floor->normal, up);
     if (!(nu > 0.02f)) return false;
     fm_vec3_t b0 = ball_drop_start(c, pos);
-    /* Level: up within the rounding of a unit normal. A level triangle's normal is often
-     * 0.99999994 along up, not 1 (its cross product's normalisation): taken for tilted, it
-     * got two skins and tile edges 1.3 mm over it went unseen (soak s54 l269). */
+    /* Level: up within the rounding of a unit normal. A level face's normal can come out
+     * 0.99999994 along up, not 1 (a tile instance turned about up: its rotation and the
+     * normalisation round): taken for tilted, it got two skins and tile edges 1.3 mm over
+     * it went unseen (soak s54 l269). */
     const bool level = nu >= CB_LEVEL_NU;
     /* descent along up at which the ball would touch the floor's plane, less the margin:
      * over a level floor a skin, the footing tolerance, not two (edges 1.48 mm over a
