@@ -892,6 +892,11 @@ static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const co
     float nu = v3_dot(floor->normal, up);
     if (!(nu > 0.02f)) return false;
     fm_vec3_t b0 = ball_drop_start(c, pos);
+    /* Level: up within the rounding of a unit normal. A level face's normal can come out
+     * 0.99999994 along up, not 1 (a tile instance turned about up: its rotation and the
+     * normalisation round): taken for tilted, it got two skins and tile edges 1.3 mm over
+     * it went unseen (soak s54 l269). */
+    const bool level = nu >= CB_LEVEL_NU;
     /* descent along up at which the ball would touch the floor's plane, less the margin:
      * over a level floor a skin, the footing tolerance, not two (edges 1.48 mm over a
      * floor, a tile field's near copy 1.5 mm higher with its 6 mm slit over the foot, lay
@@ -899,7 +904,7 @@ static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const co
      * soak s22 l347); over a tilted one two (a skin there brings the ball within reach of
      * a heightfield's next triangles: the Jolt scene +1.3 %) */
     float s = (v3_dot(v3_sub(b0, floor->point), floor->normal) - r) / nu -
-              (nu < 1.0f ? 2.0f : 1.0f) * c->skin;
+              (level ? 1.0f : 2.0f) * c->skin;
     if (!(s > c->tiny)) return false;
     /* The ball ends two skins (along up: 2 skin nu along the normal) over a tilted floor's plane
      * and starts higher: what lies within half that over the plane it never reaches (the
@@ -907,7 +912,7 @@ static inline bool ball_reaches_floor(const cb_ctx_t *c, fm_vec3_t pos, const co
      * grid-aligned level's) the plain sweep: its neighbours are level or upright, out of the
      * ball's box or above the plane, and the plane only costs there. The same answer. */
     bool met;
-    if (nu < 1.0f) {
+    if (!level) {
         const coll_gather_above_t above = { floor->normal, floor->point, c->skin * nu, false };
         met = ball_drop_above(c, pos, b0, s, &above, edge);
     } else {

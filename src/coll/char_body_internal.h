@@ -45,6 +45,9 @@ enum {
 /** Height tolerance of the stair step and the probe's lift, m: rises and treads compared
  *  within it, lifts shorter than it are not "no room". */
 #define CB_STEP_EPS 0.001f
+/* n.up at or above which a face counts as level: 1 less a few float ulps, the rounding of a
+ * unit normal computed from a level triangle's vertices */
+#define CB_LEVEL_NU 0.9999997f
 /** Walking, a slide that ends this far behind its start along the input went backwards
  *  (skin corrections in a corner): it is redone without the backward part, m. Above float
  *  noise at positions of a few hundred metres. */
