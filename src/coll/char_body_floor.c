@@ -266,16 +266,6 @@ static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
 /** Contacts ball_in_hole looks at where the first look's CB_BALL_CONTACTS were not all. */
 #define CB_HOLE_CONTACTS 48
 
-/* Every contact of a ball (as cb_ball_overlaps), the deepest max_out kept in out: how many
- * there were in all (may exceed max_out). */
-static inline uint32_t cb_ball_overlaps_total(const cb_ctx_t *c, fm_vec3_t center, float radius, coll_contact_t *out,
-                                              uint32_t max_out)
-{
-    if (c->gather) return coll_gather_capsule_overlaps(c->gather, center, c->up, radius, 0.0f, out, max_out);
-    return coll_capsule_overlaps(c->scene, center, c->up, radius, 0.0f, c->body->settings.read_mask,
-                                 c->body->settings.coll_types, out, max_out);
-}
-
 /** ball_in_hole's surround test on the contacts ct[0..n) of the ball lowered in the hole: with
  *  the first contact's direction `side`, three or more directions across up leaving no gap of
  *  180 degrees or more. */
