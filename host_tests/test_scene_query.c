@@ -906,6 +906,73 @@ static void test_initial_overlap_deepest_and_overlaps_list(void)
     TEST_ASSERT_EQUAL_UINT32(0, coll_capsule_overlaps(&s, c, UP, 0.5f, 0.2f, 0x02, COLL_TYPE_ALL, out, 8));
 }
 
+/* Triangle (a, b, c) into g_verts / g_idx as the nt-th (its own three vertices). */
+static void put_tri(uint32_t nt, fm_vec3_t a, fm_vec3_t b, fm_vec3_t c)
+{
+    const fm_vec3_t v[3] = { a, b, c };
+    for (int k = 0; k < 3; k++) {
+        for (int ax = 0; ax < 3; ax++) g_verts[3 * (3 * nt + (uint32_t)k) + (uint32_t)ax] = v[k].v[ax];
+        g_idx[3 * nt + (uint32_t)k] = 3 * nt + (uint32_t)k;
+    }
+}
+
+/* The ball's overlaps keeping distinct contacts answer like a single copy of each piece:
+ * 24 coplanar copies of one triangle the ball sinks into (a level's duplicated brushes,
+ * near copies of a slab), plus one shallower contact that matters (scene A: a wall on the
+ * far side, the side of a hole the crack rule's surround test needs; scene B, the other
+ * way round: the floor the ball rests on beside 24 copies of a wall its side is in, the
+ * contact the support tests look for). Kept to the character body's 16, the deeper copies
+ * dropped that contact (soak s47 l73). On the scene and on the gathered scene. */
+static void test_ball_overlaps_keep_one_contact_per_copy(void)
+{
+    const fm_vec3_t F[3] = { {{ -2, 0, -2 }}, {{ -2, 0, 4 }}, {{ 4, 0, -2 }} };        /* y = 0, up +y */
+    const fm_vec3_t W[3] = { {{ 0.4f, -2, -2 }}, {{ 0.4f, 4, -2 }}, {{ 0.4f, -2, 4 }} }; /* x = 0.4 */
+    coll_mesh_build_opts_t o = { 0.5f, 0 };
+    for (int scn = 0; scn < 2; scn++) {
+        /* A: the ball (r 0.5) 0.1 into the floor's copies, 0.02 into the wall (at x 0.48);
+         * B: 0.1 into the wall's copies, 0.01 into the floor (0.49 below the centre) */
+        const fm_vec3_t *dup = scn == 0 ? F : W, *one = scn == 0 ? W : F;
+        const fm_vec3_t shift = scn == 0 ? (fm_vec3_t){{ 0.08f, 0, 0 }} : (fm_vec3_t){{ 0, -0.49f, 0 }};
+        const fm_vec3_t c = {{ 0, scn == 0 ? 0.4f : 0.0f, 0 }};
+        uint32_t nt = 0;
+        for (int i = 0; i < 24; i++, nt++) /* the copies, their vertices in turn (rounding differs) */
+            put_tri(nt, dup[i % 3], dup[(i + 1) % 3], dup[(i + 2) % 3]);
+        fm_vec3_t s0, s1, s2;
+        fm_vec3_add(&s0, &one[0], &shift);
+        fm_vec3_add(&s1, &one[1], &shift);
+        fm_vec3_add(&s2, &one[2], &shift);
+        put_tri(nt++, s0, s1, s2);
+        const coll_mesh_t *m = build_mesh(scn, 3 * nt, nt, &o);
+        coll_scene_t s;
+        coll_query_stats_t st;
+        coll_mesh_instance_t a;
+        scene_of_one_mesh(&s, &st, &a, m);
+        /* the premise: 25 contacts, and the deepest 16 are all copies */
+        coll_contact_t ct[16];
+        TEST_ASSERT_EQUAL_UINT32(25, coll_capsule_overlaps(&s, c, UP, 0.5f, 0.0f, 0xFF, COLL_TYPE_ALL, ct, 16));
+        static coll_gather_t g;
+        const fm_vec3_t lo = {{ -1, -1, -1 }}, hi = {{ 1, 1.5f, 1 }};
+        coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        TEST_ASSERT_TRUE(g.valid);
+        for (int on_g = 0; on_g < 2; on_g++) {
+            uint32_t gq = st.gather_queries, n;
+            memset(ct, 0, sizeof ct);
+            ASSERT_NO_ALLOC(n = on_g ? coll_gather_capsule_overlaps_distinct(&g, c, UP, 0.5f, 0.0f, ct, 16)
+                                     : coll_capsule_overlaps_distinct(&s, c, UP, 0.5f, 0.0f, 0xFF, COLL_TYPE_ALL,
+                                                                      ct, 16));
+            TEST_ASSERT_EQUAL_UINT32(on_g ? gq + 1 : gq, st.gather_queries); /* answered where asked */
+            TEST_ASSERT_EQUAL_UINT32(2, n);
+            /* the copies' contact first (deeper), then the other piece's */
+            const float want_n0 = scn == 0 ? ct[0].normal.y : -ct[0].normal.x;
+            const float want_n1 = scn == 0 ? -ct[1].normal.x : ct[1].normal.y;
+            TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, want_n0);
+            TEST_ASSERT_FLOAT_WITHIN(1e-4f, 0.1f, ct[0].depth);
+            TEST_ASSERT_FLOAT_WITHIN(1e-5f, 1.0f, want_n1);
+            TEST_ASSERT_FLOAT_WITHIN(1e-4f, scn == 0 ? 0.02f : 0.01f, ct[1].depth);
+        }
+    }
+}
+
 /* A capsule overlapping more distinct triangles than the dedup table holds: the query
  * falls back (counted) and still finds the deepest, and the overlap list has no
  * duplicates. */
@@ -2318,6 +2385,7 @@ int main(void)
     RUN_TEST(test_registry_errors);
     RUN_TEST(test_invalid_queries_return_false);
     RUN_TEST(test_initial_overlap_deepest_and_overlaps_list);
+    RUN_TEST(test_ball_overlaps_keep_one_contact_per_copy);
     RUN_TEST(test_dedup_overflow_falls_back_exactly);
     RUN_TEST(test_gather_shrinks_its_box_on_dense_triangles);
     RUN_TEST(test_gather_cache_equals_fresh_gather);

@@ -118,6 +118,23 @@ bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3
 uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                       float inner_half_height, coll_contact_t *out, uint32_t max_out);
 
+/**
+ * coll_capsule_overlaps / coll_gather_capsule_overlaps keeping one contact per point and
+ * normal: a contact at the point of a kept one (within COLL_PRIM_TOUCH_TOL) with its normal
+ * (within about 0.8 degrees) is a copy, counted once, the deeper kept. Coplanar duplicates
+ * of a triangle (overlapping brushes, a level's near copies) and the edge or vertex its
+ * neighbours share otherwise fill the buffer with one contact many times, and the deepest
+ * max_out drop a shallower one elsewhere (the character body's look around its bottom ball:
+ * soak s47 l73, the far side of a hole). The total counts the distinct contacts (those
+ * dropped past max_out are counted even if copies of each other).
+ */
+uint32_t coll_capsule_overlaps_distinct(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis_up_unit,
+                                        float radius, float inner_half_height, uint8_t read_mask, uint8_t coll_types,
+                                        coll_contact_t *out, uint32_t max_out);
+uint32_t coll_gather_capsule_overlaps_distinct(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit,
+                                               float radius, float inner_half_height, coll_contact_t *out,
+                                               uint32_t max_out);
+
 /** Gathered triangles a memo keeps (COLL_GATHER_MEMO_MAX: more are not kept, only tested). */
 #define COLL_GATHER_MEMO_MAX 16
 

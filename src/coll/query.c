@@ -539,19 +539,40 @@ typedef struct {
     coll_contact_t *out;
     uint32_t max_out, kept, total;
     fm_vec3_t center;
+    bool distinct; /* one contact per point and normal (coll_capsule_overlaps_distinct) */
 } contacts_t;
+
+/* The kept contact that ph (relative to the centre) is a copy of: the same point within
+ * COLL_PRIM_TOUCH_TOL and the same normal within about 0.8 degrees; c->kept if none. (A NaN
+ * point or normal compares false: not a copy, kept on its own as before.) */
+static uint32_t contact_copy(const contacts_t *c, const coll_prim_hit_t *ph)
+{
+    fm_vec3_t p, d;
+    fm_vec3_add(&p, &c->center, &ph->point);
+    for (uint32_t i = 0; i < c->kept; i++) {
+        const coll_contact_t *o = &c->out[i];
+        fm_vec3_sub(&d, &p, &o->point);
+        if (fm_vec3_len2(&d) <= COLL_PRIM_TOUCH_TOL * COLL_PRIM_TOUCH_TOL &&
+            fm_vec3_dot(&ph->normal, &o->normal) >= 0.9999f)
+            return i;
+    }
+    return c->kept;
+}
 
 static void contact_add(contacts_t *c, const coll_prim_hit_t *ph, const coll_mesh_instance_t *inst,
                         const coll_body_t *body, int32_t tri)
 {
     c->total++;
     if (c->max_out == 0u || !c->out) return;
-    uint32_t pos = c->kept;
-    if (c->kept == c->max_out) {
+    uint32_t pos;
+    if (c->distinct && (pos = contact_copy(c, ph)) < c->kept) {
+        c->total--; /* a copy of a kept contact: the deeper stays, counted once */
+        if (!(ph->depth > c->out[pos].depth)) return;
+    } else if (c->kept == c->max_out) {
         if (!(ph->depth > c->out[c->kept - 1u].depth)) return;
         pos = c->kept - 1u; /* drop the shallowest */
     } else {
-        c->kept++;
+        pos = c->kept++;
     }
     while (pos > 0u && c->out[pos - 1u].depth < ph->depth) {
         c->out[pos] = c->out[pos - 1u];
@@ -646,16 +667,16 @@ static void overlap_bodies(const coll_scene_t *scene, const capsule_q_t *q, uint
     }
 }
 
-uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
-                               float inner_half_height, uint8_t read_mask, uint8_t coll_types,
-                               coll_contact_t *out, uint32_t max_out)
+static uint32_t capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                 float inner_half_height, uint8_t read_mask, uint8_t coll_types,
+                                 coll_contact_t *out, uint32_t max_out, bool distinct)
 {
     if (!scene || !capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
     STATS_ADD(scene, queries);
     static const fm_vec3_t zero = {{0.0f, 0.0f, 0.0f}};
     capsule_q_t q;
     capsule_setup(&q, &axis, radius, inner_half_height, &zero);
-    contacts_t c = { out, max_out, 0, 0, center };
+    contacts_t c = { out, max_out, 0, 0, center, distinct };
     seen_t seen;
     if (coll_types & COLL_TYPE_MESH) {
         seen_init(&seen);
@@ -666,6 +687,22 @@ uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_v
     }
     if (coll_types & COLL_TYPE_BODY) overlap_bodies(scene, &q, read_mask, &c);
     return c.total;
+}
+
+uint32_t coll_capsule_overlaps(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                               float inner_half_height, uint8_t read_mask, uint8_t coll_types,
+                               coll_contact_t *out, uint32_t max_out)
+{
+    return capsule_overlaps(scene, center, axis, radius, inner_half_height, read_mask, coll_types, out, max_out,
+                            false);
+}
+
+uint32_t coll_capsule_overlaps_distinct(const coll_scene_t *scene, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                        float inner_half_height, uint8_t read_mask, uint8_t coll_types,
+                                        coll_contact_t *out, uint32_t max_out)
+{
+    return capsule_overlaps(scene, center, axis, radius, inner_half_height, read_mask, coll_types, out, max_out,
+                            true);
 }
 
 /* ------------------------------------------------------------------ gathered ------- */
@@ -1033,7 +1070,7 @@ bool coll_gather_capsule_sweep_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
 
 CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                              float inner_half_height, coll_contact_t *out, uint32_t max_out,
-                                             coll_gather_memo_t *memo)
+                                             coll_gather_memo_t *memo, bool distinct)
 {
     if (!g || !g->scene) return 0;
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height)) return 0;
@@ -1046,10 +1083,10 @@ CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center,
     fm_vec3_t glo, ghi;
     gather_box(&rel, &lo, &hi, &glo, &ghi);
     if (!(g->types & COLL_TYPE_MESH) || !gather_covers(g, &glo, &ghi))
-        return coll_capsule_overlaps(g->scene, center, axis, radius, inner_half_height, g->read_mask, g->types, out,
-                                     max_out);
+        return capsule_overlaps(g->scene, center, axis, radius, inner_half_height, g->read_mask, g->types, out,
+                                max_out, distinct);
     /* (the memo's old record is replaced as this one is written: its key, below) */
-    contacts_t c = { out, max_out, 0, 0, center };
+    contacts_t c = { out, max_out, 0, 0, center, distinct };
     uint32_t nm = 0;
     for (coll_gather_tri_t *gt = g->tris, *gend = gt + g->ntris; gt < gend; gt++) {
         fm_vec3_t w0, shape[3];
@@ -1081,12 +1118,18 @@ CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center,
 uint32_t coll_gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                       float inner_half_height, coll_contact_t *out, uint32_t max_out)
 {
-    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, NULL);
+    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, NULL, false);
+}
+
+uint32_t coll_gather_capsule_overlaps_distinct(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                               float inner_half_height, coll_contact_t *out, uint32_t max_out)
+{
+    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, NULL, true);
 }
 
 uint32_t coll_gather_capsule_overlaps_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                         float inner_half_height, coll_contact_t *out, uint32_t max_out,
                                         coll_gather_memo_t *memo)
 {
-    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, memo);
+    return gather_capsule_overlaps(g, center, axis, radius, inner_half_height, out, max_out, memo, false);
 }
