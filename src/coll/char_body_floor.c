@@ -176,6 +176,13 @@ static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll
            v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
 }
 
+/* A walkable contact nearly level: its normal within 8 degrees of up (cos 0.99). */
+static bool level_edge(const cb_ctx_t *c, const coll_sweep_hit_t *h)
+{
+    const float nu = v3_finite(h->normal) ? v3_dot(h->normal, c->up) : 0.0f;
+    return nu >= 0.99f && nu >= c->body->cos_floor_max_angle;
+}
+
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
  * of the drop's length along up; what it meets is the first contact (drop_past_side). */
 static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
@@ -712,7 +719,13 @@ again:;
              * Ahead across up: the velocity's part along up (a body lifted in the step,
              * landing, climbing) says nothing about which side of the foot a contact lies
              * on; in s42 l217 +2.25 m/s along up made that first ramp's edge, behind the foot
-             * across up, count as ahead. */
+             * across up, count as ahead. From a contact ahead, the slide may also meet a
+             * nearly level edge (its normal within 8 degrees of up) leaning the same way as
+             * the first contact, not ahead of the motion: neither a face nor edge_across, but
+             * the ball rests on it from above as on a face. Past a slab's top edge ahead the
+             * slide met a tile's edge 53 mm over the floor (0.996 along up); the rule gave up
+             * and the foot stood on the floor, 52.5 mm under the ball resting on both (soak
+             * s52 l244). */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
@@ -721,7 +734,11 @@ again:;
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
-                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1))) {
+                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) ||
+                 (ahead && level_edge(c, &h1p)))) {
+                /* (a nearly level edge counted as a face: the ball rests at its level) */
+                if (!floor_face(c, &h1p) && !edge_across(c, &h1p, &h1))
+                    d1p -= r * (1.0f - v3_dot(h1p.normal, up));
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
