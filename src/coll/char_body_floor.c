@@ -176,7 +176,8 @@ static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll
            v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
 }
 
-/* A walkable contact nearly level: its normal within 8 degrees of up (cos 0.99). */
+/* A walkable contact nearly level: its normal within 8 degrees of up (cos 0.99). The ball
+ * resting on it hangs at most r (1 - 0.99), a hundredth of a radius, under it. */
 static bool level_edge(const cb_ctx_t *c, const coll_sweep_hit_t *h)
 {
     const float nu = v3_finite(h->normal) ? v3_dot(h->normal, c->up) : 0.0f;
@@ -728,17 +729,28 @@ again:;
              * s52 l244). */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
+            bool level = false; /* counted as a nearly level edge (level_edge), not a face */
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
                              !(v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f)
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
-                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) ||
-                 (ahead && level_edge(c, &h1p)))) {
-                /* (a nearly level edge counted as a face: the ball rests at its level) */
-                if (!floor_face(c, &h1p) && !edge_across(c, &h1p, &h1))
-                    d1p -= r * (1.0f - v3_dot(h1p.normal, up));
+                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) || (level = ahead && level_edge(c, &h1p)))) {
+                /* A nearly level edge counts as the face it bounds: the foot stands at its
+                 * level. d1p is the drop along up of the slid ball, moved across up to where
+                 * the slide met the edge; resting there on the edge its lowest point, where
+                 * the foot would stand, is r (1 - n.up) under it. The body is not moved
+                 * across: its own ball, at the foot, rests on the same piece elsewhere, under
+                 * it by r - sqrt(r^2 - l^2) for l its distance across up from the piece, not
+                 * by the slid ball's sag (s52 l244: the slid ball 54 mm from the tile's far
+                 * edge sags 2.35 mm; at the foot, 35 mm from the tile's corner, the checker's
+                 * ball rests 0.95 mm under the tile's top; without the raise the foot stood
+                 * 1.58 mm under it). The edge's level is what a foot on that face (a tile's
+                 * top) stands at and the highest any ball resting on the edge reaches: the
+                 * raise never puts the foot under a ball resting on the edge, and over the
+                 * slid ball's rest by at most a hundredth of a radius. */
+                if (level) d1p -= r * (1.0f - v3_dot(h1p.normal, up));
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
