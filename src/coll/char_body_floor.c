@@ -176,12 +176,12 @@ static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll
            v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
 }
 
-/* A walkable contact nearly level: its normal within 8 degrees of up (cos 0.99). The ball
- * resting on it hangs at most r (1 - 0.99), a hundredth of a radius, under it. */
+/* A walkable contact nearly level: its normal within asin sqrt 0.1 = 18 degrees of up, the
+ * bound of a nearly level first contact (level_off, drop_off_level: n.up^2 >= 0.9). */
 static bool level_edge(const cb_ctx_t *c, const coll_sweep_hit_t *h)
 {
     const float nu = v3_finite(h->normal) ? v3_dot(h->normal, c->up) : 0.0f;
-    return nu >= 0.99f && nu >= c->body->cos_floor_max_angle;
+    return nu * nu >= 0.9f && nu >= c->body->cos_floor_max_angle && nu > 0.0f;
 }
 
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
