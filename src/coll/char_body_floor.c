@@ -721,12 +721,13 @@ again:;
              * landing, climbing) says nothing about which side of the foot a contact lies
              * on; in s42 l217 +2.25 m/s along up made that first ramp's edge, behind the foot
              * across up, count as ahead. From a contact ahead, the slide may also meet a
-             * nearly level edge (its normal within 8 degrees of up) leaning the same way as
-             * the first contact, not ahead of the motion: neither a face nor edge_across, but
-             * the ball rests on it from above as on a face. Past a slab's top edge ahead the
-             * slide met a tile's edge 53 mm over the floor (0.996 along up); the rule gave up
-             * and the foot stood on the floor, 52.5 mm under the ball resting on both (soak
-             * s52 l244). */
+             * nearly level edge (level_edge) leaning the same way as the first contact, not
+             * ahead of the motion: neither a face nor edge_across, but the ball rests on it
+             * from above as on a face. Past a slab's top edge ahead the slide crossed a tile
+             * and met its far edge, 53 mm over the floor (0.996 along up), or, from the foot
+             * a few centimetres further on, the far corner of the tile beside it, 61 mm over
+             * the floor (0.987); the rule gave up and the foot stood on the floor, 50-52 mm
+             * under the ball resting on the slab's edge and the tiles (soak s52 l244). */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             bool level = false; /* counted as a nearly level edge (level_edge), not a face */
@@ -746,10 +747,11 @@ again:;
                  * by the slid ball's sag (s52 l244: the slid ball 54 mm from the tile's far
                  * edge sags 2.35 mm; at the foot, 35 mm from the tile's corner, the checker's
                  * ball rests 0.95 mm under the tile's top; without the raise the foot stood
-                 * 1.58 mm under it). The edge's level is what a foot on that face (a tile's
-                 * top) stands at and the highest any ball resting on the edge reaches: the
-                 * raise never puts the foot under a ball resting on the edge, and over the
-                 * slid ball's rest by at most a hundredth of a radius. */
+                 * 1.58 mm under it; the slid ball on the other tile's corner, 0.987 along up,
+                 * sags 8.5 mm). The edge's level is what a foot on that face (a tile's top)
+                 * stands at and the highest any ball resting on the edge reaches: the raise
+                 * never puts the foot under a ball resting on the edge, and over the slid
+                 * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
                 if (level) d1p -= r * (1.0f - v3_dot(h1p.normal, up));
                 b0 = b0p;
                 h1 = h1p;
