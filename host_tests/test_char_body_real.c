@@ -1861,6 +1861,93 @@ static void test_oa_dm5_hole_among_floor_pieces(void)
     TEST_ASSERT_TRUE(lowest >= -1.024f - 0.005f);
 }
 
+/* ---- a tile's far edge met past a slab's edge ahead ---- */
+
+/* Soak s52 l244 (generator 2), four pieces around the foot, exact (the room floor a box): a
+ * slab 0.46 m high (its top edge 0.29 m ahead of the foot, rotated 5 degrees), and behind
+ * and beside the foot two tiles, 61 and 53 mm high, with a 1.4 mm crack between them, their
+ * near corners 25 and 35 mm from the foot across up, and a third tile 53 mm high behind the
+ * higher one (without it the step went otherwise: not traced). r 0.64, walking at 4.9 m/s
+ * along -z; the first step lifts the body onto the slab's edge, the second is the one. The crack rule's
+ * ball rests on the slab's edge ahead, leaning back towards the foot (+z); slid down past it
+ * (drop_past_side) it crosses the lower tile and meets its far edge, 0.996 along up, leaning
+ * +z too: neither a floor's face nor an edge across the groove, so the rule gave up and the
+ * foot stood on the floor, 52.5 mm under the ball resting on the slab's edge and the two
+ * tiles' corners. The ball at the foot rests on the lower tile's corner 0.95 mm under its
+ * top (r - sqrt(r^2 - l^2), l 35 mm); the oracle allows 1 mm more. Counted as the face it
+ * bounds but left at the slid ball's rest, 54 mm from that edge (2.35 mm under it), the
+ * foot stood 1.58 mm under the ball's rest. */
+static const float s52_l244_tris[][9] = {
+    {16.0367712f, 0.0f, 14.7313729f, 16.0367712f, 0.053482879f, 14.7313729f, 16.0856555f, 0.053482879f, 14.1534999f},
+    {16.0367712f, 0.0f, 14.7313729f, 16.0856555f, 0.053482879f, 14.1534999f, 16.0856555f, 0.0f, 14.1534999f},
+    {16.6146442f, 0.0f, 14.7802572f, 16.6635285f, 0.0f, 14.2023842f, 16.6635285f, 0.053482879f, 14.2023842f},
+    {16.6146442f, 0.0f, 14.7802572f, 16.6635285f, 0.053482879f, 14.2023842f, 16.6146442f, 0.053482879f, 14.7802572f},
+    {16.0367712f, 0.0f, 14.7313729f, 16.0856555f, 0.0f, 14.1534999f, 16.6635285f, 0.0f, 14.2023842f},
+    {16.0367712f, 0.0f, 14.7313729f, 16.6635285f, 0.0f, 14.2023842f, 16.6146442f, 0.0f, 14.7802572f},
+    {16.0367712f, 0.053482879f, 14.7313729f, 16.6146442f, 0.053482879f, 14.7802572f, 16.6635285f, 0.053482879f, 14.2023842f},
+    {16.0367712f, 0.053482879f, 14.7313729f, 16.6635285f, 0.053482879f, 14.2023842f, 16.0856555f, 0.053482879f, 14.1534999f},
+    {16.0367712f, 0.0f, 14.7313729f, 16.6146442f, 0.0f, 14.7802572f, 16.6146442f, 0.053482879f, 14.7802572f},
+    {16.0367712f, 0.0f, 14.7313729f, 16.6146442f, 0.053482879f, 14.7802572f, 16.0367712f, 0.053482879f, 14.7313729f},
+    {16.0856555f, 0.0f, 14.1534999f, 16.0856555f, 0.053482879f, 14.1534999f, 16.6635285f, 0.053482879f, 14.2023842f},
+    {16.0856555f, 0.0f, 14.1534999f, 16.6635285f, 0.053482879f, 14.2023842f, 16.6635285f, 0.0f, 14.2023842f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.0868126f, 0.0610018559f, 14.1398219f, 16.1356969f, 0.0610018559f, 13.5619489f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.1356969f, 0.0610018559f, 13.5619489f, 16.1356969f, 0.0f, 13.5619489f},
+    {16.6646856f, 0.0f, 14.1887063f, 16.7135699f, 0.0f, 13.6108333f, 16.7135699f, 0.0610018559f, 13.6108333f},
+    {16.6646856f, 0.0f, 14.1887063f, 16.7135699f, 0.0610018559f, 13.6108333f, 16.6646856f, 0.0610018559f, 14.1887063f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.1356969f, 0.0f, 13.5619489f, 16.7135699f, 0.0f, 13.6108333f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.7135699f, 0.0f, 13.6108333f, 16.6646856f, 0.0f, 14.1887063f},
+    {16.0868126f, 0.0610018559f, 14.1398219f, 16.6646856f, 0.0610018559f, 14.1887063f, 16.7135699f, 0.0610018559f, 13.6108333f},
+    {16.0868126f, 0.0610018559f, 14.1398219f, 16.7135699f, 0.0610018559f, 13.6108333f, 16.1356969f, 0.0610018559f, 13.5619489f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.6646856f, 0.0f, 14.1887063f, 16.6646856f, 0.0610018559f, 14.1887063f},
+    {16.0868126f, 0.0f, 14.1398219f, 16.6646856f, 0.0610018559f, 14.1887063f, 16.0868126f, 0.0610018559f, 14.1398219f},
+    {16.1356969f, 0.0f, 13.5619489f, 16.1356969f, 0.0610018559f, 13.5619489f, 16.7135699f, 0.0610018559f, 13.6108333f},
+    {16.1356969f, 0.0f, 13.5619489f, 16.7135699f, 0.0610018559f, 13.6108333f, 16.7135699f, 0.0f, 13.6108333f},
+    {16.6783635f, 0.0f, 14.1898633f, 16.6783635f, 0.053482879f, 14.1898633f, 16.7272479f, 0.053482879f, 13.6119903f},
+    {16.6783635f, 0.0f, 14.1898633f, 16.7272479f, 0.053482879f, 13.6119903f, 16.7272479f, 0.0f, 13.6119903f},
+    {17.2562365f, 0.0f, 14.2387477f, 17.3051209f, 0.0f, 13.6608747f, 17.3051209f, 0.053482879f, 13.6608747f},
+    {17.2562365f, 0.0f, 14.2387477f, 17.3051209f, 0.053482879f, 13.6608747f, 17.2562365f, 0.053482879f, 14.2387477f},
+    {16.6783635f, 0.0f, 14.1898633f, 16.7272479f, 0.0f, 13.6119903f, 17.3051209f, 0.0f, 13.6608747f},
+    {16.6783635f, 0.0f, 14.1898633f, 17.3051209f, 0.0f, 13.6608747f, 17.2562365f, 0.0f, 14.2387477f},
+    {16.6783635f, 0.053482879f, 14.1898633f, 17.2562365f, 0.053482879f, 14.2387477f, 17.3051209f, 0.053482879f, 13.6608747f},
+    {16.6783635f, 0.053482879f, 14.1898633f, 17.3051209f, 0.053482879f, 13.6608747f, 16.7272479f, 0.053482879f, 13.6119903f},
+    {16.6783635f, 0.0f, 14.1898633f, 17.2562365f, 0.0f, 14.2387477f, 17.2562365f, 0.053482879f, 14.2387477f},
+    {16.6783635f, 0.0f, 14.1898633f, 17.2562365f, 0.053482879f, 14.2387477f, 16.6783635f, 0.053482879f, 14.1898633f},
+    {16.7272479f, 0.0f, 13.6119903f, 16.7272479f, 0.053482879f, 13.6119903f, 17.3051209f, 0.053482879f, 13.6608747f},
+    {16.7272479f, 0.0f, 13.6119903f, 17.3051209f, 0.053482879f, 13.6608747f, 17.3051209f, 0.0f, 13.6608747f},
+    {17.82334f, 0.0f, 13.195107f, 17.82334f, 0.462632209f, 13.195107f, 15.7824738f, 0.462632209f, 13.3810403f},
+    {17.82334f, 0.0f, 13.195107f, 15.7824738f, 0.462632209f, 13.3810403f, 15.7824738f, 0.0f, 13.3810403f},
+    {17.82334f, 0.0f, 13.195107f, 15.7824738f, 0.0f, 13.3810403f, 15.4505845f, 0.0f, 9.73811273f},
+    {17.82334f, 0.0f, 13.195107f, 15.4505845f, 0.0f, 9.73811273f, 17.4914507f, 0.0f, 9.55217939f},
+    {17.82334f, 0.462632209f, 13.195107f, 17.4914507f, 0.462632209f, 9.55217939f, 15.4505845f, 0.462632209f, 9.73811273f},
+    {17.82334f, 0.462632209f, 13.195107f, 15.4505845f, 0.462632209f, 9.73811273f, 15.7824738f, 0.462632209f, 13.3810403f},
+    {17.82334f, 0.0f, 13.195107f, 17.4914507f, 0.0f, 9.55217939f, 17.4914507f, 0.462632209f, 9.55217939f},
+    {17.82334f, 0.0f, 13.195107f, 17.4914507f, 0.462632209f, 9.55217939f, 17.82334f, 0.462632209f, 13.195107f},
+    {15.7824738f, 0.0f, 13.3810403f, 15.7824738f, 0.462632209f, 13.3810403f, 15.4505845f, 0.462632209f, 9.73811273f},
+    {15.7824738f, 0.0f, 13.3810403f, 15.4505845f, 0.462632209f, 9.73811273f, 15.4505845f, 0.0f, 9.73811273f}
+};
+
+static void test_tile_edge_past_slab_edge_ahead(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(16.0f, -0.5f, 13.0f), cb_vec(4.0f, 0.5f, 4.0f), 0.0f); /* the room floor, top at 0 */
+    geo_tris(s52_l244_tris, sizeof s52_l244_tris / sizeof s52_l244_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0x1.0b23ecp+4f, 0x1.f23f68p-5f, 0x1.bb798ep+3f); /* the soak body's state (owner = foot) */
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.45cc98p-1f, 0x1.8b1bcap+1f, 0x1.c8c156p-1f, 0x1.47551ap+0f,
+                                        0x1.c571c4p-1f, 0x1.930606p+5f, 0x1.37d1dap+6f, 4, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(-0x1.03fb6ap-1f, 0.0f, -0x1.38e93ep+2f));
+    body.input_velocity = cb_vec(-0x1.03fb6ap-1f, 0.0f, -0x1.38e93ep+2f);
+    CB_STEP(&body, 0x1.3fac7ep-5f);
+    CB_STEP(&body, 0x1.111112p-6f);
+    const float top = 0.053482879f, sag = 0.00095f; /* the lower tile's top; the ball's sag at the foot */
+    cb_report("tile edge past a slab's edge ahead (s52 l244): grounded foot (tile top 0.0535)", pos.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y >= top - sag - 0.001f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -1895,6 +1982,7 @@ int main(void)
     RUN_TEST(test_hole_among_four_tile_corners);
     RUN_TEST(test_hole_mouth_between_three_tiles);
     RUN_TEST(test_oa_dm5_hole_among_floor_pieces);
+    RUN_TEST(test_tile_edge_past_slab_edge_ahead);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

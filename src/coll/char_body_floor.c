@@ -176,6 +176,14 @@ static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll
            v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
 }
 
+/* A walkable contact nearly level: its normal within asin sqrt 0.1 = 18 degrees of up, the
+ * bound of a nearly level first contact (level_off, drop_off_level: n.up^2 >= 0.9). */
+static bool level_edge(const cb_ctx_t *c, const coll_sweep_hit_t *h)
+{
+    const float nu = v3_finite(h->normal) ? v3_dot(h->normal, c->up) : 0.0f;
+    return nu * nu >= 0.9f && nu >= c->body->cos_floor_max_angle && nu > 0.0f;
+}
+
 /* The ball (lifted off its contacts by lift) slid along down (sinking: -dot(down, up) > 0.1) by the rest
  * of the drop's length along up; what it meets is the first contact (drop_past_side). */
 static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t lift, fm_vec3_t down,
@@ -691,16 +699,39 @@ again:;
              * Ahead across up: the velocity's part along up (a body lifted in the step,
              * landing, climbing) says nothing about which side of the foot a contact lies
              * on; in s42 l217 +2.25 m/s along up made that first ramp's edge, behind the foot
-             * across up, count as ahead. */
+             * across up, count as ahead. From a contact ahead, the slide may also meet a
+             * nearly level edge (level_edge) leaning the same way as the first contact, not
+             * ahead of the motion: neither a face nor edge_across, but the ball rests on it
+             * from above as on a face. Past a slab's top edge ahead the slide crossed a tile
+             * and met its far edge, 53 mm over the floor (0.996 along up), or, from the foot
+             * a few centimetres further on, the far corner of the tile beside it, 61 mm over
+             * the floor (0.987); the rule gave up and the foot stood on the floor, 50-52 mm
+             * under the ball resting on the slab's edge and the tiles (soak s52 l244). */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
+            bool level = false; /* counted as a nearly level edge (level_edge), not a face */
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
                              !(v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f)
                        : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
                              (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
                               drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
-                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1))) {
+                (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) || (level = ahead && level_edge(c, &h1p)))) {
+                /* A nearly level edge counts as the face it bounds: the foot stands at its
+                 * level. d1p is the drop along up of the slid ball, moved across up to where
+                 * the slide met the edge; resting there on the edge its lowest point, where
+                 * the foot would stand, is r (1 - n.up) under it. The body is not moved
+                 * across: its own ball, at the foot, rests on the same piece elsewhere, under
+                 * it by r - sqrt(r^2 - l^2) for l its distance across up from the piece, not
+                 * by the slid ball's sag (s52 l244: the slid ball 54 mm from the tile's far
+                 * edge sags 2.35 mm; at the foot, 35 mm from the tile's corner, the checker's
+                 * ball rests 0.95 mm under the tile's top; without the raise the foot stood
+                 * 1.58 mm under it; the slid ball on the other tile's corner, 0.987 along up,
+                 * sags 8.5 mm). The edge's level is what a foot on that face (a tile's top)
+                 * stands at and the highest any ball resting on the edge reaches: the raise
+                 * never puts the foot under a ball resting on the edge, and over the slid
+                 * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
+                if (level) d1p -= r * (1.0f - v3_dot(h1p.normal, up));
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
