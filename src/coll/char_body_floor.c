@@ -176,6 +176,30 @@ static bool edge_across(const cb_ctx_t *c, const coll_sweep_hit_t *h, const coll
            v3_dot(v3_reject(h->normal, c->up), v3_reject(from->normal, c->up)) < 0.0f;
 }
 
+/**
+ * The crack rule's roll (the ball at b1, moved by way) along the tangent plane of the contact
+ * h1 it rests on, lifted off it by a fifth of the skin: the ball stays above that plane, so
+ * the faces behind the edge it rolls off (the tread and riser of a nosing, a crack's top and
+ * side) lie under it and need no exact test (coll_gather_above_t, every candidate). The
+ * clearance is measured, not assumed (after drop_past_side the ball may sit closer), at the
+ * roll's start and end, less an allowance far above the rounding of these dot products
+ * (b1 - p is a difference of nearby points, exact or within half an ulp of a radius). False
+ * when it leaves no room: the plain sweep.
+ */
+static bool roll_above(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t way, const coll_sweep_hit_t *h1,
+                       coll_gather_above_t *out)
+{
+    const fm_vec3_t n = h1->normal;
+    const float hs = v3_dot(v3_sub(b1, h1->point), n) - c->radius, he = hs + v3_dot(way, n);
+    const float room = f_min(hs, he) - 1e-6f * (c->radius + fabsf(way.x) + fabsf(way.y) + fabsf(way.z));
+    if (!(room > 0.0f)) return false;
+    out->n = n;
+    out->p = h1->point;
+    out->margin = 0.49f * room;
+    out->all = true;
+    return true;
+}
+
 /* A walkable contact nearly level: its normal within asin sqrt 0.1 = 18 degrees of up, the
  * bound of a nearly level first contact (level_off, drop_off_level: n.up^2 >= 0.9). */
 static bool level_edge(const cb_ctx_t *c, const coll_sweep_hit_t *h)
@@ -198,7 +222,17 @@ static bool slide_down(const cb_ctx_t *c, fm_vec3_t *b0, float len, fm_vec3_t li
     if (!(sink > 0.1f)) return false;
     fm_vec3_t way = v3_scale(down, rest / sink);
     coll_sweep_hit_t h;
-    if (!cb_sweep(c, bc, r, 0.0f, way, &h) || !isfinite(h.t) || !v3_finite(h.normal) || !v3_finite(h.point))
+    /* The ball slides along the tangent plane of the contact it was lifted off (h1: the
+     * side it slid past; in a groove, the wall it slid against): lifted off that plane by
+     * a fifth of the skin, it stays above it, so what lies under it (the face slid along
+     * and everything behind it) needs no exact test (roll_above: the clearance measured at
+     * both ends). Its sweep runs up to ten times the drop across up (sink 0.1): on oa_dm5
+     * (soak seed 1) 7 left the step's gathered box, one a step of 350k x86 instructions,
+     * 262k of them this sweep's exact tests on the scene (docs/BENCHMARKS.md, perf33). */
+    coll_gather_above_t plane;
+    if (!(roll_above(c, bc, way, h1, &plane) ? cb_sweep_above(c, bc, r, 0.0f, way, &plane, &h)
+                                             : cb_sweep(c, bc, r, 0.0f, way, &h)) ||
+        !isfinite(h.t) || !v3_finite(h.normal) || !v3_finite(h.point))
         return false;
     float t = h.t > 0.0f ? h.t : 0.0f;
     *b0 = v3_madd(*b0, v3_reject(way, up), t); /* where the ball went across up */
@@ -381,30 +415,6 @@ static bool held_at(float contact, float reach, float gap, fm_vec3_t normal, fm_
     out->id = h1->id;
     out->instance = h1->instance;
     if (far_out) *far_out = far; /* the ball's other contact (its roll's end) */
-    return true;
-}
-
-/**
- * The crack rule's roll (the ball at b1, moved by way) along the tangent plane of the contact
- * h1 it rests on, lifted off it by a fifth of the skin: the ball stays above that plane, so
- * the faces behind the edge it rolls off (the tread and riser of a nosing, a crack's top and
- * side) lie under it and need no exact test (coll_gather_above_t, every candidate). The
- * clearance is measured, not assumed (after drop_past_side the ball may sit closer), at the
- * roll's start and end, less an allowance far above the rounding of these dot products
- * (b1 - p is a difference of nearby points, exact or within half an ulp of a radius). False
- * when it leaves no room: the plain sweep.
- */
-static bool roll_above(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t way, const coll_sweep_hit_t *h1,
-                       coll_gather_above_t *out)
-{
-    const fm_vec3_t n = h1->normal;
-    const float hs = v3_dot(v3_sub(b1, h1->point), n) - c->radius, he = hs + v3_dot(way, n);
-    const float room = f_min(hs, he) - 1e-6f * (c->radius + fabsf(way.x) + fabsf(way.y) + fabsf(way.z));
-    if (!(room > 0.0f)) return false;
-    out->n = n;
-    out->p = h1->point;
-    out->margin = 0.49f * room;
-    out->all = true;
     return true;
 }
 
