@@ -716,16 +716,23 @@ again:;
              * and met its far edge, 53 mm over the floor (0.996 along up), or, from the foot
              * a few centimetres further on, the far corner of the tile beside it, 61 mm over
              * the floor (0.987); the rule gave up and the foot stood on the floor, 50-52 mm
-             * under the ball resting on the slab's edge and the tiles (soak s52 l244). */
+             * under the ball resting on the slab's edge and the tiles (soak s52 l244). A
+             * nearly level edge ahead is moved off and dropped (drop_off_level) as one
+             * behind, under the same test of where the drop lands:
+             * walking into a slab's side (r 0.47) over a 2 cm crack between tiles 0.25 m
+             * high, the slab's top edge 0.38 m over the tiles and 11 mm across up from the
+             * foot, ahead, the ball rested on it (0.9997 along up), too level to slide
+             * down; the rule gave up, the snap to the room floor under the crack stopped
+             * on that edge, and the foot stood 161 mm under the tiles (soak s54 l58). Moved
+             * off the edge away from the slab, the ball met the tile behind the foot. */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             bool level = false; /* counted as a nearly level edge (level_edge), not a face */
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
-                (ahead ? drop_past_side(c, &b0p, len, &h1p, &d1p) &&
-                             !(v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f)
-                       : drop_past_side(c, &b0p, len, &h1p, &d1p) ||
-                             (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
-                              drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
+                (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
+                 (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
+                  drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
+                !(ahead && v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f) &&
                 (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) || (level = ahead && level_edge(c, &h1p)))) {
                 /* A nearly level edge counts as the face it bounds: the foot stands at its
                  * level. d1p is the drop along up of the slid ball, moved across up to where
