@@ -785,7 +785,7 @@ again:;
                  * stands at and the highest any ball resting on the edge reaches: the raise
                  * never puts the foot under a ball resting on the edge, and over the slid
                  * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
-                if (level) d1p -= r * (1.0f - v3_dot(h1p.normal, up));
+                if (level && !off_ahead) d1p -= r * (1.0f - v3_dot(h1p.normal, up)); /* (off_ahead: exact, above) */
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
