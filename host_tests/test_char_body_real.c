@@ -1948,6 +1948,39 @@ static void test_tile_edge_past_slab_edge_ahead(void)
     TEST_ASSERT_TRUE(pos.y >= top - sag - 0.001f);
 }
 
+/* The same walk two steps on (soak s52 l244, frame 1085): the foot 0.19 m off the tiles
+ * towards the slab, whose top edge, 0.13 m ahead, is 0.98 along up: a ledge 0.41 m over the
+ * tiles (no ball rests on both), too level for drop_past_side to slide down. The rule gave
+ * up and the foot stood on the floor, 24.2 mm under the ball at the foot resting on the
+ * 53 mm tile's corner (0.191 m away; the oracle's rest). The body's ball at the foot clears
+ * every tile behind at 34.6 mm (the 61 mm tile's edge, 0.182 m away); foot35's tried
+ * fallback stood it at that tile's level, 61 mm (hovering). */
+static void test_slab_edge_ahead_too_level_to_slide(void)
+{
+    cb_world_reset();
+    cb_geo_box(cb_vec(16.0f, -0.5f, 13.0f), cb_vec(4.0f, 0.5f, 4.0f), 0.0f); /* the room floor, top at 0 */
+    geo_tris(s52_l244_tris, sizeof s52_l244_tris / sizeof s52_l244_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0x1.0b23ecp+4f, 0x1.f23f68p-5f, 0x1.bb798ep+3f); /* the soak body's state (owner = foot) */
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.45cc98p-1f, 0x1.8b1bcap+1f, 0x1.c8c156p-1f, 0x1.47551ap+0f,
+                                        0x1.c571c4p-1f, 0x1.930606p+5f, 0x1.37d1dap+6f, 4, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(-0x1.03fb6ap-1f, 0.0f, -0x1.38e93ep+2f));
+    body.input_velocity = cb_vec(-0x1.03fb6ap-1f, 0.0f, -0x1.38e93ep+2f);
+    CB_STEP(&body, 0x1.3fac7ep-5f);
+    for (int i = 0; i < 3; i++) CB_STEP(&body, 0x1.111112p-6f);
+    /* the ball at the foot on the 53 mm tile's corner, l 0.1908 m: 24.2 mm; on the 61 mm
+     * tile's edge, l 0.1815 m: 34.6 mm */
+    const float r = 0x1.45cc98p-1f, lo = 0.053482879f - (r - sqrtf(r * r - 0.1908f * 0.1908f));
+    cb_report("slab edge ahead too level to slide (s52 l244 frame 1085): grounded foot (rest 0.0242-0.0346)", pos.y,
+              "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y >= lo - 0.001f);
+    TEST_ASSERT_TRUE(pos.y <= 0.0346f + 0.001f); /* not over it: not at the tile's level (61 mm) */
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -1983,6 +2016,7 @@ int main(void)
     RUN_TEST(test_hole_mouth_between_three_tiles);
     RUN_TEST(test_oa_dm5_hole_among_floor_pieces);
     RUN_TEST(test_tile_edge_past_slab_edge_ahead);
+    RUN_TEST(test_slab_edge_ahead_too_level_to_slide);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

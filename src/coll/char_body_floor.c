@@ -298,6 +298,34 @@ static bool drop_off_level(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t across, fm
     return true;
 }
 
+/* Where the body's own ball, at the foot, rests on the pieces drop_off_level found from an
+ * edge ahead (the ball moved a radius across up from that edge, behind the foot): placed on
+ * the floor under the foot (floor_gap below it), its contacts at or below the level found
+ * (level, over the foot; not the edge ahead, higher, in the step zone) and above that floor
+ * are those pieces' nearest parts; resting on one l across up from the foot, the ball's
+ * lowest point is r - sqrt(r^2 - l^2) under it. The highest such rest over the foot, or
+ * false when the ball there touches none of them (it rests on the floor). */
+static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float level, float *rest)
+{
+    const fm_vec3_t up = c->up;
+    const float r = c->radius, tol = cb_len_tol(c, CB_STEP_EPS);
+    coll_contact_t ct[CB_BALL_CONTACTS];
+    const uint32_t n = cb_ball_overlaps(c, v3_madd(foot, up, r - floor_gap), r, ct);
+    bool found = false;
+    *rest = 0.0f;
+    for (uint32_t i = 0; i < n; i++) {
+        const fm_vec3_t d = v3_sub(ct[i].point, foot);
+        const float h = v3_dot(d, up), l2 = v3_len2(v3_reject(d, up));
+        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f) || !(h <= level + tol) ||
+            !(h + floor_gap > tol) || !(l2 < r * r))
+            continue;
+        const float hr = h - (r - sqrtf(r * r - l2));
+        if (!found || hr > *rest) *rest = hr;
+        found = true;
+    }
+    return found;
+}
+
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
 static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
 {
@@ -724,16 +752,32 @@ again:;
              * foot, ahead, the ball rested on it (0.9997 along up), too level to slide
              * down; the rule gave up, the snap to the room floor under the crack stopped
              * on that edge, and the foot stood 161 mm under the tiles (soak s54 l58). Moved
-             * off the edge away from the slab, the ball met the tile behind the foot. */
+             * off the edge away from the slab, the ball met the tile behind the foot; the
+             * body's own ball then rests where rest_at_foot says (below). */
             const fm_vec3_t vel = v3_reject(b->velocity, up);
             const bool ahead = v3_dot(v3_sub(h1.point, foot), vel) > 0.0f;
             bool level = false; /* counted as a nearly level edge (level_edge), not a face */
+            bool moved_off = false; /* moved off a nearly level first contact (drop_off_level) */
+            const bool level_first = n1u * n1u >= 0.9f && v3_len(across) > 0.5f;
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
                 (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
-                 (n1u * n1u >= 0.9f && v3_len(across) > 0.5f &&
-                  drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p))) &&
+                 (level_first &&
+                  (moved_off = drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p)))) &&
                 !(ahead && v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f) &&
                 (floor_face(c, &h1p) || edge_across(c, &h1p, &h1) || (level = ahead && level_edge(c, &h1p)))) {
+                /* Moved off a nearly level edge ahead (too level to slide down past: soak s52
+                 * l244, a slab's top edge 0.98 along up 0.13 m ahead of the foot, 0.41 m over
+                 * tiles 0.19 m behind it): the piece found behind holds the ball, the edge
+                 * ahead is a ledge in the step zone (no ball rests on both). The body's own
+                 * ball at the foot rests on that piece's nearest part (rest_at_foot), not at
+                 * the level found a radius across (the tile's top: 36.6 mm over the ball's
+                 * rest at the foot, 24.2 mm up); touching none of it, it rests on the floor. */
+                const bool off_ahead = moved_off && ahead;
+                if (off_ahead) {
+                    float rest = 0.0f;
+                    if (!rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest)) goto hole;
+                    d1p = c->step - rest;
+                }
                 /* A nearly level edge counts as the face it bounds: the foot stands at its
                  * level. d1p is the drop along up of the slid ball, moved across up to where
                  * the slide met the edge; resting there on the edge its lowest point, where
@@ -748,7 +792,7 @@ again:;
                  * stands at and the highest any ball resting on the edge reaches: the raise
                  * never puts the foot under a ball resting on the edge, and over the slid
                  * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
-                if (level) d1p -= r * (1.0f - v3_dot(h1p.normal, up));
+                if (level && !off_ahead) d1p -= r * (1.0f - v3_dot(h1p.normal, up)); /* (off_ahead: exact, above) */
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
