@@ -1353,7 +1353,8 @@ static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, cons
      * plane a ball resting on the piece's top edge sags at most the step tolerance under the
      * edge's level, so standing at that level puts the foot under no ball resting there and
      * over a pit beside the piece hovers at most that far past its edge. The top is met by a
-     * ray along up just inside the face (across it by the gap and two skins). Under an up 15
+     * ray down along up from a step over the face's hit, just inside the face (moved across
+     * up into the piece by the gap and two skins). Under an up 15
      * degrees off y, the foot walked off a tile into a 10.6 mm crack between it and a tile 2.2
      * mm lower, beside a third tile's corner and a block 0.84 m high 0.33 m away; the ray met
      * the lower tile's side 11.7 mm under the foot, the crack rule's drop met the block's top
