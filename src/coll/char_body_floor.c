@@ -1390,9 +1390,42 @@ static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
 static void wall_under_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_ray_hit_t *hit, support_t *s)
 {
     if (!(fabsf(v3_dot(s->normal, c->up)) < 0.5f)) return;
+    const float step_eps = cb_len_tol(c, CB_STEP_EPS);
     support_t w; /* written by ball_held when it returns true: read only then */
-    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, false, true, &w, NULL) && w.gap < s->gap - cb_len_tol(c, CB_STEP_EPS))
-        *s = w;
+    if (ball_held(c, pos, reach, hit, 1e30f, NULL, 0.0f, false, true, &w, NULL)) {
+        if (w.gap < s->gap - step_eps) *s = w;
+        return;
+    }
+    /* The crack rule holds nothing (its ball, dropped from above the step zone, met a taller
+     * piece's edge beside the foot first and never reached the crack), and the face is below
+     * the foot, the foot close to its plane: the piece's top, extended to the foot, is where
+     * the foot stands when it is higher than the face's hit. The foot is gap * n.up from the
+     * face's plane (the ray is along up through the foot); within sqrt(2 r step_eps) of that
+     * plane a ball resting on the piece's top edge sags at most the step tolerance under the
+     * edge's level, so standing at that level puts the foot under no ball resting there and
+     * over a pit beside the piece hovers at most that far past its edge. The top is met by a
+     * ray down along up from a step over the face's hit, just inside the face (moved across
+     * up into the piece by the gap and two skins). Under an up 15
+     * degrees off y, the foot walked off a tile into a 10.6 mm crack between it and a tile 2.2
+     * mm lower, beside a third tile's corner and a block 0.84 m high 0.33 m away; the ray met
+     * the lower tile's side 11.7 mm under the foot, the crack rule's drop met the block's top
+     * edge first and slid past it onto the third tile 0.6 m away, which held nothing, and the
+     * body slid down the side, its foot 8.5 mm under the tile tops around it (soak s55 l203). */
+    const float nu = v3_dot(hit->normal, c->up), d = s->gap * nu;
+    const fm_vec3_t across = v3_reject(hit->normal, c->up);
+    const float al = v3_len(across);
+    if (!(s->gap > 0.0f) || !(nu > 0.0f) || !(d * d <= 2.0f * c->radius * step_eps) || !(al > 1e-3f)) return;
+    const float h = s->gap + c->step;
+    coll_ray_hit_t top;
+    if (!cb_ray(c, v3_madd(v3_madd(hit->point, across, -(s->gap + 2.0f * c->skin) / al), c->up, h),
+                v3_scale(c->up, -1.0f), h + 4.0f * c->skin, &top) ||
+        !v3_finite(top.normal) || !v3_finite(top.point))
+        return;
+    const float tu = v3_dot(top.normal, c->up);
+    if (!(tu >= c->body->cos_floor_max_angle)) return;
+    const float g = v3_dot(v3_sub(cb_foot(c, pos), top.point), top.normal) / tu; /* > 0: below the foot */
+    if (g < s->gap - step_eps && g > -c->step)
+        *s = (support_t){true, false, g, top.normal, top.point, top.id, top.instance};
 }
 
 /**
