@@ -266,6 +266,58 @@ static void test_checker_pushout_depth_ignores_the_allowance(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
 }
 
+/* The recover pushes out of a static collider body too, so the push-out allowance counts
+ * it (soak s58 l109: an airborne body 0.56 mm into a static capsule body, no triangle
+ * within reach, was pushed 1.06 mm out and reported velocity ~0: the checker sized the
+ * push-out by the triangles alone, 0, and failed the step 62 mm/s off). A moving body or
+ * one on a layer the body does not read adds nothing. */
+static void test_checker_pushout_depth_counts_static_bodies(void)
+{
+    TEST_ASSERT_EQUAL_INT(0, soak_level_generate(&lvl, 3));
+    lvl.nwtris = 0; /* no triangle: only the body */
+    lvl.nbodies = 1;
+    static char_body_t body;
+    fm_vec3_t owner = {{0.0f, 0.0f, 0.0f}};
+    char_body_init(&body, &owner);
+    char_body_settings_t s = CHAR_BODY_SETTINGS_DEFAULT;
+    s.center_offset.y = 1.0f;
+    s.coll_types = COLL_TYPE_MESH | COLL_TYPE_BODY;
+    char_body_configure(&body, &s);
+    soak_capsule_t full, sweep;
+    soak_body_capsules(&body, &full, &sweep);
+    soak_lbody_t *lb = &lvl.bodies[0];
+    memset(lb, 0, sizeof *lb);
+    lb->body.shape = COLL_SHAPE_SPHERE;
+    lb->body.half_extents = (fm_vec3_t){{0.3f, 0.3f, 0.3f}};
+    lb->body.xf.rot.w = 1.0f;
+    lb->body.xf.scale = (fm_vec3_t){{1.0f, 1.0f, 1.0f}};
+    lb->body.write_mask = 0x01;
+    lb->body.id = 101;
+    /* beside the sweep capsule's middle, 0.56 mm into it */
+    double gap = sweep.r + 0.3 - 0.00056;
+    lb->body.xf.pos = (fm_vec3_t){{(float)(0.5 * (sweep.a[0] + sweep.b[0]) + gap),
+                                   (float)(0.5 * (sweep.a[1] + sweep.b[1])),
+                                   (float)(0.5 * (sweep.a[2] + sweep.b[2]))}};
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 0.00056, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    /* a moving body exempts the step instead (mover_near): not a push-out size */
+    lb->moving = true;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    lb->moving = false;
+    /* on a layer the body does not read: nothing to push out of */
+    lb->body.write_mask = (uint8_t)~body.settings.read_mask;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    lb->body.write_mask = 0x01;
+    /* nor when the body does not collide with collider bodies at all */
+    s.coll_types = COLL_TYPE_MESH;
+    char_body_configure(&body, &s);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+    s.coll_types = COLL_TYPE_MESH | COLL_TYPE_BODY;
+    char_body_configure(&body, &s);
+    /* deep in it: capped at SOAK_PEN_TOL as for a triangle */
+    lb->body.xf.pos.x -= 0.01f;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, SOAK_PEN_TOL, soak_check_pushout_depth(&lvl, &body.settings, &sweep));
+}
+
 /* ---------------------------------------------------------------- the behaviour oracles */
 
 static soak_sim_t osim;
@@ -1553,6 +1605,7 @@ int main(void)
     RUN_TEST(test_checker_wedged_by_the_game);
     RUN_TEST(test_checker_allowance_follows_the_seed_rule);
     RUN_TEST(test_checker_pushout_depth_ignores_the_allowance);
+    RUN_TEST(test_checker_pushout_depth_counts_static_bodies);
     RUN_TEST(test_oracle_direction);
     RUN_TEST(test_oracle_progress);
     RUN_TEST(test_oracle_progress_at_a_ramp_crest);

@@ -188,12 +188,17 @@ double soak_check_static_pen(const soak_level_t *lvl, const char_body_settings_t
  * penetration (r - distance) of cap into a seen static triangle, the walkable allowance
  * not taken off (the recover does not know the seed's rule: a sweep capsule 0.8 mm into
  * a walkable slope that the allowance tolerates is pushed 1.3 mm out along its normal,
- * soak s25 l6), at most SOAK_PEN_TOL (deeper, beyond the allowance, the step is exempt;
- * within it, no more push-out is tolerated than for a real overlap). */
+ * soak s25 l6), or into a seen static collider body (sphere, box, capsule: the recover
+ * pushes out of every contact, a body's too; an airborne body 0.56 mm into a static
+ * capsule body was pushed 1.06 mm out, soak s58 l109), at most SOAK_PEN_TOL (deeper,
+ * beyond the allowance, the step is exempt; within it, no more push-out is tolerated than
+ * for a real overlap). Moving bodies are not counted: within 0.5 m they exempt the step. */
 double soak_check_pushout_depth(const soak_level_t *lvl, const char_body_settings_t *s, const soak_capsule_t *cap)
 {
     double deepest;
     static_pen_scan(lvl, s, cap, NULL, NULL, &deepest);
+    double body = soak_check_body_pen(lvl, s, cap);
+    if (body > deepest) deepest = body;
     return deepest < SOAK_PEN_TOL ? deepest : SOAK_PEN_TOL;
 }
 
