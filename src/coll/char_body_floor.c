@@ -1750,9 +1750,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             }
         }
         /* held by the crack rule alone, over a floor the foot ray found out of reach below */
-        bool edges_over_floor = false;
+        bool edges_over_floor = false, alone = false;
         if (!s.found) {
             ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, false, &s, NULL);
+            alone = s.found;
             edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
@@ -1777,10 +1778,16 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     c->mem->edges_no_room = true;
                 }
                 fits = !s.found || stand_on(c, pos, s.gap, s.normal);
-            } else if (!fits && !found) {
-                /* the crack rule alone held it, no floor in the foot ray's reach at all, and
-                 * no room to be lifted onto its edges: the step is undone, and the step's
-                 * retry and coll_cb_unwedge know why (soak s30 l14) */
+            } else if (!fits && alone) {
+                /* the crack rule alone held it, no floor it falls straight onto (none in the
+                 * foot ray's reach at all, or one floor_below's straight fall cannot reach),
+                 * and no room to be lifted onto its edges: the step is undone, and the
+                 * step's retry and coll_cb_unwedge know why (soak s30 l14). Not only with no
+                 * floor: under an up tilted 7.5 degrees, beside a column's vertical edge
+                 * leaning into the fall, the full ball 66.8 degrees off a block's top corner
+                 * (walkable at 68.2), the room floor 0.44 m under the foot (in the ray's
+                 * reach, out of the airborne one): the straight retry fell 0 m, was kept,
+                 * and the body hung at rest in the air for ever (soak s59 l264) */
                 c->mem->crack_no_floor = true;
             }
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);

@@ -105,8 +105,9 @@ typedef struct {
      *  falling towards that floor: coll_cb_unwedge clears it before the probes it reads it
      *  after. Uninitialised otherwise. */
     bool edges_no_room;
-    /** Set by the floor probe when the crack rule alone, with no floor in the foot ray's
-     *  reach, held the ball on edges it has no room to be lifted onto (the probe failed
+    /** Set by the floor probe when the crack rule alone, with no floor it falls straight
+     *  onto (none in the foot ray's reach, or one a straight fall cannot reach: soak s59
+     *  l264), held the ball on edges it has no room to be lifted onto (the probe failed
      *  there); cleared once per step (char_body_move_and_slide_in). The step's fall-only retry
      *  then slides (and is not kept where that slide stopped dead: soak s44 l175), and
      *  coll_cb_unwedge treats an airborne start as wedged (soak s30 l14). */
