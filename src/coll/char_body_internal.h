@@ -202,23 +202,17 @@ static inline uint32_t cb_overlaps(const cb_ctx_t *c, fm_vec3_t center, coll_con
 
 /** Contacts a ball's overlap query keeps (cb_ball_overlaps: the deepest). */
 #define CB_BALL_CONTACTS 16
-/* Every contact of a ball of `radius` at center (on the gather, else the scene), one per
+/* The contacts of a ball of `radius` at center (on the gather, else the scene), one per
  * point and normal (a level's duplicated triangles and the edges its neighbours share are
- * one contact each: coll_capsule_overlaps_distinct), the deepest max_out kept in out: how
- * many there were in all (may exceed max_out). */
-static inline uint32_t cb_ball_overlaps_total(const cb_ctx_t *c, fm_vec3_t center, float radius, coll_contact_t *out,
-                                              uint32_t max_out)
-{
-    if (c->gather) return coll_gather_capsule_overlaps_distinct(c->gather, center, c->up, radius, 0.0f, out, max_out);
-    return coll_capsule_overlaps_distinct(c->scene, center, c->up, radius, 0.0f, c->body->settings.read_mask,
-                                          c->body->settings.coll_types, out, max_out);
-}
-/* The contacts of a ball (cb_ball_overlaps_total), at most CB_BALL_CONTACTS: the crack
- * rule's and the support tests' look around the bottom ball. */
+ * one contact each: coll_capsule_overlaps_distinct), the deepest CB_BALL_CONTACTS kept:
+ * the crack rule's and the support tests' look around the bottom ball. */
 static inline uint32_t cb_ball_overlaps(const cb_ctx_t *c, fm_vec3_t center, float radius,
                                         coll_contact_t out[CB_BALL_CONTACTS])
 {
-    const uint32_t n = cb_ball_overlaps_total(c, center, radius, out, CB_BALL_CONTACTS);
+    const uint32_t n =
+        c->gather ? coll_gather_capsule_overlaps_distinct(c->gather, center, c->up, radius, 0.0f, out, CB_BALL_CONTACTS)
+                  : coll_capsule_overlaps_distinct(c->scene, center, c->up, radius, 0.0f, c->body->settings.read_mask,
+                                                   c->body->settings.coll_types, out, CB_BALL_CONTACTS);
     return n > CB_BALL_CONTACTS ? CB_BALL_CONTACTS : n;
 }
 

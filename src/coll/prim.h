@@ -130,11 +130,6 @@ bool coll_tri_sweep_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t *disp,
                          coll_tri_prep_t *p, float t_max, const fm_vec3_t *held, coll_prim_hit_t *hit);
 bool coll_capsule_triangle_overlap_prep(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                         coll_tri_prep_t *p, coll_prim_hit_t *hit);
-/** coll_capsule_triangle_overlap_prep, telling too (*clear) when it found no overlap by the
- *  closest pair (not within r less the touch tolerance) or by a separating axis with an
- *  allowance far above that pair's rounding: then a sweep of the same segment (the same seg
- *  values) and radius against the same triangle (the same tri values) with t_max = 0, which
- *  computes that pair (coll_tri_sweep_prep: no motion), finds no overlap and nothing. */
 /** A segment's and a triangle's boundary axis u (tri_sweep's first separating axis; zero:
  *  none) and their extents along it: the segment's lower end seg0, the triangle's upper end
  *  top (u . the points, as the sweep's own cull computes them). */
@@ -142,6 +137,11 @@ typedef struct {
     fm_vec3_t u;
     float seg0, top;
 } coll_tri_axis_t;
+/** coll_capsule_triangle_overlap_prep, telling too (*clear) when it found no overlap by the
+ *  closest pair (not within r less the touch tolerance) or by a separating axis with an
+ *  allowance far above that pair's rounding: then a sweep of the same segment (the same seg
+ *  values) and radius against the same triangle (the same tri values) with t_max = 0, which
+ *  computes that pair (coll_tri_sweep_prep: no motion), finds no overlap and nothing. */
 bool coll_capsule_triangle_overlap_clear(const fm_vec3_t seg[2], float r, const fm_vec3_t tri[3],
                                          coll_tri_prep_t *p, coll_prim_hit_t *hit, bool *clear,
                                          coll_tri_axis_t *axis);
