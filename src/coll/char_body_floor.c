@@ -535,6 +535,24 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         const fm_vec3_t b0_0 = b0;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
+        /* SKETCH (branch foot44, unmeasured: no soak, no bless, no cost run). Slid past a
+         * steep first contact out of the foot's column (more than a radius across up) onto
+         * the very floor the foot ray found under the foot: that is not where the body's
+         * ball goes (the snap stops on the same contact, the body is not moved across). Its
+         * own ball at the foot rests where rest_at_foot says (foot40's rule), when that is
+         * on something above the floor. A tall ramp's top edge 1.22 m over the foot, 0.38 m
+         * behind it, held the sweep capsule's bottom ball; the slide down that edge's
+         * tangent went 0.96 m across up, out of the open end of a V valley's 0.13 m slot
+         * between two 18-degree ramps the foot was in, onto the room floor: the rule gave
+         * up, the snap to that floor stopped on the edge, and the foot stood 25 mm under
+         * the ball resting on the ramps (soak s61 l294). */
+        if (over_floor && k == 0 && under && v3_dot(under->normal, h1.normal) > 0.999f &&
+            fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
+            v3_len2(v3_reject(v3_sub(b0, b0_0), up)) > r * r) {
+            float rest = 0.0f;
+            if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h0.point, foot), up), &rest))
+                return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
+        }
         /* Over a floor, the slide past a steep contact ran into a wall beside the ball (a
          * face along up): the wall stops it, the ball stays on that contact and the roll
          * below decides (it rolls on along a wall). In a crack 1.13 m wide between two
