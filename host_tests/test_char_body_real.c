@@ -1975,6 +1975,132 @@ static void test_slab_edge_ahead_too_level_to_slide(void)
     TEST_ASSERT_TRUE(pos.y <= 0.0346f + 0.001f); /* not over it: not at the tile's level (61 mm) */
 }
 
+/* ---- soak s61 l294: a V valley's slot under a tall ramp's top edge ---- */
+
+/* Soak s61 l294 (generator 2), the static triangles within 2.5 m of the failing foot, exact
+ * (the generator's world triangles, rounded to float): the room floor (y 0), a tall ramp
+ * (22.5 degrees, its high end 1.537 m over the floor, its upright end face 0.39 m from the
+ * foot along -z) and further pieces; the two 18-degree ramps of a V valley, each with a
+ * 0.25 m riser under its low edge, are apart (valley_ramp_a/b_tris). Their low edges are
+ * parallel, 0.13 m apart (the slot, down to the room floor), open at z 22.53-22.55. */
+static const float valley_room_tris[][9] = {
+    {-8.0f, 0.0f, 16.0f, 0.0f, 0.0f, 24.0f, 0.0f, 0.0f, 16.0f}, /* 64 */
+    {-8.0f, 0.0f, 16.0f, -8.0f, 0.0f, 24.0f, 0.0f, 0.0f, 24.0f}, /* 65 */
+    {0.0f, 0.0f, 16.0f, 8.0f, 0.0f, 24.0f, 8.0f, 0.0f, 16.0f}, /* 66 */
+    {0.0f, 0.0f, 16.0f, 0.0f, 0.0f, 24.0f, 8.0f, 0.0f, 24.0f}, /* 67 */
+    {-4.51479468f, 0.0f, 21.6689118f, -4.51479468f, 2.60774589f, 21.6689118f, -4.79017819f, 2.60774589f, 21.787924f}, /* 843 */
+    {-4.51479468f, 0.0f, 21.6689118f, -4.79017819f, 2.60774589f, 21.787924f, -4.79017819f, 0.0f, 21.787924f}, /* 844 */
+    {-4.51479468f, 0.0f, 21.6689118f, -4.79017819f, 0.0f, 21.787924f, -7.09201633f, 0.0f, 16.4616793f}, /* 847 */
+    {-4.51479468f, 0.0f, 21.6689118f, -7.09201633f, 0.0f, 16.4616793f, -6.81663282f, 0.0f, 16.342667f}, /* 848 */
+    {-4.51479468f, 2.60774589f, 21.6689118f, -7.09201633f, 2.60774589f, 16.4616793f, -4.79017819f, 2.60774589f, 21.787924f}, /* 850 */
+    {-4.51479468f, 0.0f, 21.6689118f, -6.81663282f, 0.0f, 16.342667f, -6.81663282f, 2.60774589f, 16.342667f}, /* 851 */
+    {-4.51479468f, 0.0f, 21.6689118f, -6.81663282f, 2.60774589f, 16.342667f, -4.51479468f, 2.60774589f, 21.6689118f}, /* 852 */
+    {-4.79017819f, 0.0f, 21.787924f, -4.79017819f, 2.60774589f, 21.787924f, -7.09201633f, 2.60774589f, 16.4616793f}, /* 853 */
+    {-4.79017819f, 0.0f, 21.787924f, -7.09201633f, 2.60774589f, 16.4616793f, -7.09201633f, 0.0f, 16.4616793f}, /* 854 */
+    {-4.79017819f, 2.40095282f, 21.787924f, -7.04625167f, 2.40095282f, 22.7629292f, -9.34808981f, 2.40095282f, 17.4366844f}, /* 859 */
+    {-4.79017819f, 2.60774589f, 21.787924f, -9.34808981f, 2.60774589f, 17.4366844f, -7.04625167f, 2.60774589f, 22.7629292f}, /* 862 */
+    {-4.79017819f, 2.40095282f, 21.787924f, -7.09201633f, 2.60774589f, 16.4616793f, -4.79017819f, 2.60774589f, 21.787924f}, /* 864 */
+    {3.66836304f, 0.357043117f, 19.4344915f, -1.45042183f, 0.357043117f, 18.9286176f, -1.17073157f, 1.55018497f, 16.0985166f}, /* 1592 */
+    {3.66836304f, 0.0f, 19.4344915f, -1.45042183f, 0.0f, 18.9286176f, -1.45042183f, 0.357043117f, 18.9286176f}, /* 1594 */
+    {3.66836304f, 0.0f, 19.4344915f, -1.45042183f, 0.357043117f, 18.9286176f, 3.66836304f, 0.357043117f, 19.4344915f}, /* 1595 */
+    {-1.45042183f, 0.0f, 18.9286176f, -1.17073157f, 1.55018497f, 16.0985166f, -1.45042183f, 0.357043117f, 18.9286176f}, /* 1601 */
+    {3.65602019f, 0.357043117f, 19.5593852f, -1.46276469f, 0.357043117f, 19.0535112f, -1.74245495f, 1.53727937f, 21.8836122f}, /* 1602 */
+    {3.65602019f, 0.357043117f, 19.5593852f, -1.74245495f, 1.53727937f, 21.8836122f, 3.37632992f, 1.53727937f, 22.3894861f}, /* 1603 */
+    {3.65602019f, 0.0f, 19.5593852f, -1.46276469f, 0.0f, 19.0535112f, -1.46276469f, 0.357043117f, 19.0535112f}, /* 1604 */
+    {3.65602019f, 0.0f, 19.5593852f, -1.46276469f, 0.357043117f, 19.0535112f, 3.65602019f, 0.357043117f, 19.5593852f}, /* 1605 */
+    {3.37632992f, 0.0f, 22.3894861f, -1.74245495f, 0.0f, 21.8836122f, -1.74245495f, 1.53727937f, 21.8836122f}, /* 1606 */
+    {3.37632992f, 0.0f, 22.3894861f, -1.74245495f, 1.53727937f, 21.8836122f, 3.37632992f, 1.53727937f, 22.3894861f}, /* 1607 */
+    {-1.46276469f, 0.0f, 19.0535112f, -1.74245495f, 0.0f, 21.8836122f, -1.74245495f, 1.53727937f, 21.8836122f}, /* 1610 */
+    {-1.46276469f, 0.0f, 19.0535112f, -1.74245495f, 1.53727937f, 21.8836122f, -1.46276469f, 0.357043117f, 19.0535112f}, /* 1611 */
+};
+/* ramp A: rises towards +x from its low edge (y 0.2509) at 18.2 degrees */
+static const float valley_ramp_a_tris[][9] = {
+    {-1.62107566f, 0.250949651f, 22.5528485f, -0.938852541f, 0.250949651f, 18.1236241f, 0.294465118f, 0.66182971f, 18.3135892f}, /* 867 */
+    {-1.62107566f, 0.250949651f, 22.5528485f, 0.294465118f, 0.66182971f, 18.3135892f, -0.387757996f, 0.66182971f, 22.7428135f}, /* 868 */
+    {-1.62107566f, 0.0f, 22.5528485f, -0.938852541f, 0.0f, 18.1236241f, -0.938852541f, 0.250949651f, 18.1236241f}, /* 869 */
+    {-1.62107566f, 0.0f, 22.5528485f, -0.938852541f, 0.250949651f, 18.1236241f, -1.62107566f, 0.250949651f, 22.5528485f}, /* 870 */
+    {-0.387757996f, 0.0f, 22.7428135f, 0.294465118f, 0.0f, 18.3135892f, 0.294465118f, 0.66182971f, 18.3135892f}, /* 871 */
+    {-0.387757996f, 0.0f, 22.7428135f, 0.294465118f, 0.66182971f, 18.3135892f, -0.387757996f, 0.66182971f, 22.7428135f}, /* 872 */
+    {-1.62107566f, 0.0f, 22.5528485f, -1.62107566f, 0.250949651f, 22.5528485f, -0.387757996f, 0.66182971f, 22.7428135f}, /* 873 */
+    {-1.62107566f, 0.0f, 22.5528485f, -0.387757996f, 0.66182971f, 22.7428135f, -0.387757996f, 0.0f, 22.7428135f}, /* 874 */
+};
+/* ramp B: rises towards -x from its low edge (y 0.2509) at 18.5 degrees */
+static const float valley_ramp_b_tris[][9] = {
+    {-1.75003959f, 0.250949651f, 22.5329845f, -1.06781647f, 0.250949651f, 18.1037601f, -2.30113413f, 0.669930756f, 17.9137951f}, /* 877 */
+    {-1.75003959f, 0.250949651f, 22.5329845f, -2.30113413f, 0.669930756f, 17.9137951f, -2.98335724f, 0.669930756f, 22.3430194f}, /* 878 */
+    {-1.75003959f, 0.0f, 22.5329845f, -1.06781647f, 0.0f, 18.1037601f, -1.06781647f, 0.250949651f, 18.1037601f}, /* 879 */
+    {-1.75003959f, 0.0f, 22.5329845f, -1.06781647f, 0.250949651f, 18.1037601f, -1.75003959f, 0.250949651f, 22.5329845f}, /* 880 */
+    {-2.98335724f, 0.0f, 22.3430194f, -2.30113413f, 0.0f, 17.9137951f, -2.30113413f, 0.669930756f, 17.9137951f}, /* 881 */
+    {-2.98335724f, 0.0f, 22.3430194f, -2.30113413f, 0.669930756f, 17.9137951f, -2.98335724f, 0.669930756f, 22.3430194f}, /* 882 */
+    {-1.75003959f, 0.0f, 22.5329845f, -1.75003959f, 0.250949651f, 22.5329845f, -2.98335724f, 0.669930756f, 22.3430194f}, /* 883 */
+    {-1.75003959f, 0.0f, 22.5329845f, -2.98335724f, 0.669930756f, 22.3430194f, -2.98335724f, 0.0f, 22.3430194f}, /* 884 */
+};
+
+/* soak s61 l294's body (r 0.474, step 1.118, owner = the capsule's centre) walking at
+ * (6.9, 0, -3.7) m/s from the room floor past the valley's open end into its slot: the
+ * replay's two steps, with ramp A and ramp B there or not. Returns the foot's height. */
+static float s61_l294_walk(bool ramp_a, bool ramp_b)
+{
+    cb_world_reset();
+    geo_tris(valley_room_tris, sizeof valley_room_tris / sizeof valley_room_tris[0]);
+    if (ramp_a) geo_tris(valley_ramp_a_tris, sizeof valley_ramp_a_tris / sizeof valley_ramp_a_tris[0]);
+    if (ramp_b) geo_tris(valley_ramp_b_tris, sizeof valley_ramp_b_tris / sizeof valley_ramp_b_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(-0x1.564312p+1f, 0x1.e6dbe4p+0f, 0x1.689ac8p+4f);
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.e541c4p-2f, 0x1.e6dbe4p+1f, 0x1.1e260ap+0f, 0x1.6a52c8p+0f,
+                                        0x1.b58638p-2f, 0x1.5d733ap+4f, 0x1.476adep+5f, 8, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    char_body_configure(&body, &s);
+    const fm_vec3_t v = cb_vec(0x1.bbdaeap+2f, 0.0f, -0x1.d6cf88p+1f);
+    char_body_set_velocity(&body, v);
+    body.input_velocity = v;
+    CB_STEP(&body, 0x1.654bfcp-4f);
+    CB_STEP(&body, 0x1.1f3622p-3f);
+    return pos.y - 0.5f * shape.height;
+}
+
+/* The ball at the foot (x -1.6635, z 22.278, in the slot 4.4 cm from B's low edge) resting
+ * on a ramp's face plane: on A's 0.2484 m over the floor, on B's 0.2613 m (each a ball of
+ * radius r on the plane through the face, its centre on the foot's vertical; both contacts
+ * lie on the faces, past the low edges). The sweep capsule's bottom ball rests on the tall
+ * ramp's top edge 1.22 m up; the crack rule's slide past that edge went out of the valley's
+ * open end onto the room floor, the rule gave up, and the foot stood on the floor's snap,
+ * stopped on that edge, 0.2233 m up: 25 mm under the ball resting on A (the oracle's rest). */
+static void test_valley_slot_under_tall_ramp_edge(void)
+{
+    const float foot = s61_l294_walk(true, true);
+    cb_report("V valley slot under a tall ramp's top edge (s61 l294): grounded foot (rest on A 0.2484, on B 0.2613)",
+              foot, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(foot >= 0.2484f - 0.001f); /* not under the ball resting on the ramps */
+    TEST_ASSERT_TRUE(foot <= 0.2613f + 0.001f); /* not over the highest rest on either */
+}
+
+/* The same walk with ramp A gone: the ball at the foot leans on B's face on one side only,
+ * and rolls off it down into the open (B's slope falls towards +x, nothing stands there);
+ * nothing holds it over the floor at B's rest (0.2613 m). The slide past the tall ramp's
+ * edge is the same; the body is not lifted onto B's slope: the snap to the room floor stops
+ * where it stops (on the tall ramp's edge, as before), under any rest on the ramps.
+ * foot44's sketch, without the surround test, lifted it onto B at 0.2597 m. */
+static void test_valley_half_under_tall_ramp_edge_not_lifted(void)
+{
+    const float foot = s61_l294_walk(false, true);
+    cb_report("one ramp beside the foot under a tall ramp's top edge: grounded foot (under 0.2484)", foot, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(foot >= -0.001f);
+    TEST_ASSERT_TRUE(foot <= 0.2484f - 0.01f); /* not standing on B's slope */
+}
+
+/* With neither ramp: nothing but the room floor under the foot; the body stands on it. */
+static void test_no_valley_under_tall_ramp_edge_stands_on_floor(void)
+{
+    const float foot = s61_l294_walk(false, false);
+    cb_report("no valley under a tall ramp's top edge: grounded foot (room floor 0)", foot, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.002f, 0.0f, foot);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -2011,6 +2137,9 @@ int main(void)
     RUN_TEST(test_oa_dm5_hole_among_floor_pieces);
     RUN_TEST(test_tile_edge_past_slab_edge_ahead);
     RUN_TEST(test_slab_edge_ahead_too_level_to_slide);
+    RUN_TEST(test_valley_slot_under_tall_ramp_edge);
+    RUN_TEST(test_valley_half_under_tall_ramp_edge_not_lifted);
+    RUN_TEST(test_no_valley_under_tall_ramp_edge_stands_on_floor);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

@@ -298,19 +298,47 @@ static bool drop_off_level(const cb_ctx_t *c, fm_vec3_t b1, fm_vec3_t across, fm
     return true;
 }
 
+/** Directions across up dir[0..m) (unit) leave no gap of 180 degrees or more around up: no
+ *  one of them has all the others on one side of it. One opposite it within rounding (a
+ *  straight crack's two edges) closes both sides: the gap beside it is 180 degrees, no more,
+ *  and a ball rests on both edges (the checker allows SOAK_CRACK_OPEN, half a degree).
+ *  Decided by the sign of a sine of ~1e-7, soak s15 l315 (a 0.86 m ball on a crack between
+ *  two tiles, 2 more edges of near copies on each side) was held only while a duplicate
+ *  contact's rounding tipped it. */
+static inline bool dirs_around(const cb_ctx_t *c, const fm_vec3_t *dir, uint32_t m)
+{
+    const fm_vec3_t up = c->up;
+    for (uint32_t i = 0; i < m; i++) {
+        bool left = true, right = true;
+        for (uint32_t j = 0; j < m && (left || right); j++) {
+            float s = v3_dot(v3_cross(dir[i], dir[j]), up);
+            const bool opposite = v3_dot(dir[i], dir[j]) < 0.0f && fabsf(s) <= 1e-3f;
+            if (s < 0.0f || opposite) left = false;
+            if (s > 0.0f || opposite) right = false;
+        }
+        if (left || right) return false;
+    }
+    return true;
+}
+
 /* Where the body's own ball, at the foot, rests on the pieces drop_off_level found from an
  * edge ahead (the ball moved a radius across up from that edge, behind the foot): placed on
  * the floor under the foot (floor_gap below it), its contacts at or below the level found
  * (level, over the foot; not the edge ahead, higher, in the step zone) and above that floor
  * are those pieces' nearest parts; resting on one l across up from the foot, the ball's
  * lowest point is r - sqrt(r^2 - l^2) under it. The highest such rest over the foot, or
- * false when the ball there touches none of them (it rests on the floor). */
-static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float level, float *rest)
+ * false when the ball there touches none of them (it rests on the floor). around (when
+ * asked): those contacts hold the ball from all sides, two or more whose directions across
+ * up (their normals') leave no gap of 180 degrees or more (dirs_around): it cannot roll off
+ * them down onto the floor. */
+static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float level, float *rest, bool *around)
 {
     const fm_vec3_t up = c->up;
     const float r = c->radius, tol = cb_len_tol(c, CB_STEP_EPS);
     coll_contact_t ct[CB_BALL_CONTACTS];
+    fm_vec3_t dir[CB_BALL_CONTACTS];
     const uint32_t n = cb_ball_overlaps(c, v3_madd(foot, up, r - floor_gap), r, ct);
+    uint32_t m = 0;
     bool found = false;
     *rest = 0.0f;
     for (uint32_t i = 0; i < n; i++) {
@@ -322,7 +350,10 @@ static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, flo
         const float hr = h - (r - sqrtf(r * r - l2));
         if (!found || hr > *rest) *rest = hr;
         found = true;
+        const fm_vec3_t s = v3_reject(ct[i].normal, up);
+        if (v3_len2(s) > 1e-6f) dir[m++] = v3_norm(s); /* (a face right under the centre: no side) */
     }
+    if (around) *around = m >= 2 && dirs_around(c, dir, m);
     return found;
 }
 
@@ -356,23 +387,7 @@ static bool hole_around(const cb_ctx_t *c, fm_vec3_t side, const coll_ray_hit_t 
         dir[m++] = v3_norm(d);
     }
     if (m < 3) return false;
-    /* a gap of more than 180 degrees: all the others on one side of one of them. One
-     * opposite it within rounding (a straight crack's two edges) closes both sides: the gap
-     * beside it is 180 degrees, no more, and the ball rests on both edges (the checker
-     * allows SOAK_CRACK_OPEN, half a degree). Decided by the sign of a sine of ~1e-7, soak
-     * s15 l315 (a 0.86 m ball on a crack between two tiles, 2 more edges of near copies on
-     * each side) was held only while a duplicate contact's rounding tipped it. */
-    for (uint32_t i = 0; i < m; i++) {
-        bool left = true, right = true;
-        for (uint32_t j = 0; j < m && (left || right); j++) {
-            float s = v3_dot(v3_cross(dir[i], dir[j]), up);
-            const bool opposite = v3_dot(dir[i], dir[j]) < 0.0f && fabsf(s) <= 1e-3f;
-            if (s < 0.0f || opposite) left = false;
-            if (s > 0.0f || opposite) right = false;
-        }
-        if (left || right) return false;
-    }
-    return true;
+    return dirs_around(c, dir, m); /* a gap of more than 180 degrees: not a hole */
 }
 
 /**
@@ -535,6 +550,29 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         const fm_vec3_t b0_0 = b0;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
+        /* Over a floor, slid past a steep first contact out of the foot's column (more than
+         * a radius across up) onto the very floor the foot ray found under the foot: the
+         * slid ball says nothing about the foot (the body is not moved across, and the snap
+         * to that floor stops on the same contact). When the body's own ball at the foot,
+         * lowered onto that floor, meets pieces above it that hold it from all sides (their
+         * directions across up leave no gap of 180 degrees: rest_at_foot's around, the
+         * surround test of hole_around), it cannot roll off them down to the floor: it
+         * rests on them, where rest_at_foot says (foot40's rule). Pieces on one side only
+         * (a slope's low edge beside the foot) do not hold it: it rolls off them onto the
+         * floor, and the old path runs (the foot stands on the floor or falls). A tall
+         * ramp's top edge 1.22 m over the foot, 0.38 m behind it, held the sweep capsule's
+         * bottom ball; the slide down that edge's tangent went 0.96 m across up, out of the
+         * open end of a V valley's 0.13 m slot between two 18-degree ramps the foot was in,
+         * onto the room floor: the rule gave up, the snap to that floor stopped on the edge,
+         * and the foot stood 25 mm under the ball resting on both ramps (soak s61 l294). */
+        if (over_floor && k == 0 && under && v3_dot(under->normal, h1.normal) > 0.999f &&
+            fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
+            v3_len2(v3_reject(v3_sub(b0, b0_0), up)) > r * r) {
+            float rest = 0.0f;
+            bool around = false;
+            if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h0.point, foot), up), &rest, &around) && around)
+                return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
+        }
         /* Over a floor, the slide past a steep contact ran into a wall beside the ball (a
          * face along up): the wall stops it, the ball stays on that contact and the roll
          * below decides (it rolls on along a wall). In a crack 1.13 m wide between two
@@ -775,7 +813,7 @@ again:;
                 const bool off_ahead = moved_off && ahead;
                 if (off_ahead) {
                     float rest = 0.0f;
-                    if (!rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest)) goto hole;
+                    if (!rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest, NULL)) goto hole;
                     d1p = c->step - rest;
                 }
                 /* A nearly level edge counts as the face it bounds: the foot stands at its
