@@ -1864,6 +1864,99 @@ static void test_gathered_sweep_memo_matches_plain(void)
     TEST_ASSERT_TRUE(calls_memo + 100 < calls_plain);
 }
 
+/* The stair step's down sweep (coll_gather_capsule_sweep_corner_m) takes the boundary axes
+ * of the recovery's overlap at the step's start (the memo) from where the lift and the move
+ * across left the capsule: a triangle that axis separates over the down sweep's motion is
+ * not tested. On a staircase like stairs_real's (treads 0.28 m, risers 0.18 m, quads 10 m
+ * wide split along their diagonals), capsules looked at over a tread near a nosing, lifted
+ * by 0.05-0.3 m, moved across by up to 0.2 m and swept down by the lift and up to 0.1 m
+ * more: the same answer bit for bit as the plain corner sweep and the scene's, fewer
+ * triangle sweeps; a memo of another capsule (another inner half height) is not used. */
+static void test_gathered_down_sweep_memo_matches_plain(void)
+{
+    uint32_t nv = 0, nt = 0;
+    double xs[24], ys[24];
+    int np = 0;
+    xs[np] = -20; ys[np++] = 0;
+    for (int k = 0; k < 10; k++) {
+        xs[np] = 0.28 * k; ys[np++] = 0.18 * k;
+        xs[np] = 0.28 * k; ys[np++] = 0.18 * (k + 1);
+    }
+    xs[np] = 20; ys[np++] = 1.8;
+    for (int i = 0; i < np; i++)
+        for (int e = 0; e < 2; e++) {
+            g_verts[3 * nv + 0] = (float)xs[i];
+            g_verts[3 * nv + 1] = (float)ys[i];
+            g_verts[3 * nv + 2] = e ? 5.0f : -5.0f;
+            nv++;
+        }
+    for (int i = 0; i + 1 < np; i++) {
+        uint32_t a = 2u * (uint32_t)i, b = a + 1, c = a + 3, d = a + 2; /* as the bench's strip */
+        uint32_t q[6] = { a, b, c, a, c, d };
+        for (int k = 0; k < 6; k++) g_idx[3 * nt + (uint32_t)k] = q[k];
+        nt += 2;
+    }
+    const coll_mesh_t *m = build_mesh(0, nv, nt, NULL);
+    coll_scene_t s;
+    coll_query_stats_t st;
+    coll_mesh_instance_t inst;
+    scene_of_one_mesh(&s, &st, &inst, m);
+    core_rng_t rng;
+    core_rng_seed(&rng, 3434);
+    static coll_gather_t g;
+    const float r = 0.5f, ihh = 0.375f;
+    int cases = 0, hits = 0, calls_plain = 0, calls_memo = 0;
+    for (int i = 0; i < 3000; i++) {
+        int k = 1 + (int)core_rng_range(&rng, 0, 7.99);
+        /* the bottom ball over tread k - 1, from 0.2 m behind the nosing of riser k to 0.1 m past it */
+        float xn = 0.28f * (float)k, yt = 0.18f * (float)k;
+        fm_vec3_t c0 = {{ xn + (float)core_rng_range(&rng, -0.2, 0.1), 0.0f, (float)core_rng_range(&rng, -0.3, 0.3) }};
+        c0.y = yt + r + ihh + (float)core_rng_range(&rng, 0.0, 0.05);
+        if (c0.x > xn) c0.y += 0.18f;
+        float lift = (float)core_rng_range(&rng, 0.05, 0.3);
+        fm_vec3_t c1 = {{ c0.x + (float)core_rng_range(&rng, 0.0, 0.2), c0.y + lift,
+                          c0.z + (float)core_rng_range(&rng, -0.05, 0.05) }};
+        fm_vec3_t d = {{ 0.0f, -(lift + (float)core_rng_range(&rng, 0.0, 0.1)), 0.0f }};
+        fm_vec3_t lo = {{ c0.x - 1.5f, c0.y - 1.5f, c0.z - 1.5f }}, hi = {{ c1.x + 1.5f, c1.y + 1.5f, c1.z + 1.5f }};
+        coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH);
+        TEST_ASSERT_TRUE(g.valid);
+        coll_contact_t ct[8];
+        coll_gather_memo_t memo;
+        memo.g = NULL;
+        /* every fifth: the memo is of a capsule of another shape (not used) */
+        (void)coll_gather_capsule_overlaps_m(&g, c0, UP, r, i % 5 == 4 ? ihh * 0.5f : ihh, ct, 8, &memo);
+        coll_sweep_hit_t h0, h1, h2;
+        bool f0 = coll_capsule_sweep(&s, c1, UP, r, ihh, d, 0xFF, COLL_TYPE_MESH, &h0);
+        bool f1 = coll_gather_capsule_sweep_corner(&g, c1, UP, r, ihh, d, &h1);
+        bool f2;
+        ASSERT_NO_ALLOC(f2 = coll_gather_capsule_sweep_corner_m(&g, c1, UP, r, ihh, d, &memo, &h2));
+        TEST_ASSERT_EQUAL(f1, f2);
+        TEST_ASSERT_EQUAL(f0, f2);
+        cases++;
+        if (f1) {
+            hits++;
+            assert_same_sweep_hit(&h1, &h2);
+            TEST_ASSERT_EQUAL_MEMORY(&h1.depth, &h2.depth, sizeof h1.depth);
+            TEST_ASSERT_EQUAL_INT32(h0.triangle, h2.triangle);
+            TEST_ASSERT_EQUAL_FLOAT(h0.t, h2.t);
+        }
+        coll_set_tri_sweep_method(counting_method, NULL);
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep_corner(&g, c1, UP, r, ihh, d, &h1);
+        int plain = g_method_calls;
+        g_method_calls = 0;
+        (void)coll_gather_capsule_sweep_corner_m(&g, c1, UP, r, ihh, d, &memo, &h2);
+        coll_set_tri_sweep_method(NULL, NULL);
+        if (i % 5 == 4) TEST_ASSERT_EQUAL_INT(plain, g_method_calls);
+        calls_plain += plain;
+        calls_memo += g_method_calls;
+    }
+    printf("down sweeps on stairs: %d (%d hits), triangle sweeps %d -> %d with the start's memo\n", cases, hits,
+           calls_plain, calls_memo);
+    TEST_ASSERT_TRUE(hits > 1000);
+    TEST_ASSERT_TRUE(calls_memo + 500 < calls_plain);
+}
+
 /* The gathered ray, down a floor of quads (two triangles each, 0.5 m, tilted a little in
  * half the cases), through the vertices, along the shared edges and anywhere, with the
  * triangles' preps made or not by an earlier sweep: the hit of the plain loop over the
@@ -2403,6 +2496,7 @@ int main(void)
     RUN_TEST(test_roll_above_its_contact_plane_matches_plain);
     RUN_TEST(test_gather_codes_change_nothing);
     RUN_TEST(test_gathered_sweep_memo_matches_plain);
+    RUN_TEST(test_gathered_down_sweep_memo_matches_plain);
     RUN_TEST(test_gathered_ray_down_shared_edges);
     RUN_TEST(test_grid_kinds_covered);
     RUN_TEST(test_gathered_sweep_leaving_the_box);

@@ -72,7 +72,10 @@ bool coll_cb_sweep_down(const cb_ctx_t *c, fm_vec3_t pos, float len, coll_sweep_
 {
     bool found;
     if (cb_down_known(c, pos, len, &found, hit)) return found;
-    found = cb_sweep_step(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), hit);
+    /* (on the gather: the recovery's boundary axes tried first, coll_gather_capsule_sweep_corner_m) */
+    found = c->gather ? coll_gather_capsule_sweep_corner_m(c->gather, cb_sweep_center(c, pos), c->up, c->radius,
+                                                           c->sweep_ihh, v3_scale(c->up, -len), &c->mem->pairs, hit)
+                      : cb_sweep_step(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), hit);
     cb_down_t *d = &c->mem->down;
     d->valid = true;
     d->pos = pos;

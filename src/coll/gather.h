@@ -186,6 +186,15 @@ static inline bool coll_gather_memo_for(const coll_gather_memo_t *memo, const co
 bool coll_gather_capsule_sweep_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                  float inner_half_height, fm_vec3_t displacement, const coll_gather_above_t *above,
                                  const coll_gather_memo_t *memo, coll_sweep_hit_t *hit);
+/** coll_gather_capsule_sweep_corner using memo (may be NULL) from wherever its capsule was
+ *  (the same gather, axis, radius and inner half height; any centre): a triangle the memo's
+ *  overlap found clear along its boundary axis is first tested along that axis over this
+ *  sweep's motion (coll_tri_sweep_axis_culls, with this sweep's own segment), and skipped
+ *  where that separates (a separating axis like tri_sweep's own culls). The stair step's
+ *  down sweep, beside the recovery's look at the step's start. */
+bool coll_gather_capsule_sweep_corner_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
+                                        float inner_half_height, fm_vec3_t displacement,
+                                        const coll_gather_memo_t *memo, coll_sweep_hit_t *hit);
 /** coll_gather_capsule_overlaps, filling memo (may be NULL) with what it learnt. */
 uint32_t coll_gather_capsule_overlaps_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis_up_unit, float radius,
                                         float inner_half_height, coll_contact_t *out, uint32_t max_out,

@@ -843,6 +843,19 @@ CAND_INLINE const coll_gather_memo_t *memo_for(const coll_gather_memo_t *memo, c
     return memo && coll_gather_memo_for(memo, g, *center, *axis, radius, ihh) ? memo : NULL;
 }
 
+/* The memo is of this gather and of a capsule of this shape (axis, radius, inner half
+ * height: the same values bit for bit) wherever it was: its boundary axes are axes like any
+ * other for a sweep of that capsule from elsewhere (memo_axis_culls with moff); NULL when not. */
+CAND_INLINE const coll_gather_memo_t *memo_shape_for(const coll_gather_memo_t *memo, const coll_gather_t *g,
+                                                     const fm_vec3_t *axis, float radius, float ihh)
+{
+    return memo && memo->g == g && memo->n > 0 && coll_same_bits(memo->radius, radius) &&
+                   coll_same_bits(memo->ihh, ihh) && coll_same_bits(memo->axis.x, axis->x) &&
+                   coll_same_bits(memo->axis.y, axis->y) && coll_same_bits(memo->axis.z, axis->z)
+               ? memo
+               : NULL;
+}
+
 /* The box test's corners (perf20's test): gathered triangle gt, whose box passed the
  * per-axis test against the sweep's box glo..ghi (the swept axis's box grown by R = r + eps
  * on every side), is farther than R from the swept axis's box itself (its gaps on the axes,
@@ -883,7 +896,7 @@ CAND_INLINE bool memo_clear(const coll_gather_memo_t *memo, uint16_t k)
  * beyond their diagonals beside the capsule, ~1.1k console instructions each. */
 CAND_INLINE bool memo_axis_culls(const coll_gather_memo_t *memo, const coll_gather_t *g, const coll_gather_tri_t *gt,
                                  const capsule_q_t *q, const fm_vec3_t *w0, const fm_vec3_t shape[3], float t_max,
-                                 uint8_t *mj)
+                                 const fm_vec3_t *moff, uint8_t *mj)
 {
     /* (the memo's triangles are in the gather's order, as the scan visits them: a cursor) */
     uint8_t k = (uint8_t)(gt - g->tris), i = *mj;
@@ -898,6 +911,9 @@ CAND_INLINE bool memo_axis_culls(const coll_gather_memo_t *memo, const coll_gath
     float uu = fm_vec3_dot(u, u);
     if (!(uu > 0.0f)) return false;
     float sep = ax->seg0 + f_min(fm_vec3_dot(u, &q->disp) * t_max, 0.0f) - ax->top;
+    /* (moff: the sweep starts there from the memo's capsule; the stored extents moved by it
+     * for this rough test only, the cull below is made of the sweep's own values) */
+    if (moff) sep += fm_vec3_dot(u, moff);
     float rin = q->r - f_min(COLL_PRIM_TOUCH_TOL, 0.25f * q->r);
     if (!(sep > 0.0f) || !(sep * sep > rin * rin * uu)) return false;
     fm_vec3_t seg[2];
@@ -915,7 +931,8 @@ CAND_INLINE bool memo_axis_culls(const coll_gather_memo_t *memo, const coll_gath
 CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const fm_vec3_t *rel,
                                    fm_vec3_t lo, fm_vec3_t hi, fm_vec3_t glo, fm_vec3_t ghi,
                                    const coll_gather_above_t *above, const fm_vec3_t *center,
-                                   const coll_gather_memo_t *memo, bool corner, best_hit_t *sb)
+                                   const coll_gather_memo_t *memo, const fm_vec3_t *moff, bool corner,
+                                   best_hit_t *sb)
 {
     fm_vec3_t ap;
     if (above) fm_vec3_sub(&ap, &above->p, center); /* the plane's point from the sweep's centre */
@@ -934,7 +951,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
          * computes the closest pair at the start and, no overlap, stops: the memo's overlap
          * query computed that pair (the same values) and found no overlap. */
         if (skip && memo_clear(skip, (uint16_t)(gt - g->tris))) continue;
-        if (memo && !skip && memo_axis_culls(memo, g, gt, q, &w0, shape, sb->best, &mj)) continue;
+        if (memo && !skip && memo_axis_culls(memo, g, gt, q, &w0, shape, sb->best, moff, &mj)) continue;
         fm_vec3_t u = one_way_up(gt->inst);
         /* the plane cull only where it can beat the box test just passed: a triangle flat
          * along an axis (a level floor, an upright wall of a grid-aligned level) has a box
@@ -953,7 +970,7 @@ CAND_INLINE void gather_sweep_scan(coll_gather_t *g, const capsule_q_t *q, const
         if (sweep_tri(q, gt->inst, gt->tri, &w0, shape, &u, tilted, gt, sb)) {
             swept_box(q, sb->best, &lo, &hi); /* shrink the sweep */
             gather_box(rel, &lo, &hi, &glo, &ghi);
-            if (sb->best == 0.0f) skip = memo;
+            if (sb->best == 0.0f && !moff) skip = memo; /* (its pairs are of its own place) */
         }
     }
 }
@@ -1004,7 +1021,7 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
             fm_vec3_t lo, hi, glo, ghi;
             swept_box(q, covered, &lo, &hi);
             gather_box(rel, &lo, &hi, &glo, &ghi);
-            gather_sweep_scan(g, q, rel, lo, hi, glo, ghi, above, &center, memo, false, &sb);
+            gather_sweep_scan(g, q, rel, lo, hi, glo, ghi, above, &center, memo, NULL, false, &sb);
             if (sb.have) {
                 STATS_ADD(g->scene, gather_queries);
                 if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, q, g->read_mask, &sb);
@@ -1020,7 +1037,7 @@ static bool gather_sweep_outside(coll_gather_t *g, fm_vec3_t center, fm_vec3_t a
 CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                       float inner_half_height, fm_vec3_t displacement,
                                       const coll_gather_above_t *above, const coll_gather_memo_t *memo,
-                                      bool corner, coll_sweep_hit_t *hit)
+                                      bool moved, bool corner, coll_sweep_hit_t *hit)
 {
     if (!g || !g->scene) return false;
     if (!capsule_args_ok(&center, &axis, radius, inner_half_height) || !vfin(&displacement)) return false;
@@ -1030,14 +1047,19 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
     fm_vec3_sub(&rel, &center, &g->origin);
     swept_box(&q, 1.0f, &lo, &hi);
     gather_box(&rel, &lo, &hi, &glo, &ghi);
-    memo = memo_for(memo, g, &center, &axis, radius, inner_half_height);
+    /* moved (a constant at each call): the memo's capsule was elsewhere (memo_shape_for) */
+    fm_vec3_t moff;
+    memo = moved ? memo_shape_for(memo, g, &axis, radius, inner_half_height)
+                 : memo_for(memo, g, &center, &axis, radius, inner_half_height);
+    if (moved && memo) fm_vec3_sub(&moff, &center, &memo->center);
     if (!(g->types & COLL_TYPE_MESH) || !g->valid || !gather_inside(g, &glo, &ghi))
-        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, above, memo,
-                                    hit);
+        return gather_sweep_outside(g, center, axis, radius, inner_half_height, displacement, &q, &rel, above,
+                                    moved ? NULL : memo, hit);
     STATS_ADD(g->scene, gather_queries);
     best_hit_t sb;
     best_init(&sb, 1.0f);
-    gather_sweep_scan(g, &q, &rel, lo, hi, glo, ghi, above, &center, memo, corner, &sb);
+    gather_sweep_scan(g, &q, &rel, lo, hi, glo, ghi, above, &center, memo, moved && memo ? &moff : NULL, corner,
+                      &sb);
     if (g->types & COLL_TYPE_BODY) sweep_bodies(g->scene, &center, &q, g->read_mask, &sb);
     return sweep_result(&sb, &center, hit);
 }
@@ -1045,27 +1067,34 @@ CAND_INLINE bool gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec
 bool coll_gather_capsule_sweep(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, NULL, false, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, NULL, false, false, hit);
 }
 
 bool coll_gather_capsule_sweep_corner(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                       float inner_half_height, fm_vec3_t displacement, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, NULL, true, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, NULL, false, true, hit);
 }
 
 bool coll_gather_capsule_sweep_above(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                      float inner_half_height, fm_vec3_t displacement,
                                      const coll_gather_above_t *above, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, NULL, false, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, NULL, false, false, hit);
 }
 
 bool coll_gather_capsule_sweep_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
                                  float inner_half_height, fm_vec3_t displacement, const coll_gather_above_t *above,
                                  const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
 {
-    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, memo, false, hit);
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, above, memo, false, false, hit);
+}
+
+bool coll_gather_capsule_sweep_corner_m(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
+                                        float inner_half_height, fm_vec3_t displacement,
+                                        const coll_gather_memo_t *memo, coll_sweep_hit_t *hit)
+{
+    return gather_capsule_sweep(g, center, axis, radius, inner_half_height, displacement, NULL, memo, true, true, hit);
 }
 
 CAND_INLINE uint32_t gather_capsule_overlaps(coll_gather_t *g, fm_vec3_t center, fm_vec3_t axis, float radius,
