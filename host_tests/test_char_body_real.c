@@ -985,6 +985,58 @@ static void test_steep_body_slab_low_edge(void)
         }
 }
 
+/* A collider body met from below is its underside, never a floor (soak s63 l245): a
+ * cylinder (r 1.21, half height 0.83) tilted 31 degrees and sunk in the floor, its bottom
+ * cap's rim 13 mm under the floor where its side (62 degrees off up, steep for a floor
+ * angle of 51.8) rises out of it. A body falls against the side, its unswept step zone
+ * 0.13 m into the floor; the foot ray meets the side above the foot, and the look along up
+ * from the foot met the cap's underside first: the body stood on it, turned up, its foot
+ * 12.9 mm under the floor. It stands on the floor. */
+static void test_body_underside_is_no_floor(void)
+{
+    static const float dts[3] = {0x1.99999ap-5f, 1.0f / 30.0f, 1.0f / 60.0f};
+    for (int i = 0; i < 3; i++) {
+        cb_world_reset();
+        cb_geo_box(cb_vec(15.0f, -0.5f, 13.0f), cb_vec(10.0f, 0.5f, 10.0f), 0.0f);
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        coll_body_t *cyl = cb_world_add_box_body(cb_vec(0x1.06bed8p+4f, 0x1.1ede06p-3f, 0x1.aa230ep+3f),
+                                                 cb_vec(0x1.34fda2p+0f, 0x1.a85552p-1f, 0x1.93b40ep-2f), 103);
+        TEST_ASSERT_NOT_NULL(cyl);
+        cyl->shape = COLL_SHAPE_CYLINDER;
+        cyl->xf.rot = (fm_quat_t){{0x1.6aeb7ap-4f, -0x1.011124p-6f, 0x1.031cd8p-2f, -0x1.ed30b6p-1f}};
+        pos = cb_vec(0x1.e1c1dep+3f, 0x1.17a206p+0f, 0x1.ad95b6p+3f);
+        char_body_init(&body, &pos);
+        char_body_settings_t s = cb_foot_settings();
+        s.radius = 0x1.0b65ap-2f;
+        s.height = 0x1.179bbep+1f;
+        s.center_offset = cb_vec(0.0f, 0.0f, 0.0f);
+        s.step_height = 0x1.ca83p-2f;
+        s.floor_snap_distance = 0x1.d53372p-1f;
+        s.floor_max_angle = 0x1.cea5a8p-1f;
+        s.gravity = 0x1.9344a8p+5f;
+        s.max_fall_speed = 0x1.26d5bcp+6f;
+        s.max_slides = 7;
+        s.coll_types = 0xff;
+        s.read_mask = 0xff;
+        s.follow_floor = true;
+        char_body_configure(&body, &s);
+        char_body_teleport(&body, pos, true);
+        char_body_set_velocity(&body, cb_vec(0x1.c5e3p-1f, 0x1.f68p-10f, -0x1.1c61ep+1f));
+        float lowest = 1.0f;
+        for (int f = 0; f < 10; f++) {
+            body.input_velocity = cb_vec(0x1.5f8fcp+2f, 0.0f, -0x1.64bc7p+1f);
+            CB_STEP(&body, dts[i]);
+            TEST_ASSERT_TRUE(cb_body_finite(&body));
+            float foot = pos.y - 0.5f * s.height;
+            if (char_body_is_on_floor(&body) && foot < lowest) lowest = foot;
+        }
+        char name[96];
+        snprintf(name, sizeof name, "tilted cylinder's underside at dt %.4f s: lowest grounded foot", (double)dts[i]);
+        cb_report(name, lowest, "m");
+        TEST_ASSERT_TRUE(lowest > -0.001f);
+    }
+}
+
 /* The game teleports a body under an overhang lower than it (soak seed 1 levels 53, 68,
  * 255, 283, 293, 411, 453 at 1M frames; seed 2 level 67): the head is in the slab. The
  * recovery pushed the capsule down out of the slab, which the shortened sweep capsule
@@ -2148,6 +2200,7 @@ int main(void)
     RUN_TEST(test_overhang_wedge);
     RUN_TEST(test_steep_slab_low_edge);
     RUN_TEST(test_steep_body_slab_low_edge);
+    RUN_TEST(test_body_underside_is_no_floor);
     RUN_TEST(test_teleport_under_low_overhang);
     RUN_TEST(test_teleport_into_raised_floor_under_overhang);
     RUN_TEST(test_low_ledge_blocks);

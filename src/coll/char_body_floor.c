@@ -1486,13 +1486,19 @@ static void floor_over_foot(const cb_ctx_t *c, fm_vec3_t pos, float height, supp
         !cb_ray(c, cb_foot(c, pos), c->up, height, &h) || !v3_finite(h.normal) || !v3_finite(h.point) ||
         !isfinite(h.distance))
         return;
-    if (!(h.distance > step_eps)) {
+    if (!(h.distance > step_eps) || h.triangle < 0) {
         /* The foot itself is inside the collider body (the ray from it meets the body at
          * once): the meshes inside the body, looked at along the line from the face down to
          * the foot; the first one met, walkable, is the floor the foot is under. Falling
          * beside a collider body that stands on a tile (r 0.15, step 0.45), the foot went
          * through the tile's top and the room floor into the body, and the body stood steep
-         * on its face with the foot 48 mm under the tile top (soak s12 l28). */
+         * on its face with the foot 48 mm under the tile top (soak s12 l28).
+         * So too where the ray meets a collider body from below: a convex solid met from
+         * outside along up is met on its underside, never on a floor (a mesh triangle is
+         * two-sided, a body is not). A cylinder tilted 31 degrees, sunk in the room floor,
+         * its bottom cap's rim 13 mm under the floor beside the steep side the foot ray
+         * met: the body stood on that cap turned up, its foot 12.9 mm under the floor
+         * (soak s63 l245). */
         const char_body_settings_t *st = &c->body->settings;
         const uint8_t mesh = (uint8_t)(st->coll_types & COLL_TYPE_MESH);
         if (h.triangle >= 0 || !mesh ||
