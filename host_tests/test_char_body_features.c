@@ -150,6 +150,99 @@ static void test_ground_velocity_zero_on_static_floor_and_in_air(void)
     TEST_ASSERT_EQUAL_FLOAT(0.0f, fabsf(g.x) + fabsf(g.y) + fabsf(g.z));
 }
 
+/* A static floor is a static floor wherever the body stands on it: a body standing on an
+ * instance that is turned (about up), far from the origin and from the instance's own origin,
+ * stepped with a normal dt and with tiny ones, then jumping, reports no floor speed and keeps
+ * none on the jump: the jump's velocity only. (Soak s61 l125: the carry anchor's
+ * world-to-local-to-world round trip under such an instance left 1.02e-6 m at 14 m, which a
+ * 1e-9 s step read as 1018 m/s of floor motion, reported as 200 m/s on a body that moved
+ * 0.02 m/s.) The residue needs a local point about as far out as the world one (a small one
+ * is lost in the final rounding), and it depends on the coordinates: 25 standing spots around
+ * `at` on a floor of half size `half` placed at `o`. */
+static float static_rotated_floor_worst(fm_vec3_t o, float yaw, fm_vec3_t at, float half, float last_dt, int *spots_over)
+{
+    const float steps_dt[] = {1.0f / 60.0f, 1e-9f, 1e-6f, 1e-9f, 1.0f / 30.0f, 1e-9f};
+    float worst = 0.0f;
+    *spots_over = 0;
+    for (int sx = -3; sx <= 3; sx++) {
+        for (int sz = -3; sz <= 3; sz++) {
+            float worst_here = 0.0f;
+            cb_world_reset();
+            cb_geo_box(cb_vec(0.0f, at.y - o.y - 0.25f, 0.0f), cb_vec(half, 0.25f, half), 0.0f); /* top at y = at.y */
+            const coll_mesh_t *m = cb_geo_end();
+            TEST_ASSERT_NOT_NULL(m);
+            coll_transform_t xf = COLL_TRANSFORM_IDENTITY;
+            const fm_vec3_t yaxis = cb_vec(0.0f, 1.0f, 0.0f);
+            fm_quat_from_axis_angle(&xf.rot, &yaxis, yaw);
+            xf.pos = o;
+            TEST_ASSERT_NOT_NULL(cb_world_add_mesh(m, xf, 7)); /* never moved */
+            fm_vec3_t spot = cb_vec(0.731f * (float)sx, 0.0f, 0.677f * (float)sz);
+            cb_body_init(&body, &pos, cb_vec(at.x + spot.x, at.y, at.z + spot.z));
+            for (int i = 0; i < 10; i++) CB_STEP(&body, 1.0f / 60.0f);
+            TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
+            TEST_ASSERT_EQUAL_INT32(7, char_body_floor_id(&body));
+            /* standing, steps of every length: no floor speed, no speed */
+            for (unsigned k = 0; k < sizeof steps_dt / sizeof steps_dt[0]; k++) {
+                for (int i = 0; i < 3; i++) {
+                    CB_STEP(&body, steps_dt[k]);
+                    TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
+                    fm_vec3_t g = char_body_ground_velocity(&body), v = char_body_get_velocity(&body);
+                    float e = fmaxf(sqrtf(g.x * g.x + g.y * g.y + g.z * g.z), sqrtf(v.x * v.x + v.y * v.y + v.z * v.z));
+                    if (e > worst_here) worst_here = e;
+                }
+            }
+            /* the last standing step, then the jump in a step of 0.05 s (s61 l125: 1e-9 s,
+             * then the jump), then the air */
+            CB_STEP(&body, last_dt);
+            TEST_ASSERT_EQUAL_INT(CHAR_BODY_ON_FLOOR, char_body_ground_state(&body));
+            char_body_set_velocity(&body, cb_vec(0.0f, 6.0f, 0.0f));
+            CB_STEP(&body, 0.05f);
+            TEST_ASSERT_TRUE((char_body_events(&body)->flags & CHAR_BODY_EVENT_JUMPED) != 0);
+            /* along up: the jump's 6 m/s less one step of gravity */
+            float g_step = char_body_get_settings(&body)->gravity * 0.05f;
+            TEST_ASSERT_FLOAT_WITHIN(1e-3f, 6.0f - g_step, char_body_get_velocity(&body).y);
+            for (int i = 0; i < 10; i++) {
+                fm_vec3_t v = char_body_get_velocity(&body);
+                float across = sqrtf(v.x * v.x + v.z * v.z);
+                if (across > worst_here) worst_here = across;
+                TEST_ASSERT_FALSE(char_body_is_on_floor(&body));
+                CB_STEP(&body, 1.0f / 60.0f);
+            }
+            if (worst_here > 1e-3f) (*spots_over)++;
+            if (worst_here > worst) worst = worst_here;
+        }
+    }
+    return worst;
+}
+
+static void test_static_rotated_floor_far_away_has_no_speed(void)
+{
+    /* s61 l125's instance (pos, and its turn: quaternion y 0.4354, w -0.9002) and others */
+    const struct { fm_vec3_t o; float yaw; fm_vec3_t at; float half; const char *name; } cases[] = {
+        {{{-3.189f, 0.0f, 8.660f}}, 5.3822f, {{-0.8904f, 0.0785f, 13.9050f}}, 24.0f, "14 m (s61 l125's)"},
+        {{{0.0f, 0.0f, 0.0f}}, 0.61f, {{10.0f, 0.37f, 10.0f}}, 24.0f, "14 m"},
+        {{{0.0f, 1.7f, 0.0f}}, 2.3f, {{700.0f, 0.0f, -714.0f}}, 1100.0f, "1 km"},
+        {{{0.0f, 0.0f, 0.0f}}, 0.61f, {{0.0f, 0.0f, 0.0f}}, 24.0f, "the origin"},
+    };
+    const float last_dts[] = {1e-9f, 1e-6f, 1.0f / 60.0f};
+    float worst = 0.0f;
+    for (unsigned i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        for (unsigned j = 0; j < sizeof last_dts / sizeof last_dts[0]; j++) {
+            int over;
+            float w = static_rotated_floor_worst(cases[i].o, cases[i].yaw, cases[i].at, cases[i].half, last_dts[j], &over);
+            char label[144];
+            snprintf(label, sizeof label, "static turned floor, body at %s, last step before the jump %g s: worst speed"
+                     " standing or across the jump", cases[i].name, (double)last_dts[j]);
+            cb_report(label, w, "m/s");
+            snprintf(label, sizeof label, "static turned floor, body at %s, last step before the jump %g s: spots (of 49)"
+                     " over 1 mm/s", cases[i].name, (double)last_dts[j]);
+            cb_report(label, over, "");
+            if (w > worst) worst = w;
+        }
+    }
+    TEST_ASSERT_TRUE(worst < 1e-3f);
+}
+
 /* ---- 2. bodies that block each other ---- */
 
 #define NB 32
@@ -602,6 +695,7 @@ int main(void)
     RUN_TEST(test_jump_off_lift);
     RUN_TEST(test_leave_velocity_settings);
     RUN_TEST(test_ground_velocity_zero_on_static_floor_and_in_air);
+    RUN_TEST(test_static_rotated_floor_far_away_has_no_speed);
     RUN_TEST(test_bodies_block_head_on);
     RUN_TEST(test_bodies_slide_past);
     RUN_TEST(test_32_bodies_milling);

@@ -58,6 +58,15 @@ fm_vec3_t coll_transform_point(const coll_transform_t *xf, fm_vec3_t local);
  */
 bool coll_transform_point_inverse(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local);
 
+/**
+ * coll_transform_point_inverse, and *placed = coll_transform_point(xf, *local) (the same
+ * bits): where the local point is placed again, which the round trip leaves up to an ulp or
+ * so of the coordinates away from `world`. A point anchored by its placement, not by
+ * `world`, stays exactly where coll_transform_point puts it while xf does not change.
+ * Returns false, leaving both untouched, as coll_transform_point_inverse does.
+ */
+bool coll_transform_point_anchor(const coll_transform_t *xf, fm_vec3_t world, fm_vec3_t *local, fm_vec3_t *placed);
+
 #ifdef __cplusplus
 }
 #endif

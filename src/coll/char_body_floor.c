@@ -1882,11 +1882,14 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
     if (!s.steep) b->velocity = v3_reject(b->velocity, up);
     if (s.instance && b->settings.follow_floor) {
         fm_vec3_t anchor = s.steep ? s.point : cb_foot(c, *pos);
-        fm_vec3_t local;
-        if (coll_transform_point_inverse(&s.instance->xf, anchor, &local)) {
+        /* The world point is the local one placed again, not the anchor: the round trip
+         * (world to local to world under a turned instance) leaves a residue of an ulp of
+         * the coordinates, 1.02e-6 m at 14 m, over `tiny`, and the next step read it as the
+         * floor's motion: over a 1e-9 s step a chord of 1018 m/s, kept on a jump off the
+         * static floor (soak s61 l125). Placed by the transform coll_cb_carry_delta uses, a
+         * floor that did not move has a chord of exactly 0 at any scale. */
+        if (coll_transform_point_anchor(&s.instance->xf, anchor, &b->floor_local_point, &b->floor_world_point)) {
             b->floor_instance = s.instance;
-            b->floor_local_point = local;
-            b->floor_world_point = anchor;
             b->flags |= CB_FLAG_CARRY;
         }
     }
