@@ -1509,6 +1509,55 @@ static void test_gather_shrinks_its_box_on_dense_triangles(void)
     TEST_ASSERT_EQUAL_UINT32(1, st.gather_overflows);
 }
 
+/* A triangle listed in many of the gather's cells (long slivers over a fine grid: each in
+ * ~16 cells, 60 of them, so that many share a hash of the gather's dedup) is kept once, and
+ * every one inside the box is kept; over the whole box and over boxes that cut them. */
+static void test_gather_keeps_a_triangle_of_many_cells_once(void)
+{
+    const uint32_t n = 60;
+    for (uint32_t i = 0; i < n; i++) {
+        float z = 0.03f * (float)i, y = 0.01f * (float)(i % 7);
+        const float v[9] = { -2.0f, y, z, 2.0f, y + 0.02f, z + 0.5f, -2.0f, y, z + 0.04f };
+        for (int k = 0; k < 9; k++) g_verts[9 * i + (uint32_t)k] = v[k];
+        for (uint32_t k = 0; k < 3; k++) g_idx[3 * i + k] = 3 * i + k;
+    }
+    coll_mesh_build_opts_t o = { 0.25f, 0 };
+    const coll_mesh_t *m = build_mesh(0, 3 * n, n, &o);
+    coll_scene_t s;
+    coll_query_stats_t st;
+    coll_mesh_instance_t a;
+    scene_of_one_mesh(&s, &st, &a, m);
+    static coll_gather_t g;
+    const float boxes[3][6] = { { -2.1f, -0.1f, -0.1f, 2.1f, 0.2f, 2.4f },
+                                { -0.3f, -0.1f, 0.2f, 1.7f, 0.2f, 1.1f },
+                                { 0.5f, 0.0f, 0.9f, 1.5f, 0.05f, 1.6f } };
+    uint32_t kept = 0;
+    for (int b = 0; b < 3; b++) {
+        fm_vec3_t lo = {{ boxes[b][0], boxes[b][1], boxes[b][2] }}, hi = {{ boxes[b][3], boxes[b][4], boxes[b][5] }};
+        ASSERT_NO_ALLOC(coll_gather_begin(&g, &s, lo, hi, 0xFF, COLL_TYPE_MESH));
+        TEST_ASSERT_TRUE(g.valid);
+        for (uint32_t t = 0; t < n; t++) {
+            fm_vec3_t v[3];
+            coll_mesh_triangle(m, t, v);
+            /* (the cells list a triangle where its surface meets them: one whose box only
+             * meets the gathered box may be left out, not one with a vertex inside it) */
+            bool inside = b == 0;
+            for (int kk = 0; kk < 3; kk++) {
+                bool in = true;
+                for (int ax = 0; ax < 3; ax++)
+                    in = in && v[kk].v[ax] > lo.v[ax] + 1e-3f && v[kk].v[ax] < hi.v[ax] - 1e-3f;
+                inside = inside || in;
+            }
+            int found = 0;
+            for (uint16_t k = 0; k < g.ntris; k++) found += g.tris[k].tri == (int32_t)t;
+            TEST_ASSERT_TRUE_MESSAGE(found <= 1, "a triangle gathered twice");
+            if (inside) TEST_ASSERT_EQUAL_INT_MESSAGE(1, found, "a triangle inside the box is missing");
+            kept += (uint32_t)found;
+        }
+    }
+    TEST_ASSERT_TRUE(kept > n); /* the whole box kept all 60, the others some */
+}
+
 /* The triangles of an n x n grid of quads over the (n + 1)^2 vertices in g_verts (row by
  * row along x), two a quad split along the same diagonal, into g_idx: their count. */
 static uint32_t grid_quad_indices(int n)
@@ -2481,6 +2530,7 @@ int main(void)
     RUN_TEST(test_ball_overlaps_keep_one_contact_per_copy);
     RUN_TEST(test_dedup_overflow_falls_back_exactly);
     RUN_TEST(test_gather_shrinks_its_box_on_dense_triangles);
+    RUN_TEST(test_gather_keeps_a_triangle_of_many_cells_once);
     RUN_TEST(test_gather_cache_equals_fresh_gather);
     RUN_TEST(test_precision_far_from_origin);
     RUN_TEST(test_moving_platform_read_every_query);
