@@ -2134,6 +2134,41 @@ static void test_steep_face_over_tile_crack(void)
     TEST_ASSERT_TRUE(lowest >= top - 0.001f);
 }
 
+/* The same body on a plain steep face rising from a floor (no tiles, no crack): it slides
+ * down the face onto the floor, never standing on the face (the crack rule asked about the
+ * floor below a foot under a steep face must not hold the ball on the face itself). */
+static void test_steep_face_over_floor_slides_down(void)
+{
+    static const soak_shape_t shape = {0x1.1598fp-1f, 0x1.657f2ap+1f, 0x1.550fc6p-1f, 0x1.550fc6p-1f,
+                                        0x1.1a32ecp-1f, 0x1.4aa2cp+5f, 0x1.7aa2a6p+5f, 4, true};
+    for (int a = 0; a < 4; a++) {
+        const float deg = 40.0f + 12.0f * (float)a, t = tanf(deg * 3.14159265f / 180.0f);
+        cb_world_reset();
+        cb_geo_box(cb_vec(0.0f, -0.5f, 0.0f), cb_vec(8.0f, 0.5f, 8.0f), 0.0f);
+        /* the face rises along -x from its low edge at x 0 on the floor, up to 4 m */
+        cb_geo_quad(cb_vec(0.0f, 0.0f, -4.0f), cb_vec(0.0f, 0.0f, 4.0f), cb_vec(-4.0f / t, 4.0f, 4.0f),
+                    cb_vec(-4.0f / t, 4.0f, -4.0f));
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+        for (int x0 = 0; x0 < 6; x0++) {
+            pos = cb_vec(-0.2f - 0.25f * (float)x0, 3.5f, 0.0f);
+            char_body_init(&body, &pos);
+            char_body_settings_t s = soak_body_settings(&shape);
+            s.follow_floor = false;
+            char_body_configure(&body, &s);
+            bool bad = false;
+            for (int f = 0; f < 120; f++) {
+                CB_STEP(&body, 0x1.111112p-5f);
+                if (char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body) && pos.y > 0.005f) {
+                    bad = true;
+                }
+            }
+            TEST_ASSERT_FALSE(bad);
+            TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+            TEST_ASSERT_TRUE(pos.y < 0.005f);
+        }
+    }
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -2171,6 +2206,7 @@ int main(void)
     RUN_TEST(test_tile_edge_past_slab_edge_ahead);
     RUN_TEST(test_slab_edge_ahead_too_level_to_slide);
     RUN_TEST(test_steep_face_over_tile_crack);
+    RUN_TEST(test_steep_face_over_floor_slides_down);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
