@@ -1603,7 +1603,10 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
  * only) never meets the floor through it. The foot ray continued below the foot, within
  * reach: a walkable floor there is asked the crack rule (held_over), and where the edges
  * around the foot hold the ball above the foot (by more than half the step tolerance, as a
- * floor over the foot past the face is taken), the body stands on them, lifted. Running
+ * floor over the foot past the face is taken) and no higher than the steep face over it
+ * (else the rule's ball rests on something above the face, up to a step over the foot: not
+ * a crack under it; ungated it lifted bodies 0.26-0.63 m and left one hanging at rest beside
+ * walkable geometry, soak s30 l391), the body stands on them, lifted. Running
  * into a rotated box's face 51 degrees off up (steep for 31.6) that rises through a field of
  * floor tiles with 6.8 mm gaps (r 0.54, step 0.67), the body stood steep on the face and
  * slid down it; the foot guard put the foot into a gap beside a tile's side, and the foot
@@ -1619,7 +1622,7 @@ static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec
         return;
     support_t w = *s; /* held_over writes it only where the edges hold the ball */
     held_over(c, pos, reach, &h, h.distance - step_eps, &w);
-    if (!w.steep && w.gap < -0.5f * step_eps) *s = w;
+    if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) *s = w;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
