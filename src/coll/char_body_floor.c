@@ -1645,6 +1645,33 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
     if (crack_held(c, pos, reach, hit, gap, &w, &far)) *s = w;
 }
 
+/* Still on a steep face found above the foot, with no walkable face between it and the foot:
+ * the foot may be over a crack, and the look past the face (which reaches down to the foot
+ * only) never meets the floor through it. The foot ray continued below the foot, within
+ * reach: a walkable floor there is asked the crack rule (held_over), and where the edges
+ * around the foot hold the ball above the foot (by more than half the step tolerance, as a
+ * floor over the foot past the face is taken) and no higher than the steep face over it
+ * (else the rule's ball rests on something above the face, up to a step over the foot: not
+ * a crack under it; ungated it lifted bodies 0.26-0.63 m and left one hanging at rest beside
+ * walkable geometry, soak s30 l391), the body stands on them, lifted. Running
+ * into a rotated box's face 51 degrees off up (steep for 31.6) that rises through a field of
+ * floor tiles with 6.8 mm gaps (r 0.54, step 0.67), the body stood steep on the face and
+ * slid down it; the foot guard put the foot into a gap beside a tile's side, and the foot
+ * stood 24 mm under the tile tops around it, 0.31 m under the face (soak s65 l209). Kept
+ * out of line: a rare path (a steep face over the foot). */
+static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *s)
+{
+    const float step_eps = cb_len_tol(c, CB_STEP_EPS);
+    coll_ray_hit_t h;
+    if (!cb_ray(c, v3_madd(cb_foot(c, pos), c->up, step_eps), v3_scale(c->up, -1.0f), reach + step_eps, &h) ||
+        !v3_finite(h.normal) || !v3_finite(h.point) || !isfinite(h.distance) ||
+        !(v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle))
+        return;
+    support_t w = *s; /* held_over writes it only where the edges hold the ball */
+    held_over(c, pos, reach, &h, h.distance - step_eps, &w);
+    if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) *s = w;
+}
+
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)
 {
     char_body_t *b = c->body;
@@ -1792,8 +1819,10 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                  * tiles on its way down and never reached it (soak s4 l20: 3.1 mm). On a
                  * triangle soup half buried in the room floor the body stood on a steep
                  * soup face, its foot 34 mm under the floor (s5 l134). */
-                if (s.found && s.steep && gap < -step_eps)
+                if (s.found && s.steep && gap < -step_eps) {
                     floor_over_foot(c, *pos, -gap, &s);
+                    if (s.steep) steep_over_crack(c, *pos, reach, &s);
+                }
             }
         }
         /* held by the crack rule alone, over a floor the foot ray found out of reach below */
