@@ -1711,15 +1711,16 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
  * slid down it; the foot guard put the foot into a gap beside a tile's side, and the foot
  * stood 24 mm under the tile tops around it, 0.31 m under the face (soak s65 l209). Kept
  * out of line: a rare path (a steep face over the foot). With no walkable floor in reach
- * under the foot, or one the crack rule's ball does not rest over, the edges the foot went
- * down past (edges_over_foot): the body stood steep on a rotated
+ * under the foot, or one the crack rule's ball does not rest over at or under the face, the
+ * edges the foot went down past (edges_over_foot): the body stood steep on a rotated
  * slab's face 36 degrees off up (steep for 35.2) that dips into a field of floor tiles 0.10
  * m high with 15 mm cracks between them; sliding down it the foot went off a tile's edge
  * into a crack, over a lower face of the same slab 3.5 mm under it, 10.4 mm under the tile
  * tops (soak s67 l164: r 0.41, not grounded before, so the foot ray's reach was contact_eps;
  * later, falling back onto that face, the foot landed in the crack 26.9 mm under them; and
  * sliding along the face's foot, 54 mm down another crack in one step, the room floor in
- * reach through it, the rule's ball dropped from the sweep capsule rested on nothing). */
+ * reach through it, the rule's ball dropped from the sweep capsule rested on nothing; or
+ * held it 0.30 m over the foot, higher than the face). */
 static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *s)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
@@ -1727,9 +1728,15 @@ static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec
     support_t w = *s; /* written only where the edges hold the ball */
     if (cb_ray(c, v3_madd(cb_foot(c, pos), c->up, step_eps), v3_scale(c->up, -1.0f), reach + step_eps, &h) &&
         v3_finite(h.normal) && v3_finite(h.point) && isfinite(h.distance) &&
-        v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle)
+        v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle) {
         held_over(c, pos, reach, &h, h.distance - step_eps, &w);
-    if (w.steep) edges_over_foot(c, pos, &w);
+        if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) {
+            *s = w;
+            return;
+        }
+        w = *s;
+    }
+    edges_over_foot(c, pos, &w);
     if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) *s = w;
 }
 
