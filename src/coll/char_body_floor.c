@@ -1645,6 +1645,58 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
     if (crack_held(c, pos, reach, hit, gap, &w, &far)) *s = w;
 }
 
+/* Standing steep on a face over the foot with no floor in reach under it: the walkable
+ * edges the foot went down past this step, that hold the body's own ball at the foot above
+ * it. The ball, its bottom at the foot, overlaps them; resting on one l across up from the
+ * foot, its bottom is r - sqrt(r^2 - l^2) under that contact. Only walkable contacts no
+ * higher than the foot was before the step (the rule never lifts the body over where it
+ * was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
+ * a crack's two edges) is *s, not steep: the foot is in the step zone, inside the steep
+ * piece itself, and the ball meets that piece's edges 0.15-0.30 m deep (what the body
+ * stands on, not what holds it up): the highest rest would lift it out of the piece. */
+static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
+{
+    const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
+    const float r = c->radius;
+    const char_body_t *b = c->body;
+    const fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    const float level = v3_dot(v3_sub(before, pos), up) + cb_len_tol(c, CB_STEP_EPS);
+    if (!(level > 0.0f)) return;
+    coll_contact_t ct[CB_BALL_CONTACTS];
+    fm_vec3_t dir[CB_BALL_CONTACTS];
+    float rest[CB_BALL_CONTACTS];
+    uint32_t at[CB_BALL_CONTACTS];
+    const uint32_t n = cb_ball_overlaps(c, v3_madd(foot, up, r), r, ct);
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        const fm_vec3_t d = v3_sub(ct[i].point, foot), side = v3_reject(d, up);
+        const float h = v3_dot(d, up), l2 = v3_len2(side), tol = cb_len_tol(c, 1e-5f);
+        /* its side: where the contact is across up from the foot (an edge's normal leans
+         * the other way; an edge 0.4 mm off the foot's column left the normal's lean at
+         * rounding, where the point's own offset is still exact) */
+        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) >= b->cos_floor_max_angle) || !(l2 < r * r) ||
+            !(h > 0.0f) || !(h <= level) || !(l2 > tol * tol)) /* (right under the foot: no side) */
+            continue;
+        /* sorted by rest, lowest first */
+        const float hr = h - (r - sqrtf(r * r - l2));
+        uint32_t k = m++;
+        for (; k > 0 && rest[k - 1] > hr; k--) {
+            rest[k] = rest[k - 1];
+            dir[k] = dir[k - 1];
+            at[k] = at[k - 1];
+        }
+        rest[k] = hr;
+        dir[k] = v3_scale(side, 1.0f / sqrtf(l2));
+        at[k] = i;
+    }
+    for (uint32_t k = 2; k <= m; k++)
+        if (dirs_around(c, dir, k)) {
+            const coll_contact_t *e = &ct[at[k - 1]];
+            *s = (support_t){true, false, -rest[k - 1], up, e->point, e->id, NULL};
+            return;
+        }
+}
+
 /* Still on a steep face found above the foot, with no walkable face between it and the foot:
  * the foot may be over a crack, and the look past the face (which reaches down to the foot
  * only) never meets the floor through it. The foot ray continued below the foot, within
@@ -1658,17 +1710,33 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
  * floor tiles with 6.8 mm gaps (r 0.54, step 0.67), the body stood steep on the face and
  * slid down it; the foot guard put the foot into a gap beside a tile's side, and the foot
  * stood 24 mm under the tile tops around it, 0.31 m under the face (soak s65 l209). Kept
- * out of line: a rare path (a steep face over the foot). */
+ * out of line: a rare path (a steep face over the foot). With no walkable floor in reach
+ * under the foot, or one the crack rule's ball does not rest over at or under the face, the
+ * edges the foot went down past (edges_over_foot): the body stood steep on a rotated
+ * slab's face 36 degrees off up (steep for 35.2) that dips into a field of floor tiles 0.10
+ * m high with 15 mm cracks between them; sliding down it the foot went off a tile's edge
+ * into a crack, over a lower face of the same slab 3.5 mm under it, 10.4 mm under the tile
+ * tops (soak s67 l164: r 0.41, not grounded before, so the foot ray's reach was contact_eps;
+ * later, falling back onto that face, the foot landed in the crack 26.9 mm under them; and
+ * sliding along the face's foot, 54 mm down another crack in one step, the room floor in
+ * reach through it, the rule's ball dropped from the sweep capsule rested on nothing; or
+ * held it 0.30 m over the foot, higher than the face). */
 static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *s)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
     coll_ray_hit_t h;
-    if (!cb_ray(c, v3_madd(cb_foot(c, pos), c->up, step_eps), v3_scale(c->up, -1.0f), reach + step_eps, &h) ||
-        !v3_finite(h.normal) || !v3_finite(h.point) || !isfinite(h.distance) ||
-        !(v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle))
-        return;
-    support_t w = *s; /* held_over writes it only where the edges hold the ball */
-    held_over(c, pos, reach, &h, h.distance - step_eps, &w);
+    support_t w = *s; /* written only where the edges hold the ball */
+    if (cb_ray(c, v3_madd(cb_foot(c, pos), c->up, step_eps), v3_scale(c->up, -1.0f), reach + step_eps, &h) &&
+        v3_finite(h.normal) && v3_finite(h.point) && isfinite(h.distance) &&
+        v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle) {
+        held_over(c, pos, reach, &h, h.distance - step_eps, &w);
+        if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) {
+            *s = w;
+            return;
+        }
+        w = *s;
+    }
+    edges_over_foot(c, pos, &w);
     if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) *s = w;
 }
 
