@@ -2350,11 +2350,11 @@ static void test_steep_face_over_floor_slides_down(void)
 /* ---- a crack beside a higher tile under a tilted up, a third tile's side under it ---- */
 
 /* Soak s68 l50 (generator 2), every static triangle within 1.2 m of the foot, exact (as
- * floats): four modular floor tiles whose corners meet near the foot with 4-7 mm gaps
+ * floats): four modular floor tiles whose corners meet near the foot with 6.4 mm gaps
  * between them, three 0.2025 m high and one 0.1840 (18.5 mm lower); the room's floor and
  * walls, a ramp and a box floating 1.42 m over the floor beside them. r 0.78, step 0.33,
- * up 9 degrees off y. Airborne over the tiles, the step moved the foot 66 mm under the tile
- * tops into the 6.4 mm crack between the lower tile and a higher one, 19 mm from the
+ * up 13 degrees off y. Airborne over the tiles, the step moved the foot 66 mm under the tile
+ * tops into the 6.4 mm crack between the lower tile and a higher one, 4 mm past the
  * corners; the foot ray went on down the crack onto a third tile's side 0.12 m under the
  * foot (steep). The crack rule's ball first touched the higher tile's top 0.18 m across up
  * from the foot (the tilt) and its roll ran level along that top into the floating box's

@@ -1422,8 +1422,8 @@ static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
  * gap's other side may be higher, and the ball rests there, not on the lower top. The ball
  * dropped as the crack rule drops it: where its first contact is a walkable face (it rests
  * on a floor), that face's plane extended to the foot is where the foot stands when it is
- * higher than the top. Under an up 9 degrees off y, the foot in a 6.4 mm crack between a
- * tile and one 18.5 mm higher, 19 mm from where four tiles' corners meet: the foot ray went
+ * higher than the top. Under an up 13 degrees off y, the foot in a 6.4 mm crack between a
+ * tile and one 18.5 mm higher, 4 mm past where four tiles' corners meet: the foot ray went
  * down the crack past the corners onto a third tile's side 0.12 m under the foot; the crack
  * rule's first contact was the higher tile's top, 0.18 m across up from the foot (the tilt),
  * and its roll ran level along that top for 1.56 m into a slab's underside (a ceiling: it
