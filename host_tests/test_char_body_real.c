@@ -2475,6 +2475,21 @@ static void test_wedged_on_tile_edge_against_wall_is_grounded(void)
     TEST_ASSERT_TRUE(pos.y > 0.2f); /* on the tile's edge (0.237), not dropped to the floor */
 }
 
+/* The same body, wedged there: with the input turned away from the wall and the boxes it
+ * walks off. Before, every slide started 0.113 mm inside the wall and its push-out was
+ * refused, so the body never moved again, whatever the input. */
+static void test_wedged_against_wall_leaves_when_input_turns(void)
+{
+    s69_l158_body();
+    for (int f = 0; f < 20; f++) CB_STEP(&body, 0x1.99999ap-5f);
+    const fm_vec3_t wedged = pos;
+    body.input_velocity = cb_vec(-3.0f, 0.0f, -3.0f);
+    for (int f = 0; f < 10; f++) CB_STEP(&body, 0x1.99999ap-5f);
+    const float dx = pos.x - wedged.x, dz = pos.z - wedged.z, moved = sqrtf(dx * dx + dz * dz);
+    cb_report("wedged against a wall (s69 l158), input turned away: moved in 10 steps", moved, "m");
+    TEST_ASSERT_TRUE(moved > 0.5f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -2516,6 +2531,7 @@ int main(void)
     RUN_TEST(test_no_valley_under_tall_ramp_edge_stands_on_floor);
     RUN_TEST(test_steep_face_over_tile_crack);
     RUN_TEST(test_wedged_on_tile_edge_against_wall_is_grounded);
+    RUN_TEST(test_wedged_against_wall_leaves_when_input_turns);
     RUN_TEST(test_steep_face_over_floor_slides_down);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
