@@ -2803,6 +2803,149 @@ static void test_crack_beside_higher_tile_under_tilted_up(void)
     TEST_ASSERT_TRUE(foot.y >= top - 0.001f);
 }
 
+/* Soak s69 l158 (generator 2), the 78 static triangles within 1.2 m of the foot (floats of
+ * the checker's doubles; the level's triangle index after each): the room floor (y 0), the
+ * room wall at x 24, a tile 0.237 m high whose top edge runs under the capsule, and a stack of
+ * boxes (0.78-1.40 m high) whose shared vertical edge is 0.15 mm beside the capsule on the other
+ * side. The body (r 0.70, step 0.0005) presses into the wall and the boxes' edge, its sweep
+ * capsule's bottom ball on the tile's edge 4.6 degrees off up, its foot 5.6 cm past that edge
+ * over the room floor 0.235 m below. */
+static const float s69_l158_tris[][9] = {
+    {0x1p+4f, 0x0p+0f, -0x1p+3f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, -0x1p+3f}, /* 34 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.4a9586p+4f, 0x0p+0f, -0x1.b8e104p+2f, 0x1.4a9586p+4f, 0x1.3e43ap-3f, -0x1.b8e104p+2f, 0x1.6b6632p+4f, 0x1.3e43ap-3f, -0x1.0198bep+2f}, /* 678 */
+    {0x1.4a9586p+4f, 0x0p+0f, -0x1.b8e104p+2f, 0x1.6b6632p+4f, 0x1.3e43ap-3f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 679 */
+    {0x1.4a9586p+4f, 0x0p+0f, -0x1.b8e104p+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 682 */
+    {0x1.4a9586p+4f, 0x1.3e43ap-3f, -0x1.b8e104p+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-3f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.3e43ap-3f, -0x1.0198bep+2f}, /* 685 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.3e43ap-3f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-3f, -0x1.204ef2p+1f}, /* 688 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-3f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 689 */
+    {0x1.4e3aeep+4f, 0x0p+0f, -0x1.a483a8p+2f, 0x1.4e3aeep+4f, 0x1.3e43ap-2f, -0x1.a483a8p+2f, 0x1.6b6632p+4f, 0x1.3e43ap-2f, -0x1.0198bep+2f}, /* 690 */
+    {0x1.4e3aeep+4f, 0x0p+0f, -0x1.a483a8p+2f, 0x1.6b6632p+4f, 0x1.3e43ap-2f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 691 */
+    {0x1.4e3aeep+4f, 0x0p+0f, -0x1.a483a8p+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 694 */
+    {0x1.4e3aeep+4f, 0x1.3e43ap-2f, -0x1.a483a8p+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-2f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.3e43ap-2f, -0x1.0198bep+2f}, /* 697 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.3e43ap-2f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-2f, -0x1.204ef2p+1f}, /* 700 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-2f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 701 */
+    {0x1.51e056p+4f, 0x0p+0f, -0x1.90264ap+2f, 0x1.51e056p+4f, 0x1.dd656ep-2f, -0x1.90264ap+2f, 0x1.6b6632p+4f, 0x1.dd656ep-2f, -0x1.0198bep+2f}, /* 702 */
+    {0x1.51e056p+4f, 0x0p+0f, -0x1.90264ap+2f, 0x1.6b6632p+4f, 0x1.dd656ep-2f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 703 */
+    {0x1.51e056p+4f, 0x0p+0f, -0x1.90264ap+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 706 */
+    {0x1.51e056p+4f, 0x1.dd656ep-2f, -0x1.90264ap+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-2f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.dd656ep-2f, -0x1.0198bep+2f}, /* 709 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.dd656ep-2f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-2f, -0x1.204ef2p+1f}, /* 712 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-2f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 713 */
+    {0x1.5585cp+4f, 0x0p+0f, -0x1.7bc8eep+2f, 0x1.5585cp+4f, 0x1.3e43ap-1f, -0x1.7bc8eep+2f, 0x1.6b6632p+4f, 0x1.3e43ap-1f, -0x1.0198bep+2f}, /* 714 */
+    {0x1.5585cp+4f, 0x0p+0f, -0x1.7bc8eep+2f, 0x1.6b6632p+4f, 0x1.3e43ap-1f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 715 */
+    {0x1.5585cp+4f, 0x0p+0f, -0x1.7bc8eep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 718 */
+    {0x1.5585cp+4f, 0x1.3e43ap-1f, -0x1.7bc8eep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-1f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.3e43ap-1f, -0x1.0198bep+2f}, /* 721 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.3e43ap-1f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-1f, -0x1.204ef2p+1f}, /* 724 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap-1f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 725 */
+    {0x1.592b28p+4f, 0x0p+0f, -0x1.676b9p+2f, 0x1.592b28p+4f, 0x1.8dd486p-1f, -0x1.676b9p+2f, 0x1.6b6632p+4f, 0x1.8dd486p-1f, -0x1.0198bep+2f}, /* 726 */
+    {0x1.592b28p+4f, 0x0p+0f, -0x1.676b9p+2f, 0x1.6b6632p+4f, 0x1.8dd486p-1f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 727 */
+    {0x1.592b28p+4f, 0x0p+0f, -0x1.676b9p+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 730 */
+    {0x1.592b28p+4f, 0x1.8dd486p-1f, -0x1.676b9p+2f, 0x1.43cc6ep+4f, 0x1.8dd486p-1f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.8dd486p-1f, -0x1.0198bep+2f}, /* 733 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.8dd486p-1f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.8dd486p-1f, -0x1.204ef2p+1f}, /* 736 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.8dd486p-1f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 737 */
+    {0x1.5cd09p+4f, 0x0p+0f, -0x1.530e34p+2f, 0x1.5cd09p+4f, 0x1.dd656ep-1f, -0x1.530e34p+2f, 0x1.6b6632p+4f, 0x1.dd656ep-1f, -0x1.0198bep+2f}, /* 738 */
+    {0x1.5cd09p+4f, 0x0p+0f, -0x1.530e34p+2f, 0x1.6b6632p+4f, 0x1.dd656ep-1f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 739 */
+    {0x1.5cd09p+4f, 0x0p+0f, -0x1.530e34p+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 742 */
+    {0x1.5cd09p+4f, 0x1.dd656ep-1f, -0x1.530e34p+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-1f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.dd656ep-1f, -0x1.0198bep+2f}, /* 745 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.dd656ep-1f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-1f, -0x1.204ef2p+1f}, /* 748 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.dd656ep-1f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 749 */
+    {0x1.6075f8p+4f, 0x0p+0f, -0x1.3eb0d6p+2f, 0x1.6075f8p+4f, 0x1.167b2cp+0f, -0x1.3eb0d6p+2f, 0x1.6b6632p+4f, 0x1.167b2cp+0f, -0x1.0198bep+2f}, /* 750 */
+    {0x1.6075f8p+4f, 0x0p+0f, -0x1.3eb0d6p+2f, 0x1.6b6632p+4f, 0x1.167b2cp+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 751 */
+    {0x1.6075f8p+4f, 0x0p+0f, -0x1.3eb0d6p+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 754 */
+    {0x1.6075f8p+4f, 0x1.167b2cp+0f, -0x1.3eb0d6p+2f, 0x1.43cc6ep+4f, 0x1.167b2cp+0f, -0x1.204ef2p+1f, 0x1.6b6632p+4f, 0x1.167b2cp+0f, -0x1.0198bep+2f}, /* 757 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.167b2cp+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.167b2cp+0f, -0x1.204ef2p+1f}, /* 760 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.167b2cp+0f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 761 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.641b6p+4f, 0x1.3e43ap+0f, -0x1.2a537ap+2f, 0x1.6b6632p+4f, 0x1.3e43ap+0f, -0x1.0198bep+2f}, /* 762 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.6b6632p+4f, 0x1.3e43ap+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 763 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 766 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f, 0x1.3c819ep+4f, 0x0p+0f, -0x1.71c468p+1f}, /* 767 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.3c819ep+4f, 0x0p+0f, -0x1.71c468p+1f, 0x1.3c819ep+4f, 0x1.3e43ap+0f, -0x1.71c468p+1f}, /* 770 */
+    {0x1.641b6p+4f, 0x0p+0f, -0x1.2a537ap+2f, 0x1.3c819ep+4f, 0x1.3e43ap+0f, -0x1.71c468p+1f, 0x1.641b6p+4f, 0x1.3e43ap+0f, -0x1.2a537ap+2f}, /* 771 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.3e43ap+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap+0f, -0x1.204ef2p+1f}, /* 772 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.3e43ap+0f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 773 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.67c0cap+4f, 0x1.660c12p+0f, -0x1.15f61cp+2f, 0x1.6b6632p+4f, 0x1.660c12p+0f, -0x1.0198bep+2f}, /* 774 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.6b6632p+4f, 0x1.660c12p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f}, /* 775 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 778 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f, 0x1.402706p+4f, 0x0p+0f, -0x1.4909aep+1f}, /* 779 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.402706p+4f, 0x0p+0f, -0x1.4909aep+1f, 0x1.402706p+4f, 0x1.660c12p+0f, -0x1.4909aep+1f}, /* 782 */
+    {0x1.67c0cap+4f, 0x0p+0f, -0x1.15f61cp+2f, 0x1.402706p+4f, 0x1.660c12p+0f, -0x1.4909aep+1f, 0x1.67c0cap+4f, 0x1.660c12p+0f, -0x1.15f61cp+2f}, /* 783 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.6b6632p+4f, 0x1.660c12p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.660c12p+0f, -0x1.204ef2p+1f}, /* 784 */
+    {0x1.6b6632p+4f, 0x0p+0f, -0x1.0198bep+2f, 0x1.43cc6ep+4f, 0x1.660c12p+0f, -0x1.204ef2p+1f, 0x1.43cc6ep+4f, 0x0p+0f, -0x1.204ef2p+1f}, /* 785 */
+    {0x1.64a91ep+4f, 0x0p+0f, -0x1.b4752ep+1f, 0x1.715e66p+4f, 0x0p+0f, -0x1.105eb2p+2f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f}, /* 944 */
+    {0x1.64a91ep+4f, 0x0p+0f, -0x1.b4752ep+1f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f, 0x1.64a91ep+4f, 0x1.015a4p-2f, -0x1.b4752ep+1f}, /* 945 */
+    {0x1.572018p+4f, 0x0p+0f, -0x1.0d0fb4p+2f, 0x1.63d56p+4f, 0x0p+0f, -0x1.4333dp+2f, 0x1.715e66p+4f, 0x0p+0f, -0x1.105eb2p+2f}, /* 946 */
+    {0x1.572018p+4f, 0x0p+0f, -0x1.0d0fb4p+2f, 0x1.715e66p+4f, 0x0p+0f, -0x1.105eb2p+2f, 0x1.64a91ep+4f, 0x0p+0f, -0x1.b4752ep+1f}, /* 947 */
+    {0x1.572018p+4f, 0x1.015a4p-2f, -0x1.0d0fb4p+2f, 0x1.64a91ep+4f, 0x1.015a4p-2f, -0x1.b4752ep+1f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f}, /* 948 */
+    {0x1.572018p+4f, 0x1.015a4p-2f, -0x1.0d0fb4p+2f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f, 0x1.63d56p+4f, 0x1.015a4p-2f, -0x1.4333dp+2f}, /* 949 */
+    {0x1.63d56p+4f, 0x0p+0f, -0x1.4333dp+2f, 0x1.63d56p+4f, 0x1.015a4p-2f, -0x1.4333dp+2f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f}, /* 952 */
+    {0x1.63d56p+4f, 0x0p+0f, -0x1.4333dp+2f, 0x1.715e66p+4f, 0x1.015a4p-2f, -0x1.105eb2p+2f, 0x1.715e66p+4f, 0x0p+0f, -0x1.105eb2p+2f}, /* 953 */
+    {0x1.7164bcp+4f, 0x0p+0f, -0x1.1079bp+2f, 0x1.7e1a04p+4f, 0x0p+0f, -0x1.469dccp+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f}, /* 956 */
+    {0x1.7164bcp+4f, 0x0p+0f, -0x1.1079bp+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f, 0x1.7164bcp+4f, 0x1.e51f8cp-3f, -0x1.1079bp+2f}, /* 957 */
+    {0x1.63dbb6p+4f, 0x0p+0f, -0x1.434ecep+2f, 0x1.7090fcp+4f, 0x0p+0f, -0x1.7972e8p+2f, 0x1.7e1a04p+4f, 0x0p+0f, -0x1.469dccp+2f}, /* 958 */
+    {0x1.63dbb6p+4f, 0x0p+0f, -0x1.434ecep+2f, 0x1.7e1a04p+4f, 0x0p+0f, -0x1.469dccp+2f, 0x1.7164bcp+4f, 0x0p+0f, -0x1.1079bp+2f}, /* 959 */
+    {0x1.63dbb6p+4f, 0x1.e51f8cp-3f, -0x1.434ecep+2f, 0x1.7164bcp+4f, 0x1.e51f8cp-3f, -0x1.1079bp+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f}, /* 960 */
+    {0x1.63dbb6p+4f, 0x1.e51f8cp-3f, -0x1.434ecep+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f, 0x1.7090fcp+4f, 0x1.e51f8cp-3f, -0x1.7972e8p+2f}, /* 961 */
+    {0x1.63dbb6p+4f, 0x0p+0f, -0x1.434ecep+2f, 0x1.7164bcp+4f, 0x0p+0f, -0x1.1079bp+2f, 0x1.7164bcp+4f, 0x1.e51f8cp-3f, -0x1.1079bp+2f}, /* 962 */
+    {0x1.63dbb6p+4f, 0x0p+0f, -0x1.434ecep+2f, 0x1.7164bcp+4f, 0x1.e51f8cp-3f, -0x1.1079bp+2f, 0x1.63dbb6p+4f, 0x1.e51f8cp-3f, -0x1.434ecep+2f}, /* 963 */
+    {0x1.7090fcp+4f, 0x0p+0f, -0x1.7972e8p+2f, 0x1.7090fcp+4f, 0x1.e51f8cp-3f, -0x1.7972e8p+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f}, /* 964 */
+    {0x1.7090fcp+4f, 0x0p+0f, -0x1.7972e8p+2f, 0x1.7e1a04p+4f, 0x1.e51f8cp-3f, -0x1.469dccp+2f, 0x1.7e1a04p+4f, 0x0p+0f, -0x1.469dccp+2f}, /* 965 */
+};
+
+static const soak_shape_t s69_l158_shape = {0x1.66186p-1f, 0x1.6767d8p+0f, 0x1.f5f66p-12f, 0x1.cbad62p-4f,
+                                             0x1.192192p+0f, 0x1.c66d4ap+5f, 0x1.9db706p+5f, 7, true};
+
+/* The soak body's state at the shrunk replay's start (airborne, at rest against the wall). */
+static void s69_l158_body(void)
+{
+    cb_world_reset();
+    geo_tris(s69_l158_tris, sizeof s69_l158_tris / sizeof s69_l158_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(0x1.74cf74p+4f, 0x1.e09538p-3f, -0x1.19d468p+2f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = soak_body_settings(&s69_l158_shape);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(0x1.4p-11f, 0.0f, 0x1.2cp-11f));
+    body.input_velocity = cb_vec(0x1.67cd64p-1f, 0.0f, 0x1.b0e1d6p+1f); /* into the wall and the edge */
+}
+
+/* The top-ups off the tile's edge creep the capsule into the wall (0.03 mm a step); once more
+ * than min_depth (0.1 mm) in, the crack rule's drop met the wall at its start and gave up,
+ * and the slide's push-out had no room for its half skin beside the boxes' edge: the body
+ * hung at rest in the air, 0.5 mm over the tile's edge, for ever (the support oracle, soak
+ * s69 l158 frame 789). Resting on the edge it cannot roll off (the wall and the boxes' edge
+ * stop it), it is grounded on every step it does not move. */
+static void test_wedged_on_tile_edge_against_wall_is_grounded(void)
+{
+    s69_l158_body();
+    int at_rest_airborne = 0;
+    for (int f = 0; f < 40; f++) {
+        const fm_vec3_t before = pos;
+        CB_STEP(&body, 0x1.99999ap-5f);
+        const fm_vec3_t d = cb_vec(pos.x - before.x, pos.y - before.y, pos.z - before.z);
+        const bool still = d.x * d.x + d.y * d.y + d.z * d.z <= 1e-8f; /* 0.1 mm, SOAK_REST_MOVE */
+        if (f >= 2 && still && !char_body_is_on_floor(&body)) at_rest_airborne++;
+    }
+    cb_report("wedged on a tile edge against a wall (s69 l158): steps at rest in the air", at_rest_airborne, "");
+    TEST_ASSERT_EQUAL_INT(0, at_rest_airborne);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y > 0.2f); /* on the tile's edge (0.237), not dropped to the floor */
+}
+
+/* The same body, wedged there: with the input turned away from the wall and the boxes it
+ * walks off. Before, every slide started 0.113 mm inside the wall and its push-out was
+ * refused, so the body never moved again, whatever the input. */
+static void test_wedged_against_wall_leaves_when_input_turns(void)
+{
+    s69_l158_body();
+    for (int f = 0; f < 20; f++) CB_STEP(&body, 0x1.99999ap-5f);
+    const fm_vec3_t wedged = pos;
+    body.input_velocity = cb_vec(-3.0f, 0.0f, -3.0f);
+    for (int f = 0; f < 10; f++) CB_STEP(&body, 0x1.99999ap-5f);
+    const float dx = pos.x - wedged.x, dz = pos.z - wedged.z, moved = sqrtf(dx * dx + dz * dz);
+    cb_report("wedged against a wall (s69 l158), input turned away: moved in 10 steps", moved, "m");
+    TEST_ASSERT_TRUE(moved > 0.5f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -2843,6 +2986,8 @@ int main(void)
     RUN_TEST(test_valley_half_under_tall_ramp_edge_not_lifted);
     RUN_TEST(test_no_valley_under_tall_ramp_edge_stands_on_floor);
     RUN_TEST(test_steep_face_over_tile_crack);
+    RUN_TEST(test_wedged_on_tile_edge_against_wall_is_grounded);
+    RUN_TEST(test_wedged_against_wall_leaves_when_input_turns);
     RUN_TEST(test_steep_face_over_floor_slides_down);
     RUN_TEST(test_steep_slab_face_into_tile_crack);
     RUN_TEST(test_crack_beside_higher_tile_under_tilted_up);

@@ -427,7 +427,16 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
                 *pos = untopped;
             } else {
                 float d = hit.depth < c->radius ? hit.depth : c->radius;
-                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f))) {
+                /* Where half a skin more has no room (a crease narrower than the capsule
+                 * plus that), a shallow overlap (under the skin: a top-up's creep) is pushed
+                 * out to touching, verified the same way: every sweep from inside it starts
+                 * inside, so else the slide ended here on every step whatever the input.
+                 * Against the room wall and a box stack's vertical edge 0.15 mm beside the
+                 * capsule, top-ups off a tile's edge under the ball crept it 0.113 mm into
+                 * the wall, and it never moved again, the input turned away included (soak
+                 * s69 l158). */
+                if (!coll_cb_push_verified(c, pos, v3_scale(hit.normal, d + c->skin * 0.5f)) &&
+                    !(hit.depth < c->skin && coll_cb_push_verified(c, pos, v3_scale(hit.normal, d)))) {
                     /* No way out along the push: where the skin top-up and nudges since the
                      * last swept move went into this contact, take them back (the place
                      * before them was no deeper: the sweep that led there met nothing
