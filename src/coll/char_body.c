@@ -128,12 +128,6 @@ void char_body_set_velocity(char_body_t *body, fm_vec3_t velocity)
     body->velocity = velocity;
 }
 
-static fm_vec3_t owner_position(const char_body_t *body)
-{
-    if (body->owner_pos && v3_finite(*body->owner_pos)) return *body->owner_pos;
-    return body->origin;
-}
-
 fm_vec3_t char_body_foot_pos(const char_body_t *body)
 {
     if (!body) return v3(0.0f, 0.0f, 0.0f);

@@ -54,7 +54,7 @@ void char_body_debug_draw(const char_body_t *body, const coll_debug_draw_t *dd)
     if (!body || !dd || !dd->line) return;
     const char_body_settings_t *s = &body->settings;
     fm_vec3_t up = s->up;
-    fm_vec3_t pos = (body->owner_pos && v3_finite(*body->owner_pos)) ? *body->owner_pos : body->origin;
+    fm_vec3_t pos = owner_position(body);
     fm_vec3_t center = v3_add(pos, s->center_offset);
     float hh = 0.5f * s->height;
     fm_vec3_t foot = v3_madd(center, up, -hh);

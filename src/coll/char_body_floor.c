@@ -1436,7 +1436,7 @@ static bool held_over_floor(const cb_ctx_t *c, fm_vec3_t pos, float gap)
 static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *hit, float gap)
 {
     const char_body_t *b = c->body;
-    fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    fm_vec3_t before = owner_position(b);
     fm_vec3_t moved = v3_sub(pos, before);
     if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
     const float r = c->radius, nu = v3_dot(hit->normal, c->up);
@@ -1464,7 +1464,7 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
 static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
 {
     const char_body_t *b = c->body;
-    fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    fm_vec3_t before = owner_position(b);
     fm_vec3_t moved = v3_sub(pos, before);
     if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
     coll_sweep_hit_t h;
@@ -1747,7 +1747,7 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
     const float r = c->radius;
     const char_body_t *b = c->body;
-    const fm_vec3_t before = b->owner_pos && v3_finite(*b->owner_pos) ? *b->owner_pos : b->origin;
+    const fm_vec3_t before = owner_position(b);
     const float level = v3_dot(v3_sub(before, pos), up) + cb_len_tol(c, CB_STEP_EPS);
     if (!(level > 0.0f)) return;
     coll_contact_t ct[CB_BALL_CONTACTS];
@@ -1755,10 +1755,11 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
     float rest[CB_BALL_CONTACTS];
     uint32_t at[CB_BALL_CONTACTS];
     const uint32_t n = cb_ball_overlaps(c, v3_madd(foot, up, r), r, ct);
+    const float tol = cb_len_tol(c, 1e-5f);
     uint32_t m = 0;
     for (uint32_t i = 0; i < n; i++) {
         const fm_vec3_t d = v3_sub(ct[i].point, foot), side = v3_reject(d, up);
-        const float h = v3_dot(d, up), l2 = v3_len2(side), tol = cb_len_tol(c, 1e-5f);
+        const float h = v3_dot(d, up), l2 = v3_len2(side);
         /* its side: where the contact is across up from the foot (an edge's normal leans
          * the other way; an edge 0.4 mm off the foot's column left the normal's lean at
          * rounding, where the point's own offset is still exact) */
@@ -1809,6 +1810,13 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
  * sliding along the face's foot, 54 mm down another crack in one step, the room floor in
  * reach through it, the rule's ball dropped from the sweep capsule rested on nothing; or
  * held it 0.30 m over the foot, higher than the face). */
+/* steep_over_crack's gate: the edges hold the body walkable, above the foot (by more than
+ * half the step tolerance) and no higher than the steep face `face` over it. */
+static inline bool lifts_under_face(const support_t *w, const support_t *face, float step_eps)
+{
+    return !w->steep && w->gap < -0.5f * step_eps && w->gap >= face->gap - step_eps;
+}
+
 static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec3_t pos, float reach, support_t *s)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
@@ -1818,14 +1826,14 @@ static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec
         v3_finite(h.normal) && v3_finite(h.point) && isfinite(h.distance) &&
         v3_dot(h.normal, c->up) >= c->body->cos_floor_max_angle) {
         held_over(c, pos, reach, &h, h.distance - step_eps, &w);
-        if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) {
+        if (lifts_under_face(&w, s, step_eps)) {
             *s = w;
             return;
         }
         w = *s;
     }
     edges_over_foot(c, pos, &w);
-    if (!w.steep && w.gap < -0.5f * step_eps && w.gap >= s->gap - step_eps) *s = w;
+    if (lifts_under_face(&w, s, step_eps)) *s = w;
 }
 
 bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, bool jumping)

@@ -258,6 +258,13 @@ static inline bool cb_down_known(const cb_ctx_t *c, fm_vec3_t pos, float len, bo
     return true;
 }
 
+/** Where the body is: the owner's position if it is finite (the game may write it between
+ *  steps), else the body's own copy. */
+static inline fm_vec3_t owner_position(const char_body_t *body)
+{
+    if (body->owner_pos && v3_finite(*body->owner_pos)) return *body->owner_pos;
+    return body->origin;
+}
 /** Full capsule centre of an owner position. */
 static inline fm_vec3_t cb_center(const cb_ctx_t *c, fm_vec3_t pos)
 {
