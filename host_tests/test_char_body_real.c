@@ -3243,6 +3243,138 @@ static void test_bay_between_tile_fields_and_ramp_side(void)
     TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
 }
 
+/* Soak s72 l418 (generator 2), the static triangles within 4.5 m of the failing foot (floats
+ * of the checker's doubles, bounding-sphere culled; one instance a generator piece, as in the
+ * soak: the crack rule tells pieces apart): a 0.47 m crack between two rotated blocks
+ * 0.29 m high, its end closed by a third block 0.49 m high lying across it (its side over the
+ * far block's edge), the room floor and walls. */
+/* the room: its floor (y 0) and walls */
+static const float s72_l418_room[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, -0x1p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1.8p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, -0x1p+3f},
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+4f},
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+3f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, -0x1p+3f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+3f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f},
+    {-0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, -0x1p+3f},
+    {-0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}
+};
+/* another piece within 4.5 m (generator piece 12) */
+static const float s72_l418_piece12[][9] = {
+    {-0x1.c1d4d8p+3f, 0x0p+0f, -0x1.ace788p+1f, -0x1.f35fecp+3f, 0x0p+0f, -0x1.43d938p+1f, -0x1.f35fecp+3f, 0x1.e66c2cp-3f, -0x1.43d938p+1f},
+    {-0x1.c1d4d8p+3f, 0x0p+0f, -0x1.ace788p+1f, -0x1.f35fecp+3f, 0x1.e66c2cp-3f, -0x1.43d938p+1f, -0x1.c1d4d8p+3f, 0x1.e66c2cp-3f, -0x1.ace788p+1f},
+    {-0x1.a79144p+3f, 0x0p+0f, -0x1.cd7674p+0f, -0x1.f35fecp+3f, 0x0p+0f, -0x1.43d938p+1f, -0x1.c1d4d8p+3f, 0x0p+0f, -0x1.ace788p+1f},
+    {-0x1.a79144p+3f, 0x1.e66c2cp-3f, -0x1.cd7674p+0f, -0x1.c1d4d8p+3f, 0x1.e66c2cp-3f, -0x1.ace788p+1f, -0x1.f35fecp+3f, 0x1.e66c2cp-3f, -0x1.43d938p+1f},
+    {-0x1.a79144p+3f, 0x0p+0f, -0x1.cd7674p+0f, -0x1.c1d4d8p+3f, 0x0p+0f, -0x1.ace788p+1f, -0x1.c1d4d8p+3f, 0x1.e66c2cp-3f, -0x1.ace788p+1f},
+    {-0x1.d91c58p+3f, 0x0p+0f, -0x1.f6b3a6p-1f, -0x1.f35fecp+3f, 0x1.e66c2cp-3f, -0x1.43d938p+1f, -0x1.f35fecp+3f, 0x0p+0f, -0x1.43d938p+1f},
+    {-0x1.f388f4p+3f, 0x0p+0f, -0x1.438232p+1f, -0x1.128a04p+4f, 0x0p+0f, -0x1.b4e7c4p+0f, -0x1.128a04p+4f, 0x1.e66c2cp-3f, -0x1.b4e7c4p+0f},
+    {-0x1.f388f4p+3f, 0x0p+0f, -0x1.438232p+1f, -0x1.128a04p+4f, 0x1.e66c2cp-3f, -0x1.b4e7c4p+0f, -0x1.f388f4p+3f, 0x1.e66c2cp-3f, -0x1.438232p+1f},
+    {-0x1.d9456p+3f, 0x0p+0f, -0x1.f55792p-1f, -0x1.f388f4p+3f, 0x0p+0f, -0x1.438232p+1f, -0x1.f388f4p+3f, 0x1.e66c2cp-3f, -0x1.438232p+1f}
+};
+/* the crack: two rotated blocks 0.2908 m high, 0.47 m apart (one piece) */
+static const float s72_l418_crack[][9] = {
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.e629eep+3f, 0x1.29ccaep-2f, -0x1.80fa74p+1f, -0x1.1ec4c2p+4f, 0x1.29ccaep-2f, -0x1.58f1f8p+2f},
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.1ec4c2p+4f, 0x1.29ccaep-2f, -0x1.58f1f8p+2f, -0x1.1ec4c2p+4f, 0x0p+0f, -0x1.58f1f8p+2f},
+    {-0x1.9de902p+3f, 0x0p+0f, -0x1.661ffcp+2f, -0x1.f5489ap+3f, 0x0p+0f, -0x1.fe94b8p+2f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f},
+    {-0x1.9de902p+3f, 0x0p+0f, -0x1.661ffcp+2f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f, -0x1.9de902p+3f, 0x1.29ccaep-2f, -0x1.661ffcp+2f},
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.1ec4c2p+4f, 0x0p+0f, -0x1.58f1f8p+2f, -0x1.f5489ap+3f, 0x0p+0f, -0x1.fe94b8p+2f},
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.f5489ap+3f, 0x0p+0f, -0x1.fe94b8p+2f, -0x1.9de902p+3f, 0x0p+0f, -0x1.661ffcp+2f},
+    {-0x1.e629eep+3f, 0x1.29ccaep-2f, -0x1.80fa74p+1f, -0x1.9de902p+3f, 0x1.29ccaep-2f, -0x1.661ffcp+2f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f},
+    {-0x1.e629eep+3f, 0x1.29ccaep-2f, -0x1.80fa74p+1f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f, -0x1.1ec4c2p+4f, 0x1.29ccaep-2f, -0x1.58f1f8p+2f},
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.9de902p+3f, 0x0p+0f, -0x1.661ffcp+2f, -0x1.9de902p+3f, 0x1.29ccaep-2f, -0x1.661ffcp+2f},
+    {-0x1.e629eep+3f, 0x0p+0f, -0x1.80fa74p+1f, -0x1.9de902p+3f, 0x1.29ccaep-2f, -0x1.661ffcp+2f, -0x1.e629eep+3f, 0x1.29ccaep-2f, -0x1.80fa74p+1f},
+    {-0x1.1ec4c2p+4f, 0x0p+0f, -0x1.58f1f8p+2f, -0x1.1ec4c2p+4f, 0x1.29ccaep-2f, -0x1.58f1f8p+2f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f},
+    {-0x1.1ec4c2p+4f, 0x0p+0f, -0x1.58f1f8p+2f, -0x1.f5489ap+3f, 0x1.29ccaep-2f, -0x1.fe94b8p+2f, -0x1.f5489ap+3f, 0x0p+0f, -0x1.fe94b8p+2f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.245cecp+4f, 0x1.29ccaep-2f, -0x1.6c77dcp+2f, -0x1.582628p+4f, 0x1.29ccaep-2f, -0x1.109834p+3f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.582628p+4f, 0x1.29ccaep-2f, -0x1.109834p+3f, -0x1.582628p+4f, 0x0p+0f, -0x1.109834p+3f},
+    {-0x1.003c76p+4f, 0x0p+0f, -0x1.090d4ep+3f, -0x1.3405b2p+4f, 0x0p+0f, -0x1.636996p+3f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f},
+    {-0x1.003c76p+4f, 0x0p+0f, -0x1.090d4ep+3f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f, -0x1.003c76p+4f, 0x1.29ccaep-2f, -0x1.090d4ep+3f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.582628p+4f, 0x0p+0f, -0x1.109834p+3f, -0x1.3405b2p+4f, 0x0p+0f, -0x1.636996p+3f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.3405b2p+4f, 0x0p+0f, -0x1.636996p+3f, -0x1.003c76p+4f, 0x0p+0f, -0x1.090d4ep+3f},
+    {-0x1.245cecp+4f, 0x1.29ccaep-2f, -0x1.6c77dcp+2f, -0x1.003c76p+4f, 0x1.29ccaep-2f, -0x1.090d4ep+3f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f},
+    {-0x1.245cecp+4f, 0x1.29ccaep-2f, -0x1.6c77dcp+2f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f, -0x1.582628p+4f, 0x1.29ccaep-2f, -0x1.109834p+3f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.003c76p+4f, 0x0p+0f, -0x1.090d4ep+3f, -0x1.003c76p+4f, 0x1.29ccaep-2f, -0x1.090d4ep+3f},
+    {-0x1.245cecp+4f, 0x0p+0f, -0x1.6c77dcp+2f, -0x1.003c76p+4f, 0x1.29ccaep-2f, -0x1.090d4ep+3f, -0x1.245cecp+4f, 0x1.29ccaep-2f, -0x1.6c77dcp+2f},
+    {-0x1.582628p+4f, 0x0p+0f, -0x1.109834p+3f, -0x1.582628p+4f, 0x1.29ccaep-2f, -0x1.109834p+3f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f},
+    {-0x1.582628p+4f, 0x0p+0f, -0x1.109834p+3f, -0x1.3405b2p+4f, 0x1.29ccaep-2f, -0x1.636996p+3f, -0x1.3405b2p+4f, 0x0p+0f, -0x1.636996p+3f}
+};
+/* the dead end: two blocks 0.4864 m high (one piece), one lying across the crack's end, its side over the far block's edge */
+static const float s72_l418_end[][9] = {
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.49497cp+4f, 0x1.f21c98p-2f, -0x1.98e6aep+1f, -0x1.29a298p+4f, 0x1.f21c98p-2f, -0x1.5c83dcp+2f},
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.29a298p+4f, 0x1.f21c98p-2f, -0x1.5c83dcp+2f, -0x1.29a298p+4f, 0x0p+0f, -0x1.5c83dcp+2f},
+    {-0x1.0eec44p+4f, 0x0p+0f, 0x1.6f35c8p-7f, -0x1.de8abep+3f, 0x0p+0f, -0x1.1eb1d4p+1f, -0x1.de8abep+3f, 0x1.f21c98p-2f, -0x1.1eb1d4p+1f},
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.29a298p+4f, 0x0p+0f, -0x1.5c83dcp+2f, -0x1.de8abep+3f, 0x0p+0f, -0x1.1eb1d4p+1f},
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.de8abep+3f, 0x0p+0f, -0x1.1eb1d4p+1f, -0x1.0eec44p+4f, 0x0p+0f, 0x1.6f35c8p-7f},
+    {-0x1.49497cp+4f, 0x1.f21c98p-2f, -0x1.98e6aep+1f, -0x1.0eec44p+4f, 0x1.f21c98p-2f, 0x1.6f35c8p-7f, -0x1.de8abep+3f, 0x1.f21c98p-2f, -0x1.1eb1d4p+1f},
+    {-0x1.49497cp+4f, 0x1.f21c98p-2f, -0x1.98e6aep+1f, -0x1.de8abep+3f, 0x1.f21c98p-2f, -0x1.1eb1d4p+1f, -0x1.29a298p+4f, 0x1.f21c98p-2f, -0x1.5c83dcp+2f},
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.0eec44p+4f, 0x0p+0f, 0x1.6f35c8p-7f, -0x1.0eec44p+4f, 0x1.f21c98p-2f, 0x1.6f35c8p-7f},
+    {-0x1.49497cp+4f, 0x0p+0f, -0x1.98e6aep+1f, -0x1.0eec44p+4f, 0x1.f21c98p-2f, 0x1.6f35c8p-7f, -0x1.49497cp+4f, 0x1.f21c98p-2f, -0x1.98e6aep+1f},
+    {-0x1.29a298p+4f, 0x0p+0f, -0x1.5c83dcp+2f, -0x1.29a298p+4f, 0x1.f21c98p-2f, -0x1.5c83dcp+2f, -0x1.de8abep+3f, 0x1.f21c98p-2f, -0x1.1eb1d4p+1f},
+    {-0x1.29a298p+4f, 0x0p+0f, -0x1.5c83dcp+2f, -0x1.de8abep+3f, 0x1.f21c98p-2f, -0x1.1eb1d4p+1f, -0x1.de8abep+3f, 0x0p+0f, -0x1.1eb1d4p+1f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.295a38p+4f, 0x1.f21c98p-2f, -0x1.5dcd4p+2f, -0x1.0a3cfp+4f, 0x1.f21c98p-2f, -0x1.eb6b6cp+2f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.0a3cfp+4f, 0x1.f21c98p-2f, -0x1.eb6b6cp+2f, -0x1.0a3cfp+4f, 0x0p+0f, -0x1.eb6b6cp+2f},
+    {-0x1.ddfa02p+3f, 0x0p+0f, -0x1.21449cp+1f, -0x1.9fbf72p+3f, 0x0p+0f, -0x1.1e407ap+2f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f},
+    {-0x1.ddfa02p+3f, 0x0p+0f, -0x1.21449cp+1f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f, -0x1.ddfa02p+3f, 0x1.f21c98p-2f, -0x1.21449cp+1f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.0a3cfp+4f, 0x0p+0f, -0x1.eb6b6cp+2f, -0x1.9fbf72p+3f, 0x0p+0f, -0x1.1e407ap+2f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.9fbf72p+3f, 0x0p+0f, -0x1.1e407ap+2f, -0x1.ddfa02p+3f, 0x0p+0f, -0x1.21449cp+1f},
+    {-0x1.295a38p+4f, 0x1.f21c98p-2f, -0x1.5dcd4p+2f, -0x1.ddfa02p+3f, 0x1.f21c98p-2f, -0x1.21449cp+1f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f},
+    {-0x1.295a38p+4f, 0x1.f21c98p-2f, -0x1.5dcd4p+2f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f, -0x1.0a3cfp+4f, 0x1.f21c98p-2f, -0x1.eb6b6cp+2f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.ddfa02p+3f, 0x0p+0f, -0x1.21449cp+1f, -0x1.ddfa02p+3f, 0x1.f21c98p-2f, -0x1.21449cp+1f},
+    {-0x1.295a38p+4f, 0x0p+0f, -0x1.5dcd4p+2f, -0x1.ddfa02p+3f, 0x1.f21c98p-2f, -0x1.21449cp+1f, -0x1.295a38p+4f, 0x1.f21c98p-2f, -0x1.5dcd4p+2f},
+    {-0x1.0a3cfp+4f, 0x0p+0f, -0x1.eb6b6cp+2f, -0x1.0a3cfp+4f, 0x1.f21c98p-2f, -0x1.eb6b6cp+2f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f},
+    {-0x1.0a3cfp+4f, 0x0p+0f, -0x1.eb6b6cp+2f, -0x1.9fbf72p+3f, 0x1.f21c98p-2f, -0x1.1e407ap+2f, -0x1.9fbf72p+3f, 0x0p+0f, -0x1.1e407ap+2f}
+};
+
+/* Running along the crack (r 0.39, walkable to 37.8 degrees, 24 m/s) into its dead end, the
+ * sweep capsule stopped on the end block's top edge 0.30 m ahead of the foot. The crack rule's
+ * drop met that edge, slid past it onto the near block's edge, and its roll into the crack met
+ * the same top edge again, beside the roll (0.42 along up, a steep edge, not a face): no wedge,
+ * no hole, and the foot stood on the room floor in the crack, 54 mm under the ball resting on
+ * both blocks' edges (soak s72 l418 frame 1474). Rolled on along that edge (steep_edge_beside),
+ * the ball meets the far block's edge: a wedge, and the foot stands on the near edge's rest.
+ * The soak's two frames from the replay's start. */
+static void test_crack_dead_end_under_taller_block_edge(void)
+{
+    cb_world_reset();
+    geo_tris(s72_l418_room, sizeof s72_l418_room / sizeof s72_l418_room[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    geo_tris(s72_l418_piece12, sizeof s72_l418_piece12 / sizeof s72_l418_piece12[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    geo_tris(s72_l418_crack, sizeof s72_l418_crack / sizeof s72_l418_crack[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    geo_tris(s72_l418_end, sizeof s72_l418_end / sizeof s72_l418_end[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(-0x1.b3216ap+3f, 0x1.398c42p+0f, -0x1.4b1abep+3f);
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.9391a4p-2f, 0x1.398c42p+1f, 0x1.6134cp-2f, 0x1.97f7bp-1f,
+                                        0x1.523662p-1f, 0x1.55f33ap+5f, 0x1.4acb2p+5f, 6, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.04e266p+4f, 0.0f, 0x1.1e0696p+4f));
+    for (int i = 0; i < 2; i++) {
+        body.input_velocity = cb_vec(-0x1.04e266p+4f, -0x1.ab2ad2p+1f, 0x1.1e0696p+4f);
+        CB_STEP(&body, 0x1.99999ap-3f);
+    }
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    /* the far block's edge (-18.2727, -5.6948)-(-16.0148, -8.2829), top 0.2908: the ball at the
+     * foot resting on it sags r - sqrt(r^2 - l^2) under it, l its distance across up from the
+     * foot (the checker's least raise; the near block's edge is 0.10 m from the foot) */
+    const float ex = -16.0148f + 18.2727f, ez = -8.2829f + 5.6948f, el = sqrtf(ex * ex + ez * ez);
+    const float l = fabsf((foot.x + 18.2727f) * ez - (foot.z + 5.6948f) * ex) / el, r = shape.radius;
+    const float held = 0.2908f - (r - sqrtf(r * r - l * l));
+    cb_report("crack's dead end under a taller block's edge (s72 l418): grounded foot (block tops 0.2908)", foot.y,
+              "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3289,6 +3421,7 @@ int main(void)
     RUN_TEST(test_steep_slab_face_into_tile_crack);
     RUN_TEST(test_crack_beside_higher_tile_under_tilted_up);
     RUN_TEST(test_bay_between_tile_fields_and_ramp_side);
+    RUN_TEST(test_crack_dead_end_under_taller_block_edge);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

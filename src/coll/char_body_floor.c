@@ -545,6 +545,23 @@ static bool groove_wedge(const cb_ctx_t *c, const coll_sweep_hit_t *h1, const co
     return v3_dot(v3_norm(s1), v3_norm(s2)) < -0.05f;
 }
 
+/* A contact the crack rule's roll met that is too steep to stand on and not on a face (a taller
+ * piece's top edge), beside the roll: its normal across up not against the roll's way across
+ * (ball_held's wedge test, -0.05, says no wedge). As a wall's face there, it stops the roll
+ * before the gap's far side, and the ball rolls on along it. Running along a 0.47 m crack
+ * between two blocks 0.29 m high (r 0.39, walkable to 37.8 degrees) into its dead end, a
+ * block 0.49 m high lying across it, the drop met that block's top edge, slid past it onto the
+ * near block's edge, and the roll from there into the crack met the same top edge again
+ * (0.42 along up, at right angles to the roll): no wedge, no hole, the rule gave up and the
+ * foot stood on the room floor in the crack, 54 mm under the ball resting on both edges (soak
+ * s72 l418). A steep edge against the roll is the gap's far side (the wedge test decides). */
+static bool steep_edge_beside(const cb_ctx_t *c, const coll_sweep_hit_t *h, fm_vec3_t across)
+{
+    const fm_vec3_t s = v3_reject(h->normal, c->up);
+    return v3_dot(h->normal, c->up) < c->body->cos_floor_max_angle && v3_dot(s, across) >= -0.05f * v3_len(s) &&
+           !floor_face(c, h);
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -718,7 +735,7 @@ again:;
                                                                  : cb_sweep(c, b1, r, 0.0f, way, &h2));
         float descent = met ? (h2.t > 0.0f ? h2.t : 0.0f) * roll * sink : 0.0f;
         if (over_floor && met && isfinite(h2.t) && v3_finite(h2.normal) && v3_dot(h2.normal, up) > -0.1f &&
-            steep_face(c, &h2)) {
+            (steep_face(c, &h2) || steep_edge_beside(c, &h2, across))) {
             /* Over a floor, a wall the ball touches beside it (a body against a room wall or
              * a block's side over a crack) stops the roll before the gap's far side: the ball
              * rolls on along the wall (soak s2 l333, s3 l3, l172: held by nothing, the foot
