@@ -3375,6 +3375,116 @@ static void test_crack_dead_end_under_taller_block_edge(void)
     TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
 }
 
+/* ---- a pocket between a ramp's top edge and a tile field's corner ---- */
+
+/* Soak s76 l68 (generator 2), every static triangle within 1.2 m of the foot, exact (as
+ * floats): a field of floor tiles 0.24-0.27 m high turned about y, with 9 mm gaps; a
+ * single-sided ramp 9 degrees off up whose free top edge, 0.196 m over the room floor, runs
+ * 0.31 m west of the foot; r 0.37, step 0.53, running north at 23.8 m/s (dt 1/240) on the
+ * room floor into the pocket between that edge, the corner of a tile 0.242 m high 0.27 m
+ * east and a tile 0.258 m high 46 mm ahead. */
+static const float s76_l68_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1p+3f},
+    {0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f},
+    {0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f},
+    {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f},
+    {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f},
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f},
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f},
+    {0x1.6607f6p+3f, 0x1.f47914p-8f, 0x1.c4347ep+3f, 0x1.5c091ep+3f, 0x1.f47914p-8f, 0x1.1d84e2p+4f, 0x1.833138p+3f, 0x1.9087e4p-3f, 0x1.1f2a78p+4f},
+    {0x1.6607f6p+3f, 0x1.f47914p-8f, 0x1.c4347ep+3f, 0x1.833138p+3f, 0x1.9087e4p-3f, 0x1.1f2a78p+4f, 0x1.8d301p+3f, 0x1.9087e4p-3f, 0x1.c77fa8p+3f},
+    {0x1.b2be56p+3f, 0x1.74ccdep-4f, 0x1.703448p+2f, 0x1.04a26p+4f, 0x1.3610fap-5f, 0x1.9b267ap+3f, 0x1.0a1498p+4f, 0x1.86937p+2f, 0x1.98742p+3f},
+    {0x1.cc0424p+3f, 0x0p+0f, 0x1.cedd28p+3f, 0x1.d43a76p+3f, 0x0p+0f, 0x1.fc3c4p+3f, 0x1.d43a76p+3f, 0x1.0fe3c8p-2f, 0x1.fc3c4p+3f},
+    {0x1.cc0424p+3f, 0x0p+0f, 0x1.cedd28p+3f, 0x1.d43a76p+3f, 0x1.0fe3c8p-2f, 0x1.fc3c4p+3f, 0x1.cc0424p+3f, 0x1.0fe3c8p-2f, 0x1.cedd28p+3f},
+    {0x1.f9633cp+3f, 0x0p+0f, 0x1.c6a6d6p+3f, 0x1.d43a76p+3f, 0x0p+0f, 0x1.fc3c4p+3f, 0x1.cc0424p+3f, 0x0p+0f, 0x1.cedd28p+3f},
+    {0x1.f9633cp+3f, 0x1.0fe3c8p-2f, 0x1.c6a6d6p+3f, 0x1.cc0424p+3f, 0x1.0fe3c8p-2f, 0x1.cedd28p+3f, 0x1.d43a76p+3f, 0x1.0fe3c8p-2f, 0x1.fc3c4p+3f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.cbbb54p+3f, 0x1.ef9f3ap-3f, 0x1.ceea56p+3f, 0x1.d3f1a6p+3f, 0x1.ef9f3ap-3f, 0x1.fc496ep+3f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.d3f1a6p+3f, 0x1.ef9f3ap-3f, 0x1.fc496ep+3f, 0x1.d3f1a6p+3f, 0x0p+0f, 0x1.fc496ep+3f},
+    {0x1.9e5c3ap+3f, 0x0p+0f, 0x1.d720a8p+3f, 0x1.a6928cp+3f, 0x0p+0f, 0x1.023fep+4f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f},
+    {0x1.9e5c3ap+3f, 0x0p+0f, 0x1.d720a8p+3f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f, 0x1.9e5c3ap+3f, 0x1.ef9f3ap-3f, 0x1.d720a8p+3f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.d3f1a6p+3f, 0x0p+0f, 0x1.fc496ep+3f, 0x1.a6928cp+3f, 0x0p+0f, 0x1.023fep+4f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.a6928cp+3f, 0x0p+0f, 0x1.023fep+4f, 0x1.9e5c3ap+3f, 0x0p+0f, 0x1.d720a8p+3f},
+    {0x1.cbbb54p+3f, 0x1.ef9f3ap-3f, 0x1.ceea56p+3f, 0x1.9e5c3ap+3f, 0x1.ef9f3ap-3f, 0x1.d720a8p+3f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f},
+    {0x1.cbbb54p+3f, 0x1.ef9f3ap-3f, 0x1.ceea56p+3f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f, 0x1.d3f1a6p+3f, 0x1.ef9f3ap-3f, 0x1.fc496ep+3f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.9e5c3ap+3f, 0x0p+0f, 0x1.d720a8p+3f, 0x1.9e5c3ap+3f, 0x1.ef9f3ap-3f, 0x1.d720a8p+3f},
+    {0x1.cbbb54p+3f, 0x0p+0f, 0x1.ceea56p+3f, 0x1.9e5c3ap+3f, 0x1.ef9f3ap-3f, 0x1.d720a8p+3f, 0x1.cbbb54p+3f, 0x1.ef9f3ap-3f, 0x1.ceea56p+3f},
+    {0x1.d3f1a6p+3f, 0x0p+0f, 0x1.fc496ep+3f, 0x1.d3f1a6p+3f, 0x1.ef9f3ap-3f, 0x1.fc496ep+3f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f},
+    {0x1.d3f1a6p+3f, 0x0p+0f, 0x1.fc496ep+3f, 0x1.a6928cp+3f, 0x1.ef9f3ap-3f, 0x1.023fep+4f, 0x1.a6928cp+3f, 0x0p+0f, 0x1.023fep+4f},
+    {0x1.a69fbap+3f, 0x0p+0f, 0x1.026448p+4f, 0x1.aed60cp+3f, 0x1.0997fep-2f, 0x1.1913d4p+4f, 0x1.a69fbap+3f, 0x1.0997fep-2f, 0x1.026448p+4f},
+    {0x1.d3fed2p+3f, 0x0p+0f, 0x1.fc923ep+3f, 0x1.aed60cp+3f, 0x0p+0f, 0x1.1913d4p+4f, 0x1.a69fbap+3f, 0x0p+0f, 0x1.026448p+4f},
+    {0x1.d3fed2p+3f, 0x1.0997fep-2f, 0x1.fc923ep+3f, 0x1.a69fbap+3f, 0x1.0997fep-2f, 0x1.026448p+4f, 0x1.aed60cp+3f, 0x1.0997fep-2f, 0x1.1913d4p+4f},
+    {0x1.d3fed2p+3f, 0x0p+0f, 0x1.fc923ep+3f, 0x1.a69fbap+3f, 0x0p+0f, 0x1.026448p+4f, 0x1.a69fbap+3f, 0x1.0997fep-2f, 0x1.026448p+4f},
+    {0x1.d3fed2p+3f, 0x0p+0f, 0x1.fc923ep+3f, 0x1.a69fbap+3f, 0x1.0997fep-2f, 0x1.026448p+4f, 0x1.d3fed2p+3f, 0x1.0997fep-2f, 0x1.fc923ep+3f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.9e136ap+3f, 0x1.07d72p-2f, 0x1.d72dd6p+3f, 0x1.a649bcp+3f, 0x1.07d72p-2f, 0x1.024676p+4f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.a649bcp+3f, 0x1.07d72p-2f, 0x1.024676p+4f, 0x1.a649bcp+3f, 0x0p+0f, 0x1.024676p+4f},
+    {0x1.70b452p+3f, 0x0p+0f, 0x1.df6426p+3f, 0x1.78eaa4p+3f, 0x0p+0f, 0x1.0661ap+4f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f},
+    {0x1.70b452p+3f, 0x0p+0f, 0x1.df6426p+3f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f, 0x1.70b452p+3f, 0x1.07d72p-2f, 0x1.df6426p+3f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.a649bcp+3f, 0x0p+0f, 0x1.024676p+4f, 0x1.78eaa4p+3f, 0x0p+0f, 0x1.0661ap+4f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.78eaa4p+3f, 0x0p+0f, 0x1.0661ap+4f, 0x1.70b452p+3f, 0x0p+0f, 0x1.df6426p+3f},
+    {0x1.9e136ap+3f, 0x1.07d72p-2f, 0x1.d72dd6p+3f, 0x1.70b452p+3f, 0x1.07d72p-2f, 0x1.df6426p+3f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f},
+    {0x1.9e136ap+3f, 0x1.07d72p-2f, 0x1.d72dd6p+3f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f, 0x1.a649bcp+3f, 0x1.07d72p-2f, 0x1.024676p+4f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.70b452p+3f, 0x0p+0f, 0x1.df6426p+3f, 0x1.70b452p+3f, 0x1.07d72p-2f, 0x1.df6426p+3f},
+    {0x1.9e136ap+3f, 0x0p+0f, 0x1.d72dd6p+3f, 0x1.70b452p+3f, 0x1.07d72p-2f, 0x1.df6426p+3f, 0x1.9e136ap+3f, 0x1.07d72p-2f, 0x1.d72dd6p+3f},
+    {0x1.a649bcp+3f, 0x0p+0f, 0x1.024676p+4f, 0x1.a649bcp+3f, 0x1.07d72p-2f, 0x1.024676p+4f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f},
+    {0x1.a649bcp+3f, 0x0p+0f, 0x1.024676p+4f, 0x1.78eaa4p+3f, 0x1.07d72p-2f, 0x1.0661ap+4f, 0x1.78eaa4p+3f, 0x0p+0f, 0x1.0661ap+4f},
+    {0x1.a656eap+3f, 0x0p+0f, 0x1.026adep+4f, 0x1.a656eap+3f, 0x1.07d72p-2f, 0x1.026adep+4f, 0x1.ae8d3cp+3f, 0x1.07d72p-2f, 0x1.191a6cp+4f},
+    {0x1.a656eap+3f, 0x0p+0f, 0x1.026adep+4f, 0x1.812e24p+3f, 0x0p+0f, 0x1.1d3594p+4f, 0x1.78f7d2p+3f, 0x0p+0f, 0x1.068608p+4f},
+    {0x1.a656eap+3f, 0x1.07d72p-2f, 0x1.026adep+4f, 0x1.78f7d2p+3f, 0x1.07d72p-2f, 0x1.068608p+4f, 0x1.812e24p+3f, 0x1.07d72p-2f, 0x1.1d3594p+4f},
+    {0x1.a656eap+3f, 0x0p+0f, 0x1.026adep+4f, 0x1.78f7d2p+3f, 0x0p+0f, 0x1.068608p+4f, 0x1.78f7d2p+3f, 0x1.07d72p-2f, 0x1.068608p+4f},
+    {0x1.a656eap+3f, 0x0p+0f, 0x1.026adep+4f, 0x1.78f7d2p+3f, 0x1.07d72p-2f, 0x1.068608p+4f, 0x1.a656eap+3f, 0x1.07d72p-2f, 0x1.026adep+4f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.706b82p+3f, 0x1.07d72p-2f, 0x1.df7154p+3f, 0x1.78a1d4p+3f, 0x1.07d72p-2f, 0x1.066836p+4f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.78a1d4p+3f, 0x1.07d72p-2f, 0x1.066836p+4f, 0x1.78a1d4p+3f, 0x0p+0f, 0x1.066836p+4f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.78a1d4p+3f, 0x0p+0f, 0x1.066836p+4f, 0x1.4b42bcp+3f, 0x0p+0f, 0x1.0a836p+4f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.4b42bcp+3f, 0x0p+0f, 0x1.0a836p+4f, 0x1.430c6ap+3f, 0x0p+0f, 0x1.e7a7a6p+3f},
+    {0x1.706b82p+3f, 0x1.07d72p-2f, 0x1.df7154p+3f, 0x1.430c6ap+3f, 0x1.07d72p-2f, 0x1.e7a7a6p+3f, 0x1.4b42bcp+3f, 0x1.07d72p-2f, 0x1.0a836p+4f},
+    {0x1.706b82p+3f, 0x1.07d72p-2f, 0x1.df7154p+3f, 0x1.4b42bcp+3f, 0x1.07d72p-2f, 0x1.0a836p+4f, 0x1.78a1d4p+3f, 0x1.07d72p-2f, 0x1.066836p+4f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.430c6ap+3f, 0x0p+0f, 0x1.e7a7a6p+3f, 0x1.430c6ap+3f, 0x1.07d72p-2f, 0x1.e7a7a6p+3f},
+    {0x1.706b82p+3f, 0x0p+0f, 0x1.df7154p+3f, 0x1.430c6ap+3f, 0x1.07d72p-2f, 0x1.e7a7a6p+3f, 0x1.706b82p+3f, 0x1.07d72p-2f, 0x1.df7154p+3f}
+};
+
+/* The crack rule's ball met the north tile's edge first, 0.993 along up; a piece beyond the
+ * centre (piece_beyond), so the hole test alone decides: lowered half a radius below that
+ * edge the ball's bottom was still 73 mm over the room floor, it touched only the tiles
+ * (north and east), no hole, and the foot stood on the floor 25.6 mm under the ball resting
+ * on the ramp's edge with the tile corner opposite (soak s76 l68 frame 1666). On the floor the
+ * ball meets the ramp's edge too: a hole (hole_at_floor), the foot stands on the north tile's
+ * edge. */
+static void test_pocket_between_ramp_edge_and_tile_corner(void)
+{
+    cb_world_reset();
+    geo_tris(s76_l68_tris, sizeof s76_l68_tris / sizeof s76_l68_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* the soak body's state before its failing step: grounded on the room floor, running
+     * north (owner = foot) */
+    const fm_vec3_t start = cb_vec(0x1.95d728p+3f, 0.0f, 0x1.d41c74p+3f);
+    const fm_vec3_t run = cb_vec(-0x1.03ebd6p-1f, 0.0f, 0x1.7c8b22p+4f);
+    pos = start;
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.7618cp-2f, 0x1.cf789ap+1f, 0x1.0d132ap-1f, 0x1.78f63p-1f,
+                                        0x1.087262p+0f, 0x1.de3f2ep+5f, 0x1.1cc8cap+5f, 6, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.follow_floor = false;
+    char_body_configure(&body, &s);
+    CB_STEP(&body, 0x1.111112p-8f); /* settle: grounded on the room floor (the soak's state) */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    pos = start;
+    char_body_set_velocity(&body, run);
+    body.input_velocity = cb_vec(-0x1.03ebd6p-1f, -0x1.565684p+3f, 0x1.7c8b22p+4f);
+    CB_STEP(&body, 0x1.111112p-8f);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    /* the ball resting on the ramp's top edge (0.1956, 0.309 m across up from the foot): the
+     * checker's least rest over that pocket */
+    const float r = 0x1.7618cp-2f, held = 0.1956f - (r - sqrtf(r * r - 0.309f * 0.309f));
+    cb_report("pocket between a ramp's edge and a tile corner (s76 l68): grounded foot (least rest 0.0256)", foot.y,
+              "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.z > 14.7f); /* past the line between the ramp's edge and the corner */
+    TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3422,6 +3532,7 @@ int main(void)
     RUN_TEST(test_crack_beside_higher_tile_under_tilted_up);
     RUN_TEST(test_bay_between_tile_fields_and_ramp_side);
     RUN_TEST(test_crack_dead_end_under_taller_block_edge);
+    RUN_TEST(test_pocket_between_ramp_edge_and_tile_corner);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

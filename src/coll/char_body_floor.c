@@ -484,13 +484,25 @@ static bool ball_in_hole(const cb_ctx_t *c, fm_vec3_t bc, fm_vec3_t side, const 
  * anything but a ramp's steep side), the ball lowered 0.11 m into the room floor met the
  * ramp's side edge, east of the foot, above its centre; the tiles' edges north, west and
  * north-east left a gap of 182 degrees across up, no hole, and the foot stood 131 mm under the
- * ball resting on the west tile's corner with that ramp edge opposite (soak s71 l422). Out of
- * line: a rare path (ball_in_hole has failed over a floor). False where the lowered ball did
- * not go through the floor (nothing to try again). */
-static __attribute__((noinline)) bool hole_at_floor(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, fm_vec3_t *bc)
+ * ball resting on the west tile's corner with that ramp edge opposite (soak s71 l422).
+ * So too where the lowered ball stopped short of the floor, for a first contact almost under
+ * the ball's centre (n.up > 0.99, piece_beyond's bound): a lower side of the hole far across
+ * up touches only a ball lower than half a radius under the first contact. Running (r 0.37,
+ * step 0.53) on the room floor into a pocket 0.58 m wide between a single-sided ramp's free
+ * top edge, 0.196 m high 0.31 m west of the foot, and a tile's corner 0.242 m high east of
+ * it, a tile 0.258 m high 46 mm ahead: the first contact was that tile's edge, 0.993 along
+ * up; lowered half a radius the ball, its bottom 73 mm over the floor, met only the tiles
+ * (north and east), no hole, and the foot stood on the floor 25.6 mm under the ball resting
+ * on the ramp's edge with the corner opposite (soak s76 l68). On the floor it meets the
+ * ramp's edge too. Out of line: a rare path (ball_in_hole has failed over a floor). False
+ * where the lowered ball is on the floor already (nothing to try again). */
+static __attribute__((noinline)) bool hole_at_floor(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float n1u,
+                                                    fm_vec3_t *bc)
 {
-    const float below = -floor_gap - (v3_dot(v3_sub(*bc, foot), c->up) - c->radius);
-    if (!(below > cb_len_tol(c, CB_STEP_EPS))) return false;
+    const float below = -floor_gap - (v3_dot(v3_sub(*bc, foot), c->up) - c->radius), tol = cb_len_tol(c, CB_STEP_EPS);
+    /* (through the floor: n.up > 0.995, as s71 l422's 0.998; short of it: > 0.99, s76 l68's
+     * 0.993. For any first contact, the console's stairs course paid +0.39 %) */
+    if (below > tol ? !(n1u > 0.995f) : !(below < -tol && n1u > 0.99f)) return false;
     *bc = v3_madd(*bc, c->up, below);
     return true;
 }
@@ -1020,9 +1032,9 @@ again:;
                 return held_at(c1, reach, gap, up, h1.point, &h1, out, far_out);
             }
             /* (once more with its bottom on the floor under the foot, for a first contact
-             * nearly under the ball's centre, as s71 l422's, 0.998 along up: hole_at_floor.
-             * For any first contact, the console's stairs course paid +0.39 %) */
-            if (!over_floor || !under || !(n1u > 0.995f) || !hole_at_floor(c, foot, floor_gap, &bh)) break;
+             * nearly under the ball's centre, as s71 l422's, 0.998 along up, and s76 l68's,
+             * 0.993: hole_at_floor) */
+            if (!over_floor || !under || !(n1u > 0.99f) || !hole_at_floor(c, foot, floor_gap, n1u, &bh)) break;
         }
         if (hole_only) { /* no hole holds it: its roll may (a groove, a wedge: soak s35 l296) */
             hole_only = false;
