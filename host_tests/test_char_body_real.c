@@ -3248,7 +3248,7 @@ static void test_bay_between_tile_fields_and_ramp_side(void)
  * the failing foot (floats of the checker's doubles, bounding-sphere culled), one mesh instance
  * per piece as in the soak (the room; two blocks 0.4696 m high whose facing edges, direction
  * (-0.933, -0.359), leave a 0.498 m slot between them; a block 0.8288 m high standing in the
- * south one; a wedge, a tall slab and a low tile farther off). */
+ * north one (-z); a wedge, a tall slab and a low tile farther off). */
 static const float s84_l357_tris[][9] = {
     {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1.8p+4f},
     {-0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f},
@@ -3312,9 +3312,9 @@ static const uint8_t s84_l357_piece_tris[] = {7, 10, 10, 5, 10, 5, 9};
 /* The body walks on the room floor at 4.6 m/s into the open east end of the slot. The crack
  * rule's first look dropped the ball onto the 0.83 m block's corner (in the step zone, of
  * another piece than the floor, behind the motion); level_beyond's ray a radius beyond it went
- * out of the slot's mouth past the north block's corner onto the room floor, piece_behind only
+ * out of the slot's mouth past the south block's corner onto the room floor, piece_behind only
  * looked over a tilted floor, and the foot stood on the floor in the slot, 282 mm under the
- * checker's least rest (the ball on the north block's edge, 0.38 m across) (soak s84 l357 frame
+ * checker's least rest (the ball on the south block's edge, 0.38 m across) (soak s84 l357 frame
  * 1538). Now piece_behind looks for the far piece over a level floor too (another piece's edge):
  * the edges hold the ball and the foot stands over the slot. The soak's two replay frames. */
 static void test_slot_mouth_beside_taller_block_corner(void)
@@ -3339,7 +3339,7 @@ static void test_slot_mouth_beside_taller_block_corner(void)
     CB_STEP(&body, 0x1.86e168p-3f);
     CB_STEP(&body, 0x1.99999ap-5f);
     const fm_vec3_t foot = char_body_foot_pos(&body);
-    /* the checker's least rest: the ball on the north block's edge (0.4696), 0.382 m across */
+    /* the checker's least rest: the ball on the south block's edge (0.4696), 0.382 m across */
     const float r = 0x1.ee5274p-2f, held = 0.4696f - (r - sqrtf(r * r - 0.382f * 0.382f));
     cb_report("slot mouth beside a taller block's corner (s84 l357): grounded foot (block tops 0.4696)", foot.y, "m");
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));

@@ -1230,10 +1230,10 @@ static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
          * may pass beside the gap's far side and out of its open end onto the foot's own
          * floor. Walking at 4.6 m/s (r 0.48, step 0.91) into the open end of a 0.50 m slot
          * between two blocks 0.47 m high, the first look dropped the ball onto the edge of
-         * a third block 0.83 m high standing in the south one, 0.42 m across up behind the
-         * motion; the ray beyond it went past the north block's corner onto the room floor,
+         * a third block 0.83 m high standing in the north one (-z), 0.42 m across up behind the
+         * motion; the ray beyond it went past the south block's corner onto the room floor,
          * the rule was not asked, and the foot stood on the floor in the slot, 282 mm under
-         * the ball resting on the north block's edge (soak s84 l357). The full rule holds
+         * the ball resting on the south block's edge (soak s84 l357). The full rule holds
          * the ball over the slot. A staircase's own nosings behind a body walking down it
          * are edges of the piece it stands on (one mesh): still not looked at. */
         if ((!(nu > 0.0f) || !(c->radius * v3_dot(side, under->normal) > c->contact_eps * nu)) &&
