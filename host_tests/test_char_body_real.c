@@ -3485,6 +3485,110 @@ static void test_pocket_between_ramp_edge_and_tile_corner(void)
     TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
 }
 
+/* Soak s84 l357 (generator 2, r 0.48, h 3.10, step 0.91, snap 1.34, floor angle 63.3 degrees,
+ * 1 slide, up +y, the owner point the capsule's centre): the 56 static triangles within 1.2 m of
+ * the failing foot (floats of the checker's doubles, bounding-sphere culled), one mesh instance
+ * per piece as in the soak (the room; two blocks 0.4696 m high whose facing edges, direction
+ * (-0.933, -0.359), leave a 0.498 m slot between them; a block 0.8288 m high standing in the
+ * north one (-z); a wedge, a tall slab and a low tile farther off). */
+static const float s84_l357_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1.8p+4f},
+    {-0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f},
+    {-0x1p+3f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f},
+    {0x0p+0f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x1p+3f, 0x0p+0f, -0x1p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f},
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f},
+    {-0x1.2ebbeap+1f, 0x0p+0f, -0x1.83826p+4f, -0x1.2ebbeap+1f, 0x1.e0dc74p-2f, -0x1.83826p+4f, -0x1.d198acp+1f, 0x1.e0dc74p-2f, -0x1.4e8de2p+4f},
+    {-0x1.2ebbeap+1f, 0x0p+0f, -0x1.83826p+4f, -0x1.d198acp+1f, 0x1.e0dc74p-2f, -0x1.4e8de2p+4f, -0x1.d198acp+1f, 0x0p+0f, -0x1.4e8de2p+4f},
+    {-0x1.1975aap+2f, 0x0p+0f, -0x1.900328p+4f, -0x1.6ae40cp+2f, 0x0p+0f, -0x1.5b0eaap+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f},
+    {-0x1.1975aap+2f, 0x0p+0f, -0x1.900328p+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f, -0x1.1975aap+2f, 0x1.e0dc74p-2f, -0x1.900328p+4f},
+    {-0x1.2ebbeap+1f, 0x0p+0f, -0x1.83826p+4f, -0x1.d198acp+1f, 0x0p+0f, -0x1.4e8de2p+4f, -0x1.6ae40cp+2f, 0x0p+0f, -0x1.5b0eaap+4f},
+    {-0x1.2ebbeap+1f, 0x0p+0f, -0x1.83826p+4f, -0x1.6ae40cp+2f, 0x0p+0f, -0x1.5b0eaap+4f, -0x1.1975aap+2f, 0x0p+0f, -0x1.900328p+4f},
+    {-0x1.2ebbeap+1f, 0x1.e0dc74p-2f, -0x1.83826p+4f, -0x1.1975aap+2f, 0x1.e0dc74p-2f, -0x1.900328p+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f},
+    {-0x1.2ebbeap+1f, 0x1.e0dc74p-2f, -0x1.83826p+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f, -0x1.d198acp+1f, 0x1.e0dc74p-2f, -0x1.4e8de2p+4f},
+    {-0x1.d198acp+1f, 0x0p+0f, -0x1.4e8de2p+4f, -0x1.d198acp+1f, 0x1.e0dc74p-2f, -0x1.4e8de2p+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f},
+    {-0x1.d198acp+1f, 0x0p+0f, -0x1.4e8de2p+4f, -0x1.6ae40cp+2f, 0x1.e0dc74p-2f, -0x1.5b0eaap+4f, -0x1.6ae40cp+2f, 0x0p+0f, -0x1.5b0eaap+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.e877dp+1f, 0x1.e0dc74p-2f, -0x1.471e12p+4f, -0x1.21c5c6p+2f, 0x1.e0dc74p-2f, -0x1.2980e8p+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.21c5c6p+2f, 0x1.e0dc74p-2f, -0x1.2980e8p+4f, -0x1.21c5c6p+2f, 0x0p+0f, -0x1.2980e8p+4f},
+    {-0x1.76539ep+2f, 0x0p+0f, -0x1.539edap+4f, -0x1.a3dd7cp+2f, 0x1.e0dc74p-2f, -0x1.3601bp+4f, -0x1.76539ep+2f, 0x1.e0dc74p-2f, -0x1.539edap+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.21c5c6p+2f, 0x0p+0f, -0x1.2980e8p+4f, -0x1.a3dd7cp+2f, 0x0p+0f, -0x1.3601bp+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.a3dd7cp+2f, 0x0p+0f, -0x1.3601bp+4f, -0x1.76539ep+2f, 0x0p+0f, -0x1.539edap+4f},
+    {-0x1.e877dp+1f, 0x1.e0dc74p-2f, -0x1.471e12p+4f, -0x1.76539ep+2f, 0x1.e0dc74p-2f, -0x1.539edap+4f, -0x1.a3dd7cp+2f, 0x1.e0dc74p-2f, -0x1.3601bp+4f},
+    {-0x1.e877dp+1f, 0x1.e0dc74p-2f, -0x1.471e12p+4f, -0x1.a3dd7cp+2f, 0x1.e0dc74p-2f, -0x1.3601bp+4f, -0x1.21c5c6p+2f, 0x1.e0dc74p-2f, -0x1.2980e8p+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.76539ep+2f, 0x0p+0f, -0x1.539edap+4f, -0x1.76539ep+2f, 0x1.e0dc74p-2f, -0x1.539edap+4f},
+    {-0x1.e877dp+1f, 0x0p+0f, -0x1.471e12p+4f, -0x1.76539ep+2f, 0x1.e0dc74p-2f, -0x1.539edap+4f, -0x1.e877dp+1f, 0x1.e0dc74p-2f, -0x1.471e12p+4f},
+    {-0x1.21c5c6p+2f, 0x0p+0f, -0x1.2980e8p+4f, -0x1.21c5c6p+2f, 0x1.e0dc74p-2f, -0x1.2980e8p+4f, -0x1.a3dd7cp+2f, 0x1.e0dc74p-2f, -0x1.3601bp+4f},
+    {-0x1.7455p+3f, 0x0p+0f, -0x1.9ec8c8p+3f, -0x1.aa5312p+2f, 0x1.e9a702p+1f, -0x1.344778p+4f, -0x1.dfaa1ep+2f, 0x1.e9a702p+1f, -0x1.3c627cp+4f},
+    {-0x1.dfaa1ep+2f, 0x0p+0f, -0x1.3c627cp+4f, -0x1.aa5312p+2f, 0x1.e9a702p+1f, -0x1.344778p+4f, -0x1.aa5312p+2f, 0x0p+0f, -0x1.344778p+4f},
+    {-0x1.7455p+3f, 0x0p+0f, -0x1.9ec8c8p+3f, -0x1.dfaa1ep+2f, 0x0p+0f, -0x1.3c627cp+4f, -0x1.aa5312p+2f, 0x0p+0f, -0x1.344778p+4f},
+    {-0x1.7455p+3f, 0x0p+0f, -0x1.9ec8c8p+3f, -0x1.dfaa1ep+2f, 0x1.e9a702p+1f, -0x1.3c627cp+4f, -0x1.dfaa1ep+2f, 0x0p+0f, -0x1.3c627cp+4f},
+    {-0x1.59a978p+3f, 0x0p+0f, -0x1.8e92cp+3f, -0x1.aa5312p+2f, 0x0p+0f, -0x1.344778p+4f, -0x1.aa5312p+2f, 0x1.e9a702p+1f, -0x1.344778p+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.ecd742p+1f, 0x1.a85a24p-1f, -0x1.54bd1cp+4f, -0x1.287a46p+3f, 0x1.a85a24p-1f, -0x1.456c22p+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.287a46p+3f, 0x1.a85a24p-1f, -0x1.456c22p+4f, -0x1.287a46p+3f, 0x0p+0f, -0x1.456c22p+4f},
+    {-0x1.fe14ep+1f, 0x0p+0f, -0x1.60edb6p+4f, -0x1.2cc9aep+3f, 0x0p+0f, -0x1.519cbcp+4f, -0x1.2cc9aep+3f, 0x1.a85a24p-1f, -0x1.519cbcp+4f},
+    {-0x1.fe14ep+1f, 0x0p+0f, -0x1.60edb6p+4f, -0x1.2cc9aep+3f, 0x1.a85a24p-1f, -0x1.519cbcp+4f, -0x1.fe14ep+1f, 0x1.a85a24p-1f, -0x1.60edb6p+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.287a46p+3f, 0x0p+0f, -0x1.456c22p+4f, -0x1.2cc9aep+3f, 0x0p+0f, -0x1.519cbcp+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.2cc9aep+3f, 0x0p+0f, -0x1.519cbcp+4f, -0x1.fe14ep+1f, 0x0p+0f, -0x1.60edb6p+4f},
+    {-0x1.ecd742p+1f, 0x1.a85a24p-1f, -0x1.54bd1cp+4f, -0x1.fe14ep+1f, 0x1.a85a24p-1f, -0x1.60edb6p+4f, -0x1.2cc9aep+3f, 0x1.a85a24p-1f, -0x1.519cbcp+4f},
+    {-0x1.ecd742p+1f, 0x1.a85a24p-1f, -0x1.54bd1cp+4f, -0x1.2cc9aep+3f, 0x1.a85a24p-1f, -0x1.519cbcp+4f, -0x1.287a46p+3f, 0x1.a85a24p-1f, -0x1.456c22p+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.fe14ep+1f, 0x0p+0f, -0x1.60edb6p+4f, -0x1.fe14ep+1f, 0x1.a85a24p-1f, -0x1.60edb6p+4f},
+    {-0x1.ecd742p+1f, 0x0p+0f, -0x1.54bd1cp+4f, -0x1.fe14ep+1f, 0x1.a85a24p-1f, -0x1.60edb6p+4f, -0x1.ecd742p+1f, 0x1.a85a24p-1f, -0x1.54bd1cp+4f},
+    {-0x1.6751ap+2f, 0x0p+0f, -0x1.e4cd3ap+3f, -0x1.411b4p+1f, 0x1.033b4ep+3f, -0x1.d5ff64p+3f, -0x1.411b4p+1f, 0x0p+0f, -0x1.d5ff64p+3f},
+    {-0x1.6ac69p+2f, 0x0p+0f, -0x1.d932dap+3f, -0x1.6751ap+2f, 0x1.200902p+3f, -0x1.e4cd3ap+3f, -0x1.6751ap+2f, 0x0p+0f, -0x1.e4cd3ap+3f},
+    {-0x1.48051ep+1f, 0x0p+0f, -0x1.ca6504p+3f, -0x1.411b4p+1f, 0x0p+0f, -0x1.d5ff64p+3f, -0x1.411b4p+1f, 0x1.200902p+3f, -0x1.d5ff64p+3f},
+    {-0x1.6ac69p+2f, 0x0p+0f, -0x1.d932dap+3f, -0x1.48051ep+1f, 0x0p+0f, -0x1.ca6504p+3f, -0x1.48051ep+1f, 0x1.200902p+3f, -0x1.ca6504p+3f},
+    {-0x1.6751ap+2f, 0x0p+0f, -0x1.e4cd3ap+3f, -0x1.411b4p+1f, 0x1.200902p+3f, -0x1.d5ff64p+3f, -0x1.411b4p+1f, 0x0p+0f, -0x1.d5ff64p+3f},
+    {-0x1.38bfc4p+0f, 0x0p+0f, -0x1.469638p+4f, -0x1.38bfc4p+0f, 0x1.16f4e8p-5f, -0x1.469638p+4f, -0x1.5d37bep+1f, 0x1.16f4e8p-5f, -0x1.170dep+4f},
+    {-0x1.38bfc4p+0f, 0x0p+0f, -0x1.469638p+4f, -0x1.5d37bep+1f, 0x1.16f4e8p-5f, -0x1.170dep+4f, -0x1.5d37bep+1f, 0x0p+0f, -0x1.170dep+4f},
+    {-0x1.483ee6p+1f, 0x0p+0f, -0x1.517b66p+4f, -0x1.048b62p+2f, 0x0p+0f, -0x1.21f30ep+4f, -0x1.048b62p+2f, 0x1.16f4e8p-5f, -0x1.21f30ep+4f},
+    {-0x1.483ee6p+1f, 0x0p+0f, -0x1.517b66p+4f, -0x1.048b62p+2f, 0x1.16f4e8p-5f, -0x1.21f30ep+4f, -0x1.483ee6p+1f, 0x1.16f4e8p-5f, -0x1.517b66p+4f},
+    {-0x1.38bfc4p+0f, 0x0p+0f, -0x1.469638p+4f, -0x1.5d37bep+1f, 0x0p+0f, -0x1.170dep+4f, -0x1.048b62p+2f, 0x0p+0f, -0x1.21f30ep+4f},
+    {-0x1.38bfc4p+0f, 0x0p+0f, -0x1.469638p+4f, -0x1.048b62p+2f, 0x0p+0f, -0x1.21f30ep+4f, -0x1.483ee6p+1f, 0x0p+0f, -0x1.517b66p+4f},
+    {-0x1.38bfc4p+0f, 0x1.16f4e8p-5f, -0x1.469638p+4f, -0x1.483ee6p+1f, 0x1.16f4e8p-5f, -0x1.517b66p+4f, -0x1.048b62p+2f, 0x1.16f4e8p-5f, -0x1.21f30ep+4f},
+    {-0x1.38bfc4p+0f, 0x1.16f4e8p-5f, -0x1.469638p+4f, -0x1.048b62p+2f, 0x1.16f4e8p-5f, -0x1.21f30ep+4f, -0x1.5d37bep+1f, 0x1.16f4e8p-5f, -0x1.170dep+4f},
+    {-0x1.38bfc4p+0f, 0x0p+0f, -0x1.469638p+4f, -0x1.483ee6p+1f, 0x0p+0f, -0x1.517b66p+4f, -0x1.483ee6p+1f, 0x1.16f4e8p-5f, -0x1.517b66p+4f}
+};
+static const uint8_t s84_l357_piece_tris[] = {7, 10, 10, 5, 10, 5, 9};
+
+/* The body walks on the room floor at 4.6 m/s into the open east end of the slot. The crack
+ * rule's first look dropped the ball onto the 0.83 m block's corner (in the step zone, of
+ * another piece than the floor, behind the motion); level_beyond's ray a radius beyond it went
+ * out of the slot's mouth past the south block's corner onto the room floor, piece_behind only
+ * looked over a tilted floor, and the foot stood on the floor in the slot, 282 mm under the
+ * checker's least rest (the ball on the south block's edge, 0.38 m across) (soak s84 l357 frame
+ * 1538). Now piece_behind looks for the far piece over a level floor too (another piece's edge):
+ * the edges hold the ball and the foot stands over the slot. The soak's two replay frames. */
+static void test_slot_mouth_beside_taller_block_corner(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s84_l357_piece_tris; p++) {
+        geo_tris(s84_l357_tris + first, s84_l357_piece_tris[p]);
+        first += s84_l357_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo((uint16_t)(1 + p)));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s84_l357_tris / sizeof s84_l357_tris[0], first);
+    static const soak_shape_t shape = {0x1.ee5274p-2f, 0x1.8cd3dap+1f, 0x1.d0c6b4p-1f, 0x1.576ccep+0f,
+                                        0x1.1ac97cp+0f, 0x1.099586p+4f, 0x1.56ffb4p+5f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(-0x1.9695d2p+1f, 0x1.8cd3dap+0f, -0x1.50007ap+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.2451fcp+2f, 0.0f, 0x1.b6215ep-1f));
+    body.input_velocity = cb_vec(-0x1.2451fcp+2f, 0.0f, 0x1.b6215ep-1f);
+    CB_STEP(&body, 0x1.86e168p-3f);
+    CB_STEP(&body, 0x1.99999ap-5f);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    /* the checker's least rest: the ball on the south block's edge (0.4696), 0.382 m across */
+    const float r = 0x1.ee5274p-2f, held = 0.4696f - (r - sqrtf(r * r - 0.382f * 0.382f));
+    cb_report("slot mouth beside a taller block's corner (s84 l357): grounded foot (block tops 0.4696)", foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3533,6 +3637,7 @@ int main(void)
     RUN_TEST(test_bay_between_tile_fields_and_ramp_side);
     RUN_TEST(test_crack_dead_end_under_taller_block_edge);
     RUN_TEST(test_pocket_between_ramp_edge_and_tile_corner);
+    RUN_TEST(test_slot_mouth_beside_taller_block_corner);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);
