@@ -3589,6 +3589,100 @@ static void test_slot_mouth_beside_taller_block_corner(void)
     TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
 }
 
+/* ---- a slab's lower corner under a tilted up, the room floor over the capsule ---- */
+
+/* Soak s89 l214 (generator 2): the 41 static triangles within 3 m of the foot, exact (as
+ * floats): the room (floor y 0, walls at 24), two ramps, and a slab 0.34 m thick whose
+ * underside is 1.81 m over the room floor. The up (0.749, -0.507, -0.426) is 120 degrees off
+ * the room floor's normal: the room floor is an overhang for it, the slab's underside and
+ * its side facing (0.86, 0, -0.51) are walkable (59.5 and 30.5 degrees off up). r 0.82,
+ * height 2.57, step 0.24, one slide. */
+static const float s89_l214_tris[][9] = {
+    {-0x1p+3f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+3f}, /* 52 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f}, /* 53 */
+    {0x0p+0f, 0x0p+0f, 0x1p+3f, 0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 54 */
+    {0x0p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 55 */
+    {0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 57 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f}, /* 64 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 66 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 67 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.a81ba4p-2f, 0x1.1bcc8p-1f, 0x1.34385cp+4f, 0x1.5a8dep+1f, 0x1.1bcc8p-1f, 0x1.f13aa6p+3f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f}, /* 196 */
+    {0x1.a81ba4p-2f, 0x1.1bcc8p-1f, 0x1.34385cp+4f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f, 0x1.38306cp+1f, 0x1.29124cp+1f, 0x1.4829d2p+4f}, /* 197 */
+    {0x1.a81ba4p-2f, 0x0p+0f, 0x1.34385cp+4f, 0x1.5a8dep+1f, 0x0p+0f, 0x1.f13aa6p+3f, 0x1.5a8dep+1f, 0x1.1bcc8p-1f, 0x1.f13aa6p+3f}, /* 198 */
+    {0x1.a81ba4p-2f, 0x0p+0f, 0x1.34385cp+4f, 0x1.5a8dep+1f, 0x1.1bcc8p-1f, 0x1.f13aa6p+3f, 0x1.a81ba4p-2f, 0x1.1bcc8p-1f, 0x1.34385cp+4f}, /* 199 */
+    {0x1.38306cp+1f, 0x0p+0f, 0x1.4829d2p+4f, 0x1.2edd6cp+2f, 0x0p+0f, 0x1.0c8ecap+4f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f}, /* 200 */
+    {0x1.38306cp+1f, 0x0p+0f, 0x1.4829d2p+4f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f, 0x1.38306cp+1f, 0x1.29124cp+1f, 0x1.4829d2p+4f}, /* 201 */
+    {0x1.5a8dep+1f, 0x0p+0f, 0x1.f13aa6p+3f, 0x1.2edd6cp+2f, 0x0p+0f, 0x1.0c8ecap+4f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f}, /* 204 */
+    {0x1.5a8dep+1f, 0x0p+0f, 0x1.f13aa6p+3f, 0x1.2edd6cp+2f, 0x1.29124cp+1f, 0x1.0c8ecap+4f, 0x1.5a8dep+1f, 0x1.1bcc8p-1f, 0x1.f13aa6p+3f}, /* 205 */
+    {0x1.4fdec2p-2f, 0x1.1bcc8p-1f, 0x1.335f16p+4f, 0x1.4f8644p+1f, 0x1.1bcc8p-1f, 0x1.ef881ap+3f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f}, /* 206 */
+    {0x1.4fdec2p-2f, 0x1.1bcc8p-1f, 0x1.335f16p+4f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f, -0x1.b2623ep+0f, 0x1.45d9ecp+1f, 0x1.1f6d9ep+4f}, /* 207 */
+    {0x1.4fdec2p-2f, 0x0p+0f, 0x1.335f16p+4f, 0x1.4f8644p+1f, 0x0p+0f, 0x1.ef881ap+3f, 0x1.4f8644p+1f, 0x1.1bcc8p-1f, 0x1.ef881ap+3f}, /* 208 */
+    {0x1.4fdec2p-2f, 0x0p+0f, 0x1.335f16p+4f, 0x1.4f8644p+1f, 0x1.1bcc8p-1f, 0x1.ef881ap+3f, 0x1.4fdec2p-2f, 0x1.1bcc8p-1f, 0x1.335f16p+4f}, /* 209 */
+    {-0x1.b2623ep+0f, 0x0p+0f, 0x1.1f6d9ep+4f, 0x1.31653p-1f, 0x0p+0f, 0x1.c7a52ap+3f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f}, /* 210 */
+    {-0x1.b2623ep+0f, 0x0p+0f, 0x1.1f6d9ep+4f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f, -0x1.b2623ep+0f, 0x1.45d9ecp+1f, 0x1.1f6d9ep+4f}, /* 211 */
+    {0x1.4f8644p+1f, 0x0p+0f, 0x1.ef881ap+3f, 0x1.31653p-1f, 0x0p+0f, 0x1.c7a52ap+3f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f}, /* 214 */
+    {0x1.4f8644p+1f, 0x0p+0f, 0x1.ef881ap+3f, 0x1.31653p-1f, 0x1.45d9ecp+1f, 0x1.c7a52ap+3f, 0x1.4f8644p+1f, 0x1.1bcc8p-1f, 0x1.ef881ap+3f}, /* 215 */
+    {0x1.80b5eap-1f, 0x0p+0f, 0x1.12cad4p+4f, 0x1.cd8ac2p-4f, 0x0p+0f, 0x1.038aaep+4f, 0x1.cd8ac2p-4f, 0x1.a28a82p-3f, 0x1.038aaep+4f}, /* 224 */
+    {0x1.80b5eap-1f, 0x0p+0f, 0x1.12cad4p+4f, 0x1.cd8ac2p-4f, 0x1.a28a82p-3f, 0x1.038aaep+4f, 0x1.80b5eap-1f, 0x1.a28a82p-3f, 0x1.12cad4p+4f}, /* 225 */
+    {0x1.a2946ep-4f, 0x0p+0f, 0x1.034a9p+4f, -0x1.12b206p-1f, 0x1.a28a82p-3f, 0x1.e814d6p+3f, 0x1.a2946ep-4f, 0x1.a28a82p-3f, 0x1.034a9p+4f}, /* 249 */
+    {-0x1.3f81eep+2f, 0x1.d017ep+0f, 0x1.2edf6ep+4f, 0x1.98b844p+1f, 0x1.d017ep+0f, 0x1.c2242p+3f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f}, /* 266 */
+    {-0x1.3f81eep+2f, 0x1.d017ep+0f, 0x1.2edf6ep+4f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f, -0x1.3f81eep+2f, 0x1.13e04p+1f, 0x1.2edf6ep+4f}, /* 267 */
+    {-0x1.4a7654p+3f, 0x1.d017ep+0f, 0x1.3e6304p+3f, -0x1.121d2ep+1f, 0x1.d017ep+0f, 0x1.45909p+2f, 0x1.98b844p+1f, 0x1.d017ep+0f, 0x1.c2242p+3f}, /* 268 */
+    {-0x1.4a7654p+3f, 0x1.d017ep+0f, 0x1.3e6304p+3f, 0x1.98b844p+1f, 0x1.d017ep+0f, 0x1.c2242p+3f, -0x1.3f81eep+2f, 0x1.d017ep+0f, 0x1.2edf6ep+4f}, /* 269 */
+    {-0x1.4a7654p+3f, 0x1.13e04p+1f, 0x1.3e6304p+3f, -0x1.3f81eep+2f, 0x1.13e04p+1f, 0x1.2edf6ep+4f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f}, /* 270 */
+    {-0x1.4a7654p+3f, 0x1.13e04p+1f, 0x1.3e6304p+3f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f, -0x1.121d2ep+1f, 0x1.13e04p+1f, 0x1.45909p+2f}, /* 271 */
+    {-0x1.4a7654p+3f, 0x1.d017ep+0f, 0x1.3e6304p+3f, -0x1.3f81eep+2f, 0x1.d017ep+0f, 0x1.2edf6ep+4f, -0x1.3f81eep+2f, 0x1.13e04p+1f, 0x1.2edf6ep+4f}, /* 272 */
+    {-0x1.121d2ep+1f, 0x1.d017ep+0f, 0x1.45909p+2f, -0x1.121d2ep+1f, 0x1.13e04p+1f, 0x1.45909p+2f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f}, /* 274 */
+    {-0x1.121d2ep+1f, 0x1.d017ep+0f, 0x1.45909p+2f, 0x1.98b844p+1f, 0x1.13e04p+1f, 0x1.c2242p+3f, 0x1.98b844p+1f, 0x1.d017ep+0f, 0x1.c2242p+3f} /* 275 */
+};
+
+/* A jump's input across up pressed the capsule's top against the room floor and its bottom
+ * ball onto the slab's lower corner (3.193, 1.813, 14.067), the contact 27 degrees off up:
+ * the way off the corner (slide_off_edge's push) goes into the room floor, and with one slide
+ * the body hung at rest in the air for ever, no floor within 7 m along -up (the support
+ * oracle, soak s89 l214 frame 1781). Resting on the corner it cannot leave, it stands on it:
+ * grounded on every step it does not move. */
+static void test_resting_on_slab_corner_under_room_floor_is_grounded(void)
+{
+    cb_world_reset();
+    geo_tris(s89_l214_tris, sizeof s89_l214_tris / sizeof s89_l214_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    /* the replay's start (owner = the capsule's centre) */
+    pos = cb_vec(0x1.ee727cp+1f, 0x1.0dc46ap+0f, 0x1.bce9dap+3f);
+    char_body_init(&body, &pos);
+    static const soak_shape_t shape = {0x1.a22b74p-1f, 0x1.4857f8p+1f, 0x1.e905f2p-3f, 0x1.668906p-1f,
+                                        0x1.0fc0e8p+0f, 0x1.b81b3ep+3f, 0x1.37091ap+5f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.up = cb_vec(0x1.7f7032p-1f, -0x1.03c66ap-1f, -0x1.b4837ep-2f);
+    char_body_configure(&body, &s);
+    const fm_vec3_t up = body.settings.up;
+    /* the replay's first frame: its velocity and a jump of 8.6 m/s along up */
+    const float jump = 0x1.129876p+3f;
+    char_body_set_velocity(&body, cb_vec(0x1.427ffep-11f + jump * up.x, jump * up.y, 0x1.157ffep-8f + jump * up.z));
+    body.input_velocity = cb_vec(-0x1.5a3f74p+0f, -0x1.11b304p+4f, -0x1.99a076p-3f);
+    int at_rest_airborne = 0;
+    for (int f = 0; f < 60; f++) {
+        const fm_vec3_t before = pos;
+        CB_STEP(&body, 0x1.111112p-6f);
+        const fm_vec3_t d = cb_vec(pos.x - before.x, pos.y - before.y, pos.z - before.z);
+        const bool still = d.x * d.x + d.y * d.y + d.z * d.z <= 1e-8f; /* 0.1 mm, SOAK_REST_MOVE */
+        if (f >= 2 && still && !char_body_is_on_floor(&body)) at_rest_airborne++;
+    }
+    cb_report("resting on a slab's corner under the room floor (s89 l214): steps at rest in the air",
+              at_rest_airborne, "");
+    TEST_ASSERT_EQUAL_INT(0, at_rest_airborne);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    /* on the corner where it hung, not moved off it */
+    const float dx = pos.x - 0x1.ee727cp+1f, dy = pos.y - 0x1.0dc46ap+0f, dz = pos.z - 0x1.bce9dap+3f;
+    TEST_ASSERT_TRUE(dx * dx + dy * dy + dz * dz < 0.01f * 0.01f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3638,6 +3732,7 @@ int main(void)
     RUN_TEST(test_crack_dead_end_under_taller_block_edge);
     RUN_TEST(test_pocket_between_ramp_edge_and_tile_corner);
     RUN_TEST(test_slot_mouth_beside_taller_block_corner);
+    RUN_TEST(test_resting_on_slab_corner_under_room_floor_is_grounded);
     RUN_TEST(test_groove_between_low_blocks);
     RUN_TEST(test_groove_between_blocks_of_different_heights);
     RUN_TEST(test_gap_between_blocks_with_a_wall_beyond);

@@ -1517,6 +1517,43 @@ static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
     return v3_dot(h.normal, c->up) >= b->cos_floor_max_angle;
 }
 
+/**
+ * held_on_edge with no floor anywhere in the foot ray's reach: not moved this step (a tenth
+ * of the skin; the skin when it stood on such an edge last step: the walking slide's clip
+ * and top-up against what wedges it move it a fraction of a millimetre), the sweep capsule's
+ * rounded bottom touching a walkable edge or vertex along -up, and no room to be pushed off
+ * it across up (slide_off_edge's push, away from the contact, blocked within the contact
+ * tolerance). The body stands on that edge where it is (gap 0: the foot beside it, over
+ * nothing). Under an up 120 degrees off the room floor's normal (the room floor an overhang
+ * for it), a jump's input across up pressed the capsule's top against the room floor and
+ * its bottom ball onto a slab's lower corner (the contact 27 degrees off up); the way off
+ * the corner went into the room floor, and with one slide the body hung at rest in the air
+ * for ever, no floor within 7 m along -up (soak s89 l214). Out of line: only a body at rest
+ * with no floor under it gets here.
+ */
+static __attribute__((noinline)) void held_on_edge_alone(const cb_ctx_t *c, fm_vec3_t pos, bool was_grounded,
+                                                         support_t *s)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t moved = v3_sub(pos, owner_position(b));
+    const float still = was_grounded ? c->skin : 0.1f * c->skin;
+    if (!(v3_dot(moved, moved) <= still * still)) return;
+    const fm_vec3_t sc = cb_sweep_center(c, pos);
+    coll_sweep_hit_t h, h2;
+    if (!cb_sweep(c, sc, c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) || !isfinite(h.t) ||
+        !v3_finite(h.normal) || !v3_finite(h.point) || v3_dot(h.normal, c->up) < b->cos_floor_max_angle)
+        return;
+    /* the way off the edge: across up, from the contact to the bottom ball's centre */
+    fm_vec3_t off = v3_reject(v3_sub(v3_madd(sc, c->up, -c->sweep_ihh), h.point), c->up);
+    const float ol = v3_len(off);
+    const float need = c->radius + c->skin - ol; /* slide_off_edge's push */
+    if (!(ol > cb_len_tol(c, 1e-5f)) || !(need > c->tiny)) return;
+    if (!cb_sweep(c, sc, c->radius, c->sweep_ihh, v3_scale(off, need / ol), &h2) || !isfinite(h2.t) ||
+        need * h2.t - c->skin > c->contact_eps)
+        return;
+    *s = (support_t){true, false, 0.0f, h.normal, h.point, h.id, h.instance};
+}
+
 /* wall_under_crack stood the foot (s->gap below it) on the top of the piece whose side the
  * foot ray met. That top is the piece's on the face's side of the gap the foot is in; the
  * gap's other side may be higher, and the ball rests there, not on the lower top. The ball
@@ -2038,6 +2075,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, false, &s, NULL);
             alone = s.found;
             edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
+            if (!s.found && !found) held_on_edge_alone(c, *pos, was_grounded, &s);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
         if (s.found && !s.steep) {
