@@ -2946,6 +2946,71 @@ static void test_wedged_against_wall_leaves_when_input_turns(void)
     TEST_ASSERT_TRUE(moved > 0.5f);
 }
 
+/* Soak s87 l7 (generator 2, r 0.32, h 0.91, step 0.048, snap 0.47, floor angle 69.2 degrees,
+ * one slide, up +y, owner = foot): the 17 static triangles within 1.2 m of the foot (floats
+ * of the checker's doubles): the room's floor and two walls, and eleven faces of a triangle
+ * soup floating 1.6-6.9 m over the floor. The body came down into a pocket of the soup: its
+ * full capsule's ball 20 mm into a soup face's low edge (the contact 61 degrees off up:
+ * walkable), the room floor 3.2 m under the foot. */
+static const float s87_l7_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1.8p+4f, -0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 60 */
+    {-0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f, -0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 62 */
+    {-0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1.8p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 63 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {-0x1.c6688cp+3f, 0x1.d5e324p+1f, 0x1.316822p+4f, -0x1.aedebep+3f, 0x1.4dedcap+2f, 0x1.331ef6p+4f, -0x1.04e7dep+4f, 0x1.b2ec9ap+1f, 0x1.5d2a44p+4f}, /* 600 */
+    {-0x1.9bb846p+3f, 0x1.afd62cp+1f, 0x1.45c414p+4f, -0x1.ef840ep+3f, 0x1.acf1bp+1f, 0x1.77709p+4f, -0x1.0c7148p+4f, 0x1.30c064p+2f, 0x1.66e37ap+4f}, /* 601 */
+    {-0x1.0461c2p+4f, 0x1.fbba54p+1f, 0x1.7f1b3ap+4f, -0x1.121482p+4f, 0x1.56e43p+1f, 0x1.46bbb4p+4f, -0x1.b4ac2p+3f, 0x1.a7ee58p+1f, 0x1.744fb8p+4f}, /* 602 */
+    {-0x1.11d2c4p+4f, 0x1.169768p+2f, 0x1.306c0ap+4f, -0x1.0a254p+4f, 0x1.add89cp+2f, 0x1.6e3e7cp+4f, -0x1.d9ae3ep+3f, 0x1.17612p+2f, 0x1.2612ap+4f}, /* 603 */
+    {-0x1.f6cb84p+3f, 0x1.005996p+1f, 0x1.3b3a74p+4f, -0x1.af4c8ep+3f, 0x1.b49ffap+2f, 0x1.5a9b52p+4f, -0x1.a917dep+3f, 0x1.e8b002p+1f, 0x1.32aab6p+4f}, /* 604 */
+    {-0x1.b063eap+3f, 0x1.eef624p+1f, 0x1.795a48p+4f, -0x1.ffb75p+3f, 0x1.b88704p+2f, 0x1.561b9ep+4f, -0x1.ceb968p+3f, 0x1.20a4acp+1f, 0x1.779c52p+4f}, /* 605 */
+    {-0x1.084504p+4f, 0x1.6d4f74p+1f, 0x1.55f33cp+4f, -0x1.0a53cp+4f, 0x1.eed11p+1f, 0x1.85e4c6p+4f, -0x1.d529f8p+3f, 0x1.a23246p+2f, 0x1.64a7b2p+4f}, /* 606 */
+    {-0x1.a1911cp+3f, 0x1.5bdf94p+2f, 0x1.70e842p+4f, -0x1.b95bd8p+3f, 0x1.1f5f2ep+1f, 0x1.2790a8p+4f, -0x1.a881f6p+3f, 0x1.10a052p+2f, 0x1.622f2ap+4f}, /* 607 */
+    {-0x1.a1897ep+3f, 0x1.a6ff58p+0f, 0x1.60cfep+4f, -0x1.b05522p+3f, 0x1.0e003p+2f, 0x1.59966ep+4f, -0x1.e98088p+3f, 0x1.73b8c4p+2f, 0x1.7bde24p+4f}, /* 608 */
+    {-0x1.ae17f4p+3f, 0x1.228f1cp+2f, 0x1.66b9p+4f, -0x1.0cfe62p+4f, 0x1.257baap+2f, 0x1.80ecep+4f, -0x1.0c13ep+4f, 0x1.450a38p+2f, 0x1.5d6212p+4f}, /* 609 */
+    {-0x1.b13b3cp+3f, 0x1.0aebfcp+2f, 0x1.729618p+4f, -0x1.b89978p+3f, 0x1.085d46p+1f, 0x1.5fa8b8p+4f, -0x1.80b8f2p+3f, 0x1.d37d42p+1f, 0x1.68a956p+4f}, /* 610 */
+};
+
+static const soak_shape_t s87_l7_shape = {0x1.4b5322p-2f, 0x1.d35404p-1f, 0x1.8b31d6p-5f, 0x1.e1f40cp-2f,
+                                          0x1.34fa42p+0f, 0x1.9f001ap+5f, 0x1.23df96p+6f, 1, true};
+
+/* The soak body's state at the shrunk replay's start (airborne, at rest in the pocket). */
+static void s87_l7_body(void)
+{
+    cb_world_reset();
+    geo_tris(s87_l7_tris, sizeof s87_l7_tris / sizeof s87_l7_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    pos = cb_vec(-0x1.cb49b6p+3f, 0x1.97b1c4p+1f, 0x1.688302p+4f);
+    char_body_init(&body, &pos);
+    char_body_settings_t s = soak_body_settings(&s87_l7_shape);
+    char_body_configure(&body, &s);
+    body.input_velocity = cb_vec(-0x1.4c3b64p+3f, 0.0f, 0x1.8e66bp+4f);
+}
+
+/* The crack rule alone held the ball on the soup's edges, with no room for its 36-43 mm lift
+ * (another soup face over the capsule): not held, so the step fell, slid 10 mm down along
+ * what it met (one slide), and landed where the crack rule alone again had no room: that
+ * fall was undone, coll_cb_unwedge's search found no place from there, and the body hung at
+ * rest in the air for ever, touching a walkable edge (the support oracle, soak s87 l7 frame
+ * 161). The fall is kept; from 10 mm lower the search finds the soup face it stands on. */
+static void test_soup_pocket_no_room_to_lift_does_not_hang(void)
+{
+    s87_l7_body();
+    int at_rest_airborne = 0;
+    for (int f = 0; f < 40; f++) {
+        const fm_vec3_t before = pos;
+        CB_STEP(&body, 0x1.111112p-5f);
+        const fm_vec3_t d = cb_vec(pos.x - before.x, pos.y - before.y, pos.z - before.z);
+        const bool still = d.x * d.x + d.y * d.y + d.z * d.z <= 1e-8f; /* 0.1 mm, SOAK_REST_MOVE */
+        if (still && !char_body_is_on_floor(&body)) at_rest_airborne++;
+    }
+    cb_report("in a triangle soup's pocket, no room to lift (s87 l7): steps at rest in the air", at_rest_airborne, "");
+    TEST_ASSERT_EQUAL_INT(0, at_rest_airborne);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(pos.y > 3.0f); /* on the soup, not fallen through it to the room floor */
+}
+
 /* Soak s71 l422 (generator 2, r 0.67, step = snap 0.18, floor angle 60.7 degrees, up +y): the
  * 252 static triangles within 1.2 m of the foot (floats of the checker's doubles, bounding-
  * sphere culled): two fields of floor tiles 0.22-0.25 m high, one turned 30 degrees from the
@@ -3725,6 +3790,7 @@ int main(void)
     RUN_TEST(test_steep_face_over_tile_crack);
     RUN_TEST(test_wedged_on_tile_edge_against_wall_is_grounded);
     RUN_TEST(test_wedged_against_wall_leaves_when_input_turns);
+    RUN_TEST(test_soup_pocket_no_room_to_lift_does_not_hang);
     RUN_TEST(test_steep_face_over_floor_slides_down);
     RUN_TEST(test_steep_slab_face_into_tile_crack);
     RUN_TEST(test_crack_beside_higher_tile_under_tilted_up);

@@ -546,8 +546,29 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
              * edge, a triangle soup's sloping edge against its other side: it hung there at
              * rest in the air, its foot 0.44 m under the ledge's top, for ever (soak s44
              * l175). */
-            if (!(mem.crack_no_floor && -v3_dot(v3_sub(pos, start), up) < -0.1f * fall))
+            if (!(mem.crack_no_floor && -v3_dot(v3_sub(pos, start), up) < -0.1f * fall)) {
+                const fm_vec3_t fell_to = pos;
+                const bool held_alone = mem.crack_no_floor;
+                mem.crack_no_floor = false;
                 kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+                /* A fall that went somewhere (a tenth of it or more, swept along what it met)
+                 * and landed where, again, only the crack rule alone held the ball, on edges
+                 * with no room to be lifted onto: those edges do not hold it there either, so
+                 * the body is falling, and the fall is kept (airborne, the velocity it moved
+                 * with). Undone, every step fell the same 10 mm and went back: a body (r 0.32,
+                 * step 0.048, one slide) in a pocket of a floating triangle soup, its ball 20
+                 * mm into a soup edge (walkable contact, 61 degrees off up) with no room for
+                 * the crack rule's 36-43 mm lift, the room floor 3.2 m down, and no place for
+                 * coll_cb_unwedge's search from there: it hung at rest in the air for ever
+                 * (soak s87 l7). From 10 mm lower the search finds the soup face it stands on. */
+                if (!kept && held_alone && mem.crack_no_floor) {
+                    pos = fell_to;
+                    body->velocity = v3_scale(v3_sub(pos, start), 1.0f / dt);
+                    clear_floor(body);
+                    kept = true;
+                }
+                mem.crack_no_floor = mem.crack_no_floor || held_alone; /* for coll_cb_unwedge */
+            }
         }
         if (!kept) {
             pos = start;
