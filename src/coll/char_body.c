@@ -549,8 +549,9 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
             if (!(mem.crack_no_floor && -v3_dot(v3_sub(pos, start), up) < -0.1f * fall)) {
                 const fm_vec3_t fell_to = pos;
                 const bool held_alone = mem.crack_no_floor;
-                mem.crack_no_floor = false;
+                mem.crack_no_floor = false; /* the probe says again whether the crack rule alone held it */
                 kept = coll_cb_probe_floor(&c, &pos, was_grounded, rising);
+                const bool held_alone_again = mem.crack_no_floor;
                 /* A fall that went somewhere (a tenth of it or more, swept along what it met)
                  * and landed where, again, only the crack rule alone held the ball, on edges
                  * with no room to be lifted onto: those edges do not hold it there either, so
@@ -561,13 +562,13 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
                  * the crack rule's 36-43 mm lift, the room floor 3.2 m down, and no place for
                  * coll_cb_unwedge's search from there: it hung at rest in the air for ever
                  * (soak s87 l7). From 10 mm lower the search finds the soup face it stands on. */
-                if (!kept && held_alone && mem.crack_no_floor) {
+                if (!kept && held_alone && held_alone_again) {
                     pos = fell_to;
                     body->velocity = v3_scale(v3_sub(pos, start), 1.0f / dt);
                     clear_floor(body);
                     kept = true;
                 }
-                mem.crack_no_floor = mem.crack_no_floor || held_alone; /* for coll_cb_unwedge */
+                mem.crack_no_floor = held_alone || held_alone_again; /* for coll_cb_unwedge */
             }
         }
         if (!kept) {

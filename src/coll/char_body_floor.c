@@ -1494,6 +1494,22 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
 }
 
 /**
+ * Not moved this step (at most `still` since it began) and the sweep capsule's rounded
+ * bottom touching a walkable edge or face along -up (within contact_eps): h is that contact.
+ * held_on_edge and held_on_edge_alone both start from it.
+ */
+static bool resting_on_walkable(const cb_ctx_t *c, fm_vec3_t pos, float still, coll_sweep_hit_t *h)
+{
+    const char_body_t *b = c->body;
+    fm_vec3_t moved = v3_sub(pos, owner_position(b));
+    if (!(v3_dot(moved, moved) <= still * still)) return false;
+    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), h) ||
+        !isfinite(h->t) || !v3_finite(h->normal) || !v3_finite(h->point))
+        return false;
+    return v3_dot(h->normal, c->up) >= b->cos_floor_max_angle;
+}
+
+/**
  * Airborne and not moved this step (at most a tenth of the skin, as at_rest_on), the foot
  * over a walkable floor out of reach below, while the sweep capsule's rounded bottom rests
  * on a walkable edge or face (touching it along -up within contact_eps, its normal within
@@ -1506,15 +1522,8 @@ static bool at_rest_on(const cb_ctx_t *c, fm_vec3_t pos, const coll_ray_hit_t *h
  */
 static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
 {
-    const char_body_t *b = c->body;
-    fm_vec3_t before = owner_position(b);
-    fm_vec3_t moved = v3_sub(pos, before);
-    if (!(v3_dot(moved, moved) <= 0.01f * c->skin * c->skin)) return false;
     coll_sweep_hit_t h;
-    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) ||
-        !isfinite(h.t) || !v3_finite(h.normal))
-        return false;
-    return v3_dot(h.normal, c->up) >= b->cos_floor_max_angle;
+    return resting_on_walkable(c, pos, 0.1f * c->skin, &h);
 }
 
 /**
@@ -1534,19 +1543,13 @@ static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
 static __attribute__((noinline)) void held_on_edge_alone(const cb_ctx_t *c, fm_vec3_t pos, bool was_grounded,
                                                          support_t *s)
 {
-    const char_body_t *b = c->body;
-    fm_vec3_t moved = v3_sub(pos, owner_position(b));
-    const float still = was_grounded ? c->skin : 0.1f * c->skin;
-    if (!(v3_dot(moved, moved) <= still * still)) return;
-    const fm_vec3_t sc = cb_sweep_center(c, pos);
     coll_sweep_hit_t h, h2;
-    if (!cb_sweep(c, sc, c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) || !isfinite(h.t) ||
-        !v3_finite(h.normal) || !v3_finite(h.point) || v3_dot(h.normal, c->up) < b->cos_floor_max_angle)
-        return;
+    if (!resting_on_walkable(c, pos, was_grounded ? c->skin : 0.1f * c->skin, &h)) return;
+    const fm_vec3_t sc = cb_sweep_center(c, pos);
     /* the way off the edge: across up, from the contact to the bottom ball's centre */
     fm_vec3_t off = v3_reject(v3_sub(v3_madd(sc, c->up, -c->sweep_ihh), h.point), c->up);
     const float ol = v3_len(off);
-    const float need = c->radius + c->skin - ol; /* slide_off_edge's push */
+    const float need = cb_off_edge_push(c, ol);
     if (!(ol > cb_len_tol(c, 1e-5f)) || !(need > c->tiny)) return;
     if (!cb_sweep(c, sc, c->radius, c->sweep_ihh, v3_scale(off, need / ol), &h2) || !isfinite(h2.t) ||
         need * h2.t - c->skin > c->contact_eps)

@@ -141,6 +141,11 @@ typedef struct {
  *  step are in cb_ctx_t already). */
 static inline float cb_len_tol(const cb_ctx_t *c, float metres) { return metres * c->unit; }
 
+/** How far a capsule whose bottom ball's centre is `off` across up from an edge it rests on
+ *  is pushed off that edge: clear of it by the skin (slide_off_edge; held_on_edge_alone
+ *  asks whether there is room for it). */
+static inline float cb_off_edge_push(const cb_ctx_t *c, float off) { return c->radius + c->skin - off; }
+
 /* The body's queries: on the step's gather when there is one (it falls back to the scene
  * by itself for a query reaching outside the gathered box), else on the scene. The body's
  * read_mask and coll_types; capsule and ray axes along the body's up. */

@@ -172,7 +172,7 @@ static float slide_off_edge(const cb_ctx_t *c, fm_vec3_t *pos, const coll_sweep_
     float hl = v3_len(h);
     fm_vec3_t dir = hl > cb_len_tol(c, 1e-5f) ? v3_scale(h, 1.0f / hl) : v3_norm(v3_reject(hit->normal, c->up));
     if (v3_len(dir) < 0.5f) return -1.0f;
-    float need = c->radius + c->skin - hl;
+    float need = cb_off_edge_push(c, hl);
     if (need <= 0.0f) return -1.0f;
     if (need > room) need = room;
     if (!(need > c->tiny)) return -1.0f;
