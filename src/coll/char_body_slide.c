@@ -388,11 +388,15 @@ static FALL_ON_COLD bool fall_on(const cb_ctx_t *c, fm_vec3_t want, fm_vec3_t ve
 static void last_corr_clear(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t corr, const fm_vec3_t *planes, int np)
 {
     fm_vec3_t t = corr;
+    bool cut = false;
     for (int i = 0; i < np; i++) {
         const float into = v3_dot(t, planes[i]);
-        if (into < -c->tiny) t = v3_madd(t, planes[i], -into); /* more than rounding */
+        if (into < -c->tiny) { /* more than rounding */
+            t = v3_madd(t, planes[i], -into);
+            cut = true;
+        }
     }
-    if (t.x != corr.x || t.y != corr.y || t.z != corr.z) *pos = v3_add(v3_sub(*pos, corr), t);
+    if (cut) *pos = v3_add(v3_sub(*pos, corr), t);
 }
 
 void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t *vel, bool grounded)
@@ -547,7 +551,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
             }
         }
     }
-    last_corr_clear(c, pos, corr, planes, np);
+    if (np > 1) last_corr_clear(c, pos, corr, planes, np); /* one plane: corr is off it */
     const fm_vec3_t slid = *pos;
     if (grounded && touched && no_backwards(c, pos, start, disp) && step_ups > 0 && c->ev)
         c->ev->step += v3_dot(v3_sub(*pos, slid), c->up); /* a stair step redone: its height as done */
