@@ -3748,6 +3748,67 @@ static void test_resting_on_slab_corner_under_room_floor_is_grounded(void)
     TEST_ASSERT_TRUE(dx * dx + dy * dy + dz * dz < 0.01f * 0.01f);
 }
 
+/* ---- a slot a hair wider than the capsule, between the room wall and a leaning face ---- */
+
+/* Soak s100 l255 (generator 2): the 16 static triangles within 2.5 m of the body, exact (as
+ * floats): the room (floor y 0, wall z -24) and a wedge whose side (tris 89, 94) stands
+ * 1.2 degrees off the wall, 1.85 m from it: 2 mm wider than the capsule (r 0.925). */
+static const float s100_l255_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1.8p+4f}, /* 8 */
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 9 */
+    {0x1p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f}, /* 10 */
+    {0x1p+4f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f}, /* 11 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.e86946p+3f, 0x0p+0f, -0x1.618aa4p+4f, 0x1.eaaedap+3f, 0x0p+0f, -0x1.2c89f4p+4f, 0x1.2e5392p+4f, 0x1.ec2f6ap+1f, -0x1.2dc296p+4f}, /* 88 */
+    {0x1.e86946p+3f, 0x0p+0f, -0x1.618aa4p+4f, 0x1.2e5392p+4f, 0x1.ec2f6ap+1f, -0x1.2dc296p+4f, 0x1.2d30c8p+4f, 0x1.ec2f6ap+1f, -0x1.62c348p+4f}, /* 89 */
+    {0x1.2d30c8p+4f, 0x0p+0f, -0x1.62c348p+4f, 0x1.2d30c8p+4f, 0x1.ec2f6ap+1f, -0x1.62c348p+4f, 0x1.2e5392p+4f, 0x1.ec2f6ap+1f, -0x1.2dc296p+4f}, /* 90 */
+    {0x1.2d30c8p+4f, 0x0p+0f, -0x1.62c348p+4f, 0x1.2e5392p+4f, 0x1.ec2f6ap+1f, -0x1.2dc296p+4f, 0x1.2e5392p+4f, 0x0p+0f, -0x1.2dc296p+4f}, /* 91 */
+    {0x1.e86946p+3f, 0x0p+0f, -0x1.618aa4p+4f, 0x1.2d30c8p+4f, 0x0p+0f, -0x1.62c348p+4f, 0x1.2e5392p+4f, 0x0p+0f, -0x1.2dc296p+4f}, /* 92 */
+    {0x1.e86946p+3f, 0x0p+0f, -0x1.618aa4p+4f, 0x1.2e5392p+4f, 0x0p+0f, -0x1.2dc296p+4f, 0x1.eaaedap+3f, 0x0p+0f, -0x1.2c89f4p+4f}, /* 93 */
+    {0x1.e86946p+3f, 0x0p+0f, -0x1.618aa4p+4f, 0x1.2d30c8p+4f, 0x1.ec2f6ap+1f, -0x1.62c348p+4f, 0x1.2d30c8p+4f, 0x0p+0f, -0x1.62c348p+4f}, /* 94 */
+    {0x1.eaaedap+3f, 0x0p+0f, -0x1.2c89f4p+4f, 0x1.2e5392p+4f, 0x0p+0f, -0x1.2dc296p+4f, 0x1.2e5392p+4f, 0x1.ec2f6ap+1f, -0x1.2dc296p+4f} /* 95 */
+};
+
+/* Falling into the slot with the input 25 m/s into the leaning side and along it, the
+ * slide's last sweep met the side, and its skin top-up and nudge off it (toward the wall)
+ * were checked by no later sweep: the capsule ended 1.17 mm into the wall met two sweeps
+ * before (the penetration oracle, soak s100 l255 frame 1674). The capsule never ends
+ * deeper than the sweep's touch tolerance in either side, on the replay's step and on the
+ * steps after it; it lands in the slot where it narrows and walks back out of it. */
+static void test_slot_hair_wider_than_capsule_no_topup_into_wall(void)
+{
+    cb_world_reset();
+    geo_tris(s100_l255_tris, sizeof s100_l255_tris / sizeof s100_l255_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.d9772ep-1f, 0x1.b762b8p+1f, 0x1.9a7298p-2f, 0x1.e9f434p-2f,
+                                        0x1.9c2f9p-1f, 0x1.b88d54p+4f, 0x1.2d2884p+6f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(0x1.1bbd48p+4f, 0x1.e10d9p+0f, -0x1.71302ep+4f); /* the replay's start */
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(0.0f, 0x1.1f56ap-1f, 0.0f));
+    body.input_velocity = cb_vec(0x1.fd9132p+3f, 0.0f, 0x1.2f7a36p+4f);
+    float deepest = 0.0f;
+    for (int f = 0; f < 40; f++) {
+        CB_STEP(&body, 0x1.99999ap-5f);
+        /* into the wall z = -24 (the capsule's axis is along y: its distance is the centre's) */
+        const float in = s.radius - (pos.z + 24.0f);
+        if (in > deepest) deepest = in;
+    }
+    cb_report("slot a hair wider than the capsule (s100 l255): deepest into the wall", deepest * 1000.0f, "mm");
+    TEST_ASSERT_TRUE(deepest <= 0.0001f + 1e-6f); /* CB_MIN_DEPTH: the sweep's touch */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    /* the slot narrows to less than the capsule past x 18: wedged there, it walks back out */
+    const float x0 = pos.x;
+    body.input_velocity = cb_vec(-3.0f, 0.0f, 0.0f);
+    for (int f = 0; f < 20; f++) CB_STEP(&body, 0x1.99999ap-5f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_TRUE(x0 - pos.x >= 0.9f * 3.0f * 20.0f * 0x1.99999ap-5f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3831,5 +3892,6 @@ int main(void)
     RUN_TEST(test_crack_walk_queries_answered_by_the_gather);
     RUN_TEST(test_stair_climb_query_count);
     RUN_TEST(test_oa_dm1_ball_on_block_edge_falls);
+    RUN_TEST(test_slot_hair_wider_than_capsule_no_topup_into_wall);
     return UNITY_END();
 }
