@@ -3748,6 +3748,92 @@ static void test_resting_on_slab_corner_under_room_floor_is_grounded(void)
     TEST_ASSERT_TRUE(dx * dx + dy * dy + dz * dz < 0.01f * 0.01f);
 }
 
+/* ---- a V valley's slot beside a single-sided ramp's free top edge ---- */
+
+/* Soak s102 l395 (generator 2): the 29 static triangles within 2 m of the failing foot, exact
+ * (floats of the checker's doubles, bounding-sphere culled), one instance per generator piece
+ * (ids as in the soak): the room (1, floor y 0), a single-sided ramp (13: one quad 16.8
+ * degrees off up, its free top edge 1.0126 m over the floor) and a V valley (24: two blocks
+ * whose slopes, 37.6 and 38.6 degrees off up, rise away from a 0.1465 m slot between them,
+ * its edges 0.3070 m over the floor). The ramp's top edge crosses over the slot. r 0.195,
+ * height 2.53, step and snap 0.849, walkable to 43.7 degrees, 8 slides, owner = centre. */
+static const float s102_l395_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 36 */
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 37 */
+    {-0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 39 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 48 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1.8p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 49 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {-0x1.1b1e16p+4f, 0x0p+0f, 0x1.82df66p+1f, -0x1.38ba2ep+4f, 0x0p+0f, 0x1.255d92p+1f, -0x1.4c7236p+4f, 0x1.033888p+0f, 0x1.5a7eaap+2f}, /* 876 */
+    {-0x1.1b1e16p+4f, 0x0p+0f, 0x1.82df66p+1f, -0x1.4c7236p+4f, 0x1.033888p+0f, 0x1.5a7eaap+2f, -0x1.2ed61cp+4f, 0x1.033888p+0f, 0x1.893f94p+2f}, /* 877 */
+    {-0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1391 */
+    {-0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1392 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f}, /* 1393 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f, -0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f}, /* 1394 */
+    {-0x1.9bf57ep+4f, 0x0p+0f, 0x1.46f2f2p+2f, -0x1.65c048p+4f, 0x0p+0f, 0x1.24009ep+3f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1395 */
+    {-0x1.9bf57ep+4f, 0x0p+0f, 0x1.46f2f2p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1396 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1397 */
+    {-0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x0p+0f, 0x1.24009ep+3f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1399 */
+    {-0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f}, /* 1400 */
+    {-0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1401 */
+    {-0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1402 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f}, /* 1403 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f, -0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f}, /* 1404 */
+    {-0x1.406688p+4f, 0x0p+0f, 0x1.206276p-2f, -0x1.0a3152p+4f, 0x0p+0f, 0x1.131472p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1405 */
+    {-0x1.406688p+4f, 0x0p+0f, 0x1.206276p-2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1406 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1407 */
+    {-0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x0p+0f, 0x1.131472p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1409 */
+    {-0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f} /* 1410 */
+};
+static const uint8_t s102_l395_piece_tris[] = {9, 2, 18};
+static const uint16_t s102_l395_piece_ids[] = {1, 13, 24};
+
+/* The body walks at 5 m/s down the valley's near slope and across the slot. In the last step
+ * its foot went 0.07 m under the slot's edges; the crack rule's ball, dropped from the sweep
+ * capsule, met the ramp's top edge first (0.78 m over the foot, 0.11 m across up), rolled off
+ * it onto nothing and slid down its tangent 0.50 m across up onto the far slope, whose short
+ * roll never came back to the slot: the rule gave up, the snap to the room floor stopped on
+ * the ramp's edge, and the foot stood 0.132 m high, 159 mm under the ball resting on the slot's
+ * edges (soak s102 l395 frame 3). The body's own ball at the foot rests on those edges: it
+ * stands there, grounded, and goes on the way it was asked. The soak's four replay frames. */
+static void test_valley_slot_beside_ramp_top_edge(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s102_l395_piece_tris; p++) {
+        geo_tris(s102_l395_tris + first, s102_l395_piece_tris[p]);
+        first += s102_l395_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s102_l395_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s102_l395_tris / sizeof s102_l395_tris[0], first);
+    static const soak_shape_t shape = {0x1.8eb956p-3f, 0x1.441a46p+1f, 0x1.b284f8p-1f, 0x1.b284f8p-1f,
+                                        0x1.865edep-1f, 0x1.015434p+5f, 0x1.fdf27ap+5f, 8, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(-0x1.36dda8p+4f, 0x1.e8616ep+0f, 0x1.81ed92p+2f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.2fcb82p+2f, 0.0f, -0x1.b69b3ep+0f));
+    body.input_velocity = cb_vec(-0x1.4725cep+2f, 0x1.f58ff8p-1f, -0x1.d85276p+0f);
+    static const float dts[4] = {0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f, 0x1.99999ap-5f};
+    for (int f = 0; f < 4; f++) CB_STEP(&body, dts[f]);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    /* the slot's edges (0.3070 m high) 0.1465 m apart: the ball resting on both sags at most
+     * r - sqrt(r^2 - (g/2)^2) under them (the checker's allowance) */
+    const float r = 0x1.8eb956p-3f, g = 0.1465f, held = 0.3070f - (r - sqrtf(r * r - 0.25f * g * g));
+    cb_report("V valley's slot beside a ramp's top edge (s102 l395): grounded foot (slot edges 0.3070)", foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= 0.3070f); /* on the edges, not lifted over them */
+    /* where it was asked to go: on along the input across up (-x, -z) */
+    TEST_ASSERT_TRUE(pos.x < start.x - 0.5f && pos.z < start.z - 0.2f);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3831,5 +3917,6 @@ int main(void)
     RUN_TEST(test_crack_walk_queries_answered_by_the_gather);
     RUN_TEST(test_stair_climb_query_count);
     RUN_TEST(test_oa_dm1_ball_on_block_edge_falls);
+    RUN_TEST(test_valley_slot_beside_ramp_top_edge);
     return UNITY_END();
 }

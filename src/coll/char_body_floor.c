@@ -574,6 +574,8 @@ static bool steep_edge_beside(const cb_ctx_t *c, const coll_sweep_hit_t *h, fm_v
            !floor_face(c, h);
 }
 
+static bool foot_on_edges(const cb_ctx_t *c, fm_vec3_t pos, support_t *out); /* (below) */
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -713,6 +715,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     }
     int past = 0; /* drops past a first contact beside the sweep capsule (below) */
     bool rolled_off = false; /* dropped on past the first contact its roll fell off (below) */
+    bool slid_far = false; /* that drop went out of the foot's column (below) */
 again:;
     float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
@@ -914,6 +917,7 @@ again:;
                  * never puts the foot under a ball resting on the edge, and over the slid
                  * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
                 if (level && !off_ahead) d1p -= r * (1.0f - v3_dot(h1p.normal, up)); /* (off_ahead: exact, above) */
+                slid_far = v3_len2(v3_reject(v3_sub(b0p, foot), up)) > r * r;
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
@@ -1060,6 +1064,23 @@ again:;
             n1u = v3_dot(h1.normal, up);
             if (!(n1u > 0.02f)) return false;
             goto again;
+        }
+        /* Over a floor, the drop past the contact the roll fell off went out of the foot's
+         * column (more than a radius across up): what the slid ball met says nothing about
+         * the foot, and neither does its giving up. The body's own ball at the foot decides:
+         * where the walkable edges the foot went down past this step hold it from all sides,
+         * it rests on them (foot_on_edges). Walking at 5 m/s (r 0.19, step 0.85) down a
+         * V valley's 38-degree slope across its 0.147 m slot (edges 0.307 m over the room
+         * floor), beside a single-sided ramp's free top edge 1.01 m high, 0.11 m across up
+         * from the foot: the drop met that edge first (34 degrees off up, walkable), the roll
+         * off it met nothing, the slide down its tangent went 0.50 m across up onto the far
+         * slope 0.45 m over the foot, whose roll (half a radius of descent) never came back
+         * down to the slot; the rule gave up, the snap to the room floor stopped on the
+         * ramp's edge, and the foot stood 159 mm under the ball resting on the slot's edges
+         * (soak s102 l395). */
+        if (over_floor && slid_far && foot_on_edges(c, pos, out)) {
+            if (far_out) *far_out = out->point;
+            return true;
         }
         return false;
     }
@@ -1864,6 +1885,20 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
             *s = (support_t){true, false, -rest[k - 1], up, e->point, e->id, NULL};
             return;
         }
+}
+
+/* ball_held's last look, where its slid ball left the foot's column: the walkable edges the
+ * foot went down past this step hold the body's own ball at the foot (edges_over_foot: the
+ * lowest rest at which they surround it, never above where the foot was); *out is where.
+ * Out of line: a rare path, and ball_held's frame stays as it was. */
+static __attribute__((noinline)) bool foot_on_edges(const cb_ctx_t *c, fm_vec3_t pos, support_t *out)
+{
+    support_t e;
+    e.found = false;
+    edges_over_foot(c, pos, &e);
+    if (!e.found) return false;
+    *out = e;
+    return true;
 }
 
 /* Still on a steep face found above the foot, with no walkable face between it and the foot:
