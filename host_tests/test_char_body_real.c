@@ -3791,6 +3791,46 @@ static const float s102_l395_tris[][9] = {
 static const uint8_t s102_l395_piece_tris[] = {9, 2, 18};
 static const uint16_t s102_l395_piece_ids[] = {1, 13, 24};
 
+/* Where a ball over the foot touches the plane of triangle t (the foot's height): a slope's
+ * face, which the ball in the slot rests on 2-4 cm up from its edge. */
+static float s102_l395_face_rest(const float *t, fm_vec3_t foot, float r)
+{
+    const fm_vec3_t e1 = cb_vec(t[3] - t[0], t[4] - t[1], t[5] - t[2]), e2 = cb_vec(t[6] - t[0], t[7] - t[1], t[8] - t[2]);
+    fm_vec3_t n = cb_vec(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
+    const float nl = (n.y < 0.0f ? -1.0f : 1.0f) * sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
+    n = cb_vec(n.x / nl, n.y / nl, n.z / nl);
+    return t[1] + (r - n.x * (foot.x - t[0]) - n.z * (foot.z - t[2])) / n.y - r;
+}
+
+/* The soak's frames from `start` (velocity v0, the input of the replays), then the footing:
+ * grounded, not steep, at least at the checker's least rest (the ball at the foot raised
+ * until one slope's face no longer holds it: the lower of the two faces' rests), at most
+ * where it rests on the higher face, and gone on the way it was asked. */
+static void s102_l395_run(fm_vec3_t start, fm_vec3_t v0, const float *dts, int frames, const char *name)
+{
+    static const soak_shape_t shape = {0x1.8eb956p-3f, 0x1.441a46p+1f, 0x1.b284f8p-1f, 0x1.b284f8p-1f,
+                                        0x1.865edep-1f, 0x1.015434p+5f, 0x1.fdf27ap+5f, 8, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, v0);
+    body.input_velocity = cb_vec(-0x1.4725cep+2f, 0x1.f58ff8p-1f, -0x1.d85276p+0f);
+    for (int f = 0; f < frames; f++) CB_STEP(&body, dts[f]);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float r = shape.radius;
+    const float near = s102_l395_face_rest(s102_l395_tris[11], foot, r); /* 1391: the far slope */
+    const float far = s102_l395_face_rest(s102_l395_tris[20], foot, r);  /* 1401: the slope walked down */
+    const float lo = near < far ? near : far, hi = near < far ? far : near;
+    cb_report(name, foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= lo - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= hi + 0.001f);
+    TEST_ASSERT_TRUE(pos.x < start.x - 0.5f && pos.z < start.z - 0.2f);
+}
+
 /* The body walks at 5 m/s down the valley's near slope and across the slot. In the last step
  * its foot went 0.07 m under the slot's edges; the crack rule's ball, dropped from the sweep
  * capsule, met the ramp's top edge first (0.78 m over the foot, 0.11 m across up), rolled off
@@ -3798,7 +3838,11 @@ static const uint16_t s102_l395_piece_ids[] = {1, 13, 24};
  * roll never came back to the slot: the rule gave up, the snap to the room floor stopped on
  * the ramp's edge, and the foot stood 0.132 m high, 159 mm under the ball resting on the slot's
  * edges (soak s102 l395 frame 3). The body's own ball at the foot rests on those edges: it
- * stands there, grounded, and goes on the way it was asked. The soak's four replay frames. */
+ * stands there, grounded, and goes on the way it was asked. The replay's four frames, and
+ * the seed's own run of the same walk (its last eight frames: the foot 8 cm further on, 78 and
+ * 68 mm from the slot's walls, where the walls' top edges surround the foot 3.6 mm lower than
+ * the faces the ball rests on; held on those edges the foot stood 3.17 mm under the checker's
+ * least rest). */
 static void test_valley_slot_beside_ramp_top_edge(void)
 {
     cb_world_reset();
@@ -3809,29 +3853,15 @@ static void test_valley_slot_beside_ramp_top_edge(void)
         TEST_ASSERT_NOT_NULL(cb_world_add_geo(s102_l395_piece_ids[p]));
     }
     TEST_ASSERT_EQUAL_UINT32(sizeof s102_l395_tris / sizeof s102_l395_tris[0], first);
-    static const soak_shape_t shape = {0x1.8eb956p-3f, 0x1.441a46p+1f, 0x1.b284f8p-1f, 0x1.b284f8p-1f,
-                                        0x1.865edep-1f, 0x1.015434p+5f, 0x1.fdf27ap+5f, 8, false};
-    char_body_settings_t s = soak_body_settings(&shape);
-    const fm_vec3_t start = cb_vec(-0x1.36dda8p+4f, 0x1.e8616ep+0f, 0x1.81ed92p+2f);
-    pos = start;
-    char_body_init(&body, &pos);
-    char_body_configure(&body, &s);
-    char_body_teleport(&body, pos, true);
-    char_body_set_velocity(&body, cb_vec(-0x1.2fcb82p+2f, 0.0f, -0x1.b69b3ep+0f));
-    body.input_velocity = cb_vec(-0x1.4725cep+2f, 0x1.f58ff8p-1f, -0x1.d85276p+0f);
-    static const float dts[4] = {0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f, 0x1.99999ap-5f};
-    for (int f = 0; f < 4; f++) CB_STEP(&body, dts[f]);
-    const fm_vec3_t foot = char_body_foot_pos(&body);
-    /* the slot's edges (0.3070 m high) 0.1465 m apart: the ball resting on both sags at most
-     * r - sqrt(r^2 - (g/2)^2) under them (the checker's allowance) */
-    const float r = 0x1.8eb956p-3f, g = 0.1465f, held = 0.3070f - (r - sqrtf(r * r - 0.25f * g * g));
-    cb_report("V valley's slot beside a ramp's top edge (s102 l395): grounded foot (slot edges 0.3070)", foot.y, "m");
-    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
-    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
-    TEST_ASSERT_TRUE(foot.y >= held - 0.001f);
-    TEST_ASSERT_TRUE(foot.y <= 0.3070f); /* on the edges, not lifted over them */
-    /* where it was asked to go: on along the input across up (-x, -z) */
-    TEST_ASSERT_TRUE(pos.x < start.x - 0.5f && pos.z < start.z - 0.2f);
+    static const float replay_dts[4] = {0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f, 0x1.99999ap-5f};
+    s102_l395_run(cb_vec(-0x1.36dda8p+4f, 0x1.e8616ep+0f, 0x1.81ed92p+2f),
+                  cb_vec(-0x1.2fcb82p+2f, 0.0f, -0x1.b69b3ep+0f), replay_dts, 4,
+                  "V valley's slot beside a ramp's top edge (s102 l395): grounded foot (slot edges 0.3070)");
+    static const float seed_dts[8] = {0x1.53c30cp-3f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+                                      0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f,  0x1.99999ap-5f};
+    s102_l395_run(cb_vec(-0x1.27dc2cp+4f, 0x1.441a46p+0f, 0x1.879084p+2f),
+                  cb_vec(-0x1.09e59ep+1f, 0.0f, 0x1.c09412p+0f), seed_dts, 8,
+                  "the same, the seed's run (s102 l395b): grounded foot (slot edges 0.3070)");
 }
 
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its

@@ -574,7 +574,7 @@ static bool steep_edge_beside(const cb_ctx_t *c, const coll_sweep_hit_t *h, fm_v
            !floor_face(c, h);
 }
 
-static bool foot_on_edges(const cb_ctx_t *c, fm_vec3_t pos, support_t *out); /* (below) */
+static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s); /* (below) */
 
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
@@ -1069,18 +1069,20 @@ again:;
          * column (more than a radius across up): what the slid ball met says nothing about
          * the foot, and neither does its giving up. The body's own ball at the foot decides:
          * where the walkable edges the foot went down past this step hold it from all sides,
-         * it rests on them (foot_on_edges). Walking at 5 m/s (r 0.19, step 0.85) down a
-         * V valley's 38-degree slope across its 0.147 m slot (edges 0.307 m over the room
-         * floor), beside a single-sided ramp's free top edge 1.01 m high, 0.11 m across up
+         * it rests on the highest of them (edges_over_foot, highest). Walking at 5 m/s (r
+         * 0.19, step 0.85) down a V valley's 38-degree slope across its 0.147 m slot (edges
+         * 0.307 m over the room floor), beside a single-sided ramp's free top edge 1.01 m high, 0.11 m across up
          * from the foot: the drop met that edge first (34 degrees off up, walkable), the roll
          * off it met nothing, the slide down its tangent went 0.50 m across up onto the far
          * slope 0.45 m over the foot, whose roll (half a radius of descent) never came back
          * down to the slot; the rule gave up, the snap to the room floor stopped on the
          * ramp's edge, and the foot stood 159 mm under the ball resting on the slot's edges
-         * (soak s102 l395). */
-        if (over_floor && slid_far && foot_on_edges(c, pos, out)) {
-            if (far_out) *far_out = out->point;
-            return true;
+         * (soak s102 l395). Out of line: a rare path. */
+        if (over_floor && slid_far) {
+            out->found = false;
+            edges_over_foot(c, pos, true, out);
+            if (out->found && far_out) *far_out = out->point;
+            return out->found;
         }
         return false;
     }
@@ -1842,8 +1844,13 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
  * was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
  * a crack's two edges) is *s, not steep: the foot is in the step zone, inside the steep
  * piece itself, and the ball meets that piece's edges 0.15-0.30 m deep (what the body
- * stands on, not what holds it up): the highest rest would lift it out of the piece. */
-static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
+ * stands on, not what holds it up): the highest rest would lift it out of the piece.
+ * highest (ball_held's last look, the body not on a steep piece): the highest rest, where
+ * they all hold the ball from all sides: a ball lowered along up at the foot stops on the
+ * highest of them. In a V valley's slot the top edges of the slot's walls surround the
+ * foot first, lower than the slopes' faces beside them, which the ball rests on (soak s102
+ * l395, the seed's run: 3.6 mm lower; the checker counts the faces). */
+static __attribute__((noinline)) void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s)
 {
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
     const float r = c->radius;
@@ -1879,26 +1886,12 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
         dir[k] = v3_scale(side, 1.0f / sqrtf(l2));
         at[k] = i;
     }
-    for (uint32_t k = 2; k <= m; k++)
+    for (uint32_t k = highest && m > 2 ? m : 2; k <= m; k++)
         if (dirs_around(c, dir, k)) {
             const coll_contact_t *e = &ct[at[k - 1]];
             *s = (support_t){true, false, -rest[k - 1], up, e->point, e->id, NULL};
             return;
         }
-}
-
-/* ball_held's last look, where its slid ball left the foot's column: the walkable edges the
- * foot went down past this step hold the body's own ball at the foot (edges_over_foot: the
- * lowest rest at which they surround it, never above where the foot was); *out is where.
- * Out of line: a rare path, and ball_held's frame stays as it was. */
-static __attribute__((noinline)) bool foot_on_edges(const cb_ctx_t *c, fm_vec3_t pos, support_t *out)
-{
-    support_t e;
-    e.found = false;
-    edges_over_foot(c, pos, &e);
-    if (!e.found) return false;
-    *out = e;
-    return true;
 }
 
 /* Still on a steep face found above the foot, with no walkable face between it and the foot:
@@ -1947,7 +1940,7 @@ static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec
         }
         w = *s;
     }
-    edges_over_foot(c, pos, &w);
+    edges_over_foot(c, pos, false, &w);
     if (lifts_under_face(&w, s, step_eps)) *s = w;
 }
 
