@@ -3820,9 +3820,9 @@ static void s102_l395_run(fm_vec3_t start, fm_vec3_t v0, const float *dts, int f
     for (int f = 0; f < frames; f++) CB_STEP(&body, dts[f]);
     const fm_vec3_t foot = char_body_foot_pos(&body);
     const float r = shape.radius;
-    const float near = s102_l395_face_rest(s102_l395_tris[11], foot, r); /* 1391: the far slope */
-    const float far = s102_l395_face_rest(s102_l395_tris[20], foot, r);  /* 1401: the slope walked down */
-    const float lo = near < far ? near : far, hi = near < far ? far : near;
+    const float far_slope = s102_l395_face_rest(s102_l395_tris[11], foot, r); /* 1391 */
+    const float walked = s102_l395_face_rest(s102_l395_tris[20], foot, r);    /* 1401: walked down */
+    const float lo = f_min_t(far_slope, walked), hi = far_slope < walked ? walked : far_slope;
     cb_report(name, foot.y, "m");
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
     TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
@@ -3839,8 +3839,8 @@ static void s102_l395_run(fm_vec3_t start, fm_vec3_t v0, const float *dts, int f
  * the ramp's edge, and the foot stood 0.132 m high, 159 mm under the ball resting on the slot's
  * edges (soak s102 l395 frame 3). The body's own ball at the foot rests on those edges: it
  * stands there, grounded, and goes on the way it was asked. The replay's four frames, and
- * the seed's own run of the same walk (its last eight frames: the foot 8 cm further on, 78 and
- * 68 mm from the slot's walls, where the walls' top edges surround the foot 3.6 mm lower than
+ * the seed's own run of the same walk (its last eight frames: the foot 4 cm short of the
+ * replay's, 78 and 68 mm from the slot's walls, where the walls' top edges surround the foot 3.6 mm lower than
  * the faces the ball rests on; held on those edges the foot stood 3.17 mm under the checker's
  * least rest). */
 static void test_valley_slot_beside_ramp_top_edge(void)
