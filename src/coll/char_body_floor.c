@@ -1847,9 +1847,10 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
  * stands on, not what holds it up): the highest rest would lift it out of the piece.
  * highest (ball_held's last look, the body not on a steep piece): the highest rest, where
  * they all hold the ball from all sides: a ball lowered along up at the foot stops on the
- * highest of them. In a V valley's slot the top edges of the slot's walls surround the
- * foot first, lower than the slopes' faces beside them, which the ball rests on (soak s102
- * l395, the seed's run: 3.6 mm lower; the checker counts the faces). */
+ * highest of them. In a V valley's slot the top edges of the slot's walls (edge contacts
+ * of steep faces, with walkable normals) surround the foot first, lower than the slopes'
+ * faces beside them, which the ball rests on: held on those edges the foot stood 3.17 mm
+ * under the checker's least rest, on the faces (soak s102 l395, the seed's run). */
 static __attribute__((noinline)) void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s)
 {
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
