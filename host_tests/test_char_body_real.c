@@ -3809,6 +3809,122 @@ static void test_slot_hair_wider_than_capsule_no_topup_into_wall(void)
     TEST_ASSERT_TRUE(x0 - pos.x >= 0.9f * 3.0f * 20.0f * 0x1.99999ap-5f);
 }
 
+/* ---- a V valley's slot beside a single-sided ramp's free top edge ---- */
+
+/* Soak s102 l395 (generator 2): the 29 static triangles within 2 m of the failing foot, exact
+ * (floats of the checker's doubles, bounding-sphere culled), one instance per generator piece
+ * (ids as in the soak): the room (1, floor y 0), a single-sided ramp (13: one quad 16.8
+ * degrees off up, its free top edge 1.0126 m over the floor) and a V valley (24: two blocks
+ * whose slopes, 37.6 and 38.6 degrees off up, rise away from a 0.1465 m slot between them,
+ * its edges 0.3070 m over the floor). The ramp's top edge crosses over the slot. r 0.195,
+ * height 2.53, step and snap 0.849, walkable to 43.7 degrees, 8 slides, owner = centre. */
+static const float s102_l395_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 36 */
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 37 */
+    {-0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 39 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 48 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1.8p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 49 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {-0x1.1b1e16p+4f, 0x0p+0f, 0x1.82df66p+1f, -0x1.38ba2ep+4f, 0x0p+0f, 0x1.255d92p+1f, -0x1.4c7236p+4f, 0x1.033888p+0f, 0x1.5a7eaap+2f}, /* 876 */
+    {-0x1.1b1e16p+4f, 0x0p+0f, 0x1.82df66p+1f, -0x1.4c7236p+4f, 0x1.033888p+0f, 0x1.5a7eaap+2f, -0x1.2ed61cp+4f, 0x1.033888p+0f, 0x1.893f94p+2f}, /* 877 */
+    {-0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1391 */
+    {-0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1392 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f}, /* 1393 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f, -0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f}, /* 1394 */
+    {-0x1.9bf57ep+4f, 0x0p+0f, 0x1.46f2f2p+2f, -0x1.65c048p+4f, 0x0p+0f, 0x1.24009ep+3f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1395 */
+    {-0x1.9bf57ep+4f, 0x0p+0f, 0x1.46f2f2p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1396 */
+    {-0x1.6f1364p+4f, 0x0p+0f, 0x1.5f04fap+1f, -0x1.6f1364p+4f, 0x1.3a52cp-2f, 0x1.5f04fap+1f, -0x1.9bf57ep+4f, 0x1.90a8f4p+1f, 0x1.46f2f2p+2f}, /* 1397 */
+    {-0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x0p+0f, 0x1.24009ep+3f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f}, /* 1399 */
+    {-0x1.38de2ep+4f, 0x0p+0f, 0x1.b090c8p+2f, -0x1.65c048p+4f, 0x1.90a8f4p+1f, 0x1.24009ep+3f, -0x1.38de2ep+4f, 0x1.3a52cp-2f, 0x1.b090c8p+2f}, /* 1400 */
+    {-0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1401 */
+    {-0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1402 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f}, /* 1403 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f, -0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f}, /* 1404 */
+    {-0x1.406688p+4f, 0x0p+0f, 0x1.206276p-2f, -0x1.0a3152p+4f, 0x0p+0f, 0x1.131472p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1405 */
+    {-0x1.406688p+4f, 0x0p+0f, 0x1.206276p-2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1406 */
+    {-0x1.6d48a2p+4f, 0x0p+0f, 0x1.52ed3ap+1f, -0x1.6d48a2p+4f, 0x1.3a52cp-2f, 0x1.52ed3ap+1f, -0x1.406688p+4f, 0x1.9e9e1ap+1f, 0x1.206276p-2f}, /* 1407 */
+    {-0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x0p+0f, 0x1.131472p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f}, /* 1409 */
+    {-0x1.37136cp+4f, 0x0p+0f, 0x1.aa84e6p+2f, -0x1.0a3152p+4f, 0x1.9e9e1ap+1f, 0x1.131472p+2f, -0x1.37136cp+4f, 0x1.3a52cp-2f, 0x1.aa84e6p+2f} /* 1410 */
+};
+static const uint8_t s102_l395_piece_tris[] = {9, 2, 18};
+static const uint16_t s102_l395_piece_ids[] = {1, 13, 24};
+
+/* Where a ball over the foot touches the plane of triangle t (the foot's height): a slope's
+ * face, which the ball in the slot rests on 2-4 cm up from its edge. */
+static float s102_l395_face_rest(const float *t, fm_vec3_t foot, float r)
+{
+    const fm_vec3_t e1 = cb_vec(t[3] - t[0], t[4] - t[1], t[5] - t[2]), e2 = cb_vec(t[6] - t[0], t[7] - t[1], t[8] - t[2]);
+    fm_vec3_t n = cb_vec(e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x);
+    const float nl = (n.y < 0.0f ? -1.0f : 1.0f) * sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
+    n = cb_vec(n.x / nl, n.y / nl, n.z / nl);
+    return t[1] + (r - n.x * (foot.x - t[0]) - n.z * (foot.z - t[2])) / n.y - r;
+}
+
+/* The soak's frames from `start` (velocity v0, the input of the replays), then the footing:
+ * grounded, not steep, at least at the checker's least rest (the ball at the foot raised
+ * until one slope's face no longer holds it: the lower of the two faces' rests), at most
+ * where it rests on the higher face, and gone on the way it was asked. */
+static void s102_l395_run(fm_vec3_t start, fm_vec3_t v0, const float *dts, int frames, const char *name)
+{
+    static const soak_shape_t shape = {0x1.8eb956p-3f, 0x1.441a46p+1f, 0x1.b284f8p-1f, 0x1.b284f8p-1f,
+                                        0x1.865edep-1f, 0x1.015434p+5f, 0x1.fdf27ap+5f, 8, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, v0);
+    body.input_velocity = cb_vec(-0x1.4725cep+2f, 0x1.f58ff8p-1f, -0x1.d85276p+0f);
+    for (int f = 0; f < frames; f++) CB_STEP(&body, dts[f]);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float r = shape.radius;
+    const float far_slope = s102_l395_face_rest(s102_l395_tris[11], foot, r); /* 1391 */
+    const float walked = s102_l395_face_rest(s102_l395_tris[20], foot, r);    /* 1401: walked down */
+    const float lo = f_min_t(far_slope, walked), hi = far_slope < walked ? walked : far_slope;
+    cb_report(name, foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= lo - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= hi + 0.001f);
+    TEST_ASSERT_TRUE(pos.x < start.x - 0.5f && pos.z < start.z - 0.2f);
+}
+
+/* The body walks at 5 m/s down the valley's near slope and across the slot. In the last step
+ * its foot went 0.07 m under the slot's edges; the crack rule's ball, dropped from the sweep
+ * capsule, met the ramp's top edge first (0.78 m over the foot, 0.11 m across up), rolled off
+ * it onto nothing and slid down its tangent 0.50 m across up onto the far slope, whose short
+ * roll never came back to the slot: the rule gave up, the snap to the room floor stopped on
+ * the ramp's edge, and the foot stood 0.132 m high, 159 mm under the ball resting on the slot's
+ * edges (soak s102 l395 frame 3). The body's own ball at the foot rests on those edges: it
+ * stands there, grounded, and goes on the way it was asked. The replay's four frames, and
+ * the seed's own run of the same walk (its last eight frames: the foot 4 cm short of the
+ * replay's, 78 and 68 mm from the slot's walls, where the walls' top edges surround the foot 3.6 mm lower than
+ * the faces the ball rests on; held on those edges the foot stood 3.17 mm under the checker's
+ * least rest). */
+static void test_valley_slot_beside_ramp_top_edge(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s102_l395_piece_tris; p++) {
+        geo_tris(s102_l395_tris + first, s102_l395_piece_tris[p]);
+        first += s102_l395_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s102_l395_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s102_l395_tris / sizeof s102_l395_tris[0], first);
+    static const float replay_dts[4] = {0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f, 0x1.99999ap-5f};
+    s102_l395_run(cb_vec(-0x1.36dda8p+4f, 0x1.e8616ep+0f, 0x1.81ed92p+2f),
+                  cb_vec(-0x1.2fcb82p+2f, 0.0f, -0x1.b69b3ep+0f), replay_dts, 4,
+                  "V valley's slot beside a ramp's top edge (s102 l395): grounded foot (slot edges 0.3070)");
+    static const float seed_dts[8] = {0x1.53c30cp-3f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+                                      0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.6103p-5f,  0x1.99999ap-5f};
+    s102_l395_run(cb_vec(-0x1.27dc2cp+4f, 0x1.441a46p+0f, 0x1.879084p+2f),
+                  cb_vec(-0x1.09e59ep+1f, 0.0f, 0x1.c09412p+0f), seed_dts, 8,
+                  "the same, the seed's run (s102 l395b): grounded foot (slot edges 0.3070)");
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -3893,5 +4009,6 @@ int main(void)
     RUN_TEST(test_stair_climb_query_count);
     RUN_TEST(test_oa_dm1_ball_on_block_edge_falls);
     RUN_TEST(test_slot_hair_wider_than_capsule_no_topup_into_wall);
+    RUN_TEST(test_valley_slot_beside_ramp_top_edge);
     return UNITY_END();
 }

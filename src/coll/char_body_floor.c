@@ -574,6 +574,8 @@ static bool steep_edge_beside(const cb_ctx_t *c, const coll_sweep_hit_t *h, fm_v
            !floor_face(c, h);
 }
 
+static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s); /* (below) */
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -713,6 +715,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     }
     int past = 0; /* drops past a first contact beside the sweep capsule (below) */
     bool rolled_off = false; /* dropped on past the first contact its roll fell off (below) */
+    bool slid_far = false; /* that drop went out of the foot's column (below) */
 again:;
     float contact = v3_dot(v3_sub(h1.point, foot), up); /* lowest contact height above the foot */
     float c1 = contact;
@@ -914,6 +917,7 @@ again:;
                  * never puts the foot under a ball resting on the edge, and over the slid
                  * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
                 if (level && !off_ahead) d1p -= r * (1.0f - v3_dot(h1p.normal, up)); /* (off_ahead: exact, above) */
+                slid_far = v3_len2(v3_reject(v3_sub(b0p, foot), up)) > r * r;
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
@@ -1060,6 +1064,25 @@ again:;
             n1u = v3_dot(h1.normal, up);
             if (!(n1u > 0.02f)) return false;
             goto again;
+        }
+        /* Over a floor, the drop past the contact the roll fell off went out of the foot's
+         * column (more than a radius across up): what the slid ball met says nothing about
+         * the foot, and neither does its giving up. The body's own ball at the foot decides:
+         * where the walkable edges the foot went down past this step hold it from all sides,
+         * it rests on the highest of them (edges_over_foot, highest). Walking at 5 m/s (r
+         * 0.19, step 0.85) down a V valley's 38-degree slope across its 0.147 m slot (edges
+         * 0.307 m over the room floor), beside a single-sided ramp's free top edge 1.01 m high, 0.11 m across up
+         * from the foot: the drop met that edge first (34 degrees off up, walkable), the roll
+         * off it met nothing, the slide down its tangent went 0.50 m across up onto the far
+         * slope 0.45 m over the foot, whose roll (half a radius of descent) never came back
+         * down to the slot; the rule gave up, the snap to the room floor stopped on the
+         * ramp's edge, and the foot stood 159 mm under the ball resting on the slot's edges
+         * (soak s102 l395). Out of line: a rare path. */
+        if (over_floor && slid_far) {
+            out->found = false;
+            edges_over_foot(c, pos, true, out);
+            if (out->found && far_out) *far_out = out->point;
+            return out->found;
         }
         return false;
     }
@@ -1824,8 +1847,14 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
  * was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
  * a crack's two edges) is *s, not steep: the foot is in the step zone, inside the steep
  * piece itself, and the ball meets that piece's edges 0.15-0.30 m deep (what the body
- * stands on, not what holds it up): the highest rest would lift it out of the piece. */
-static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
+ * stands on, not what holds it up): the highest rest would lift it out of the piece.
+ * highest (ball_held's last look, the body not on a steep piece): the highest rest, where
+ * they all hold the ball from all sides: a ball lowered along up at the foot stops on the
+ * highest of them. In a V valley's slot the top edges of the slot's walls (edge contacts
+ * of steep faces, with walkable normals) surround the foot first, lower than the slopes'
+ * faces beside them, which the ball rests on: held on those edges the foot stood 3.17 mm
+ * under the checker's least rest, on the faces (soak s102 l395, the seed's run). */
+static __attribute__((noinline)) void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s)
 {
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
     const float r = c->radius;
@@ -1861,7 +1890,7 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, support_t *s)
         dir[k] = v3_scale(side, 1.0f / sqrtf(l2));
         at[k] = i;
     }
-    for (uint32_t k = 2; k <= m; k++)
+    for (uint32_t k = highest && m > 2 ? m : 2; k <= m; k++)
         if (dirs_around(c, dir, k)) {
             const coll_contact_t *e = &ct[at[k - 1]];
             *s = (support_t){true, false, -rest[k - 1], up, e->point, e->id, NULL};
@@ -1915,7 +1944,7 @@ static __attribute__((noinline)) void steep_over_crack(const cb_ctx_t *c, fm_vec
         }
         w = *s;
     }
-    edges_over_foot(c, pos, &w);
+    edges_over_foot(c, pos, false, &w);
     if (lifts_under_face(&w, s, step_eps)) *s = w;
 }
 
