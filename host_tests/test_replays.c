@@ -1432,6 +1432,47 @@ static void test_oracle_velocity(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(o, V(0, 1, 0), V(3, 0, 0), in, true, false, false));
 }
 
+/* A teleport into a static collider body: the overlap is the game's, and the excuse lasts
+ * while the sweep capsule is still more than SOAK_PEN_TOL inside that body (as inside a
+ * triangle), so the next step's recover push-out is not read as motion by the velocity and
+ * direction oracles (s101 l266: 66 mm inside a static sphere after a teleport whose step had
+ * dt < 0, then 1.2 m/s "off" the velocity). It ends when the body is out of it. */
+static void test_excuse_lasts_inside_static_body(void)
+{
+    char_body_t *b = oracle_setup(SOAK_FAIL_VELOCITY);
+    char_body_settings_t s = b->settings;
+    s.coll_types = COLL_TYPE_MESH | COLL_TYPE_BODY;
+    char_body_configure(b, &s);
+    soak_capsule_t full, sweep;
+    soak_body_capsules(b, &full, &sweep);
+    lvl.nbodies = 1;
+    soak_lbody_t *lb = &lvl.bodies[0];
+    memset(lb, 0, sizeof *lb);
+    lb->body.shape = COLL_SHAPE_SPHERE;
+    lb->body.half_extents = V(0.5f, 0.5f, 0.5f);
+    lb->body.xf.rot.w = 1.0f;
+    lb->body.xf.scale = V(1.0f, 1.0f, 1.0f);
+    lb->body.write_mask = 0x01;
+    lb->body.id = 103;
+    /* beside the sweep capsule's middle, 66 mm into it */
+    const double mid[3] = {0.5 * (sweep.a[0] + sweep.b[0]), 0.5 * (sweep.a[1] + sweep.b[1]), 0.5 * (sweep.a[2] + sweep.b[2])};
+    lb->body.xf.pos = V((float)(mid[0] + sweep.r + 0.5 - 0.066), (float)mid[1], (float)mid[2]);
+    TEST_ASSERT_TRUE(soak_check_body_pen(&lvl, &b->settings, &sweep) > 0.06);
+    osim.owner = V(0, 0, 0);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&osim, true, true)); /* the teleport's frame */
+    TEST_ASSERT_TRUE(osim.excused);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&osim, false, true)); /* still in it */
+    TEST_ASSERT_TRUE(osim.excused);
+    /* out of it (0.5 mm in: under SOAK_PEN_TOL): judged again */
+    lb->body.xf.pos.x += 0.0655f;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&osim, false, true));
+    TEST_ASSERT_FALSE(osim.excused);
+    /* never excused to start with: a body overlap alone excuses nothing */
+    lb->body.xf.pos.x -= 0.0655f;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, soak_sim_check(&osim, false, true));
+    TEST_ASSERT_FALSE(osim.excused);
+}
+
 static void test_replay_format_round_trips_special_values(void)
 {
     soak_replay_t rp;
@@ -1630,6 +1671,7 @@ int main(void)
     RUN_TEST(test_oracle_support);
     RUN_TEST(test_oracle_support_edge_contacts);
     RUN_TEST(test_oracle_velocity);
+    RUN_TEST(test_excuse_lasts_inside_static_body);
     RUN_TEST(test_replay_format_round_trips_special_values);
     RUN_TEST(test_every_replay_passes);
     RUN_TEST(test_open_replays_parse);

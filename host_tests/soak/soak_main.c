@@ -218,7 +218,7 @@ static void print_stats(const char *what, const soak_stats_t *st, uint64_t level
            what, (unsigned long long)st->soft_pen_frames, st->max_soft_pen * 1000.0, SOAK_RECOVER_FRAMES,
            (unsigned long long)st->stuck_events, (unsigned long long)st->excused_escapes, st->frames ? 100.0 * (double)st->on_floor_frames / (double)st->frames : 0.0,
            st->frames ? 100.0 * (double)st->steep_frames / (double)st->frames : 0.0);
-    if (st->wedged_frames) printf(", wedged by the game with no room %llu", (unsigned long long)st->wedged_frames);
+    if (st->wedged_frames) printf(", still in the game's overlap (wedged, in a body) %llu", (unsigned long long)st->wedged_frames);
     if (secs > 0) printf(", %.0f frames/s", (double)st->frames / secs);
     printf("\n");
     printf("%s: reported only: frames with the sweep capsule > 1 cm inside a static collider body: %llu (max %.1f mm)\n",

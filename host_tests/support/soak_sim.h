@@ -252,7 +252,7 @@ const char *soak_fail_name(int kind);
 typedef struct {
     uint64_t frames, hard[SOAK_FAIL_COUNT];
     uint64_t soft_pen_frames;     ///< penetrating frames excused by teleport/up change/movers
-    uint64_t wedged_frames;       ///< frames excused as wedged by the game with no room (soak_sim_check)
+    uint64_t wedged_frames;       ///< frames excused as still in the game's overlap: wedged with no room, or in a static collider body (soak_sim_check)
     uint64_t inside_frames;       ///< oracle failures withheld: the step started or ended wholly
                                   ///< inside a closed solid
     uint64_t stuck_events;        ///< excused penetration lasting > SOAK_RECOVER_FRAMES
