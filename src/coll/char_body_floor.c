@@ -665,9 +665,16 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * 41.4 degrees off up, steeper than walkable; at the crack's mouth against the room
          * wall the slide off one edge met the wall, the rule gave up, and the foot stood on
          * the floor in the crack, 221 mm under the ball resting on both (soak s15 l315). */
-        if (over_floor && !(n1u > 0.02f) && n1u > -0.1f && steep_face(c, &h1)) {
+        if (over_floor && !(n1u > 0.02f) && n1u > -0.1f) {
             /* ... unless the ball, held against that wall by the contact it slid off, slides
-             * down the groove between the two onto a floor's face (soak s25 l233) */
+             * down the groove between the two onto a floor's face (soak s25 l233). A taller
+             * piece's edge along up (its vertical corner: no face) is such a wall for that
+             * groove too. Walking (r 0.78, step 0.57) off a tile field's edge (tops 0.097)
+             * towards a staircase's top block (0.655 high, 0.69 m across up), a ramp's
+             * vertical corner 6 mm beside the ball: the slide down the block's top edge met
+             * that corner at once, the rule gave up, and the foot stood on the room floor
+             * 67 mm under the ball resting on the tiles' edges and the block's (soak s103
+             * l399). Down the groove between the two the ball lands on the tile's top. */
             const fm_vec3_t g = v3_cross(h0.normal, h1.normal);
             const float gl = v3_len(g), gu = v3_dot(g, up);
             fm_vec3_t b0g = b0;
@@ -683,6 +690,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                 n1u = v3_dot(h1.normal, up);
                 break;
             }
+            if (!steep_face(c, &h1)) return false; /* (an edge: the groove only, else as before) */
             h1 = h0;
             d1 = d0;
             n1u = n0u;
