@@ -649,6 +649,27 @@ static void test_oracle_footing_steep_within_the_angle_tolerance(void)
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, in, z, z, true, false, false));
 }
 
+/* The runtime's positions are floats: a foot within float rounding of a tread's edge (8
+ * float steps of its largest coordinate, 15 um at x = 16) is on either side of the edge as
+ * the rounding goes, and the oracle takes the better side (s99 l223: 0.88 um past a tread's
+ * edge, stood on the tread below, 180.76 mm under it). 1 mm past the edge, on the lower
+ * level, still fails; and the same foot on the tread passes. */
+static void test_oracle_footing_float_rounding_at_tread_edge(void)
+{
+    oracle_setup(SOAK_FAIL_FOOTING);
+    const char_body_settings_t *s = &osim.body.settings; /* r 0.5, step 0.25, owner at the foot */
+    tops_begin();
+    top_quad(13, 19, -3, 3, 0.0);
+    top_quad(16, 19, -3, 3, 0.15); /* a tread 0.15 m up, its edge at x = 16 */
+    const fm_vec3_t near = V(16.000006f, 0.0f, 0.0f), past = V(16.001f, 0.0f, 0.0f), on = V(16.000006f, 0.15f, 0.0f);
+    TEST_ASSERT_TRUE(soak_check_footing(&lvl, s, near) > 0.14); /* exact: under the tread */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing_rounded(&lvl, s, near, false));
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(near, near, V(0, 0, 0), V(0, 0, 0), true, false, false));
+    TEST_ASSERT_TRUE(soak_check_footing_rounded(&lvl, s, past, false) > 0.14);
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(past, past, V(0, 0, 0), V(0, 0, 0), true, false, false));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing_rounded(&lvl, s, on, false));
+}
+
 /* Crack, slot or hole: the overlapped edges must surround the foot across up. Two block
  * corners 122 degrees apart beside open floor (soak seed 1 levels 5, 47, 49, 66, 69) do
  * not hold the ball, which rolls off between them onto the floor: the body standing on
@@ -1656,6 +1677,7 @@ int main(void)
     RUN_TEST(test_oracle_footing);
     RUN_TEST(test_oracle_footing_on_a_valley_slope);
     RUN_TEST(test_oracle_footing_contacts_must_surround_the_foot);
+    RUN_TEST(test_oracle_footing_float_rounding_at_tread_edge);
     RUN_TEST(test_oracle_footing_steep_within_the_angle_tolerance);
     RUN_TEST(test_oracle_footing_ledge_a_hair_beside_the_foot);
     RUN_TEST(test_oracle_footing_resting_on_a_steep_valley_slope);

@@ -380,8 +380,7 @@ int soak_sim_check_motion(soak_sim_t *sim, const soak_motion_t *m)
     /* (c) footing */
     if (!excused && grounded1 && ON(SOAK_FAIL_FOOTING)) {
         sim->st.oracle_frames[SOAK_FAIL_FOOTING]++;
-        double ex = char_body_is_on_steep_surface(b) ? soak_check_footing_steep(sim->lvl, s, m->pos1)
-                                                     : soak_check_footing(sim->lvl, s, m->pos1);
+        double ex = soak_check_footing_rounded(sim->lvl, s, m->pos1, char_body_is_on_steep_surface(b));
         if (ex > SOAK_FOOT_TOL)
             OFAIL(SOAK_FAIL_FOOTING, "grounded with the foot %.2f mm below the walkable surface under it, pos (%.4f %.4f %.4f)",
                  ex * 1000.0, (double)m->pos1.x, (double)m->pos1.y, (double)m->pos1.z);
@@ -841,8 +840,7 @@ void soak_sim_explain(const soak_sim_t *sim, FILE *out)
                 w->v[1][2], w->v[2][0], w->v[2][1], w->v[2][2]);
     }
     if (sim->checks >= SOAK_CHECKS_CURRENT) {
-        double ex = char_body_is_on_steep_surface(b) ? soak_check_footing_steep(sim->lvl, s, sim->owner)
-                                                     : soak_check_footing(sim->lvl, s, sim->owner);
+        double ex = soak_check_footing_rounded(sim->lvl, s, sim->owner, char_body_is_on_steep_surface(b));
         fm_vec3_t foot = char_body_foot_pos(b);
         fprintf(out, "  footing: foot (%.5f %.5f %.5f) %.2f mm below the walkable surface under it", (double)foot.x,
                 (double)foot.y, (double)foot.z, ex * 1000.0);

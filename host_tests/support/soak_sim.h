@@ -322,6 +322,11 @@ double soak_check_footing(const soak_level_t *lvl, const char_body_settings_t *s
 /** soak_check_footing for a body grounded on a steep surface: faces within the checker's
  *  cosine tolerance of the floor angle (1e-4) count as steep, as the body judged them. */
 double soak_check_footing_steep(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner);
+/** The footing oracle's verdict: soak_check_footing (or _steep), the best of it over the
+ *  foot moved across up by float rounding (8 float steps of the owner's largest
+ *  coordinate: 2^-20 of it, at least 2^-20 m) in 8 directions. A float foot within
+ *  rounding of a tread's edge is on either side of it as the rounding goes (s99 l223). */
+double soak_check_footing_rounded(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, bool steep);
 extern int32_t soak_footing_tri; ///< triangle (lvl->wtris index) behind the last footing result, -1: none
 extern int32_t soak_footing_tri2; ///< the other triangle of its crack pair (case 2), -1: the surface under the foot
 extern int soak_footing_ncontacts; ///< contacts around the foot of that crack, 0: the surface under the foot
