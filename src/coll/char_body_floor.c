@@ -933,7 +933,7 @@ again:;
              * move off an edge ahead. Held from all sides (rest_at_foot's around: a crack's
              * two edges), it rests on what it meets; on one side only, the old path runs.
              * Walking (r 0.48) across a 0.29 m crack between slabs 0.242 and 0.249 m high
-             * towards the higher, beside a V valley block's end: the drop met the block's
+             * towards the higher, beside a V valley's end: the drop met a valley block's
              * side edge first (0.59 m over the foot, 0.43 m across up, walkable), the roll
              * off it met nothing, and the slide down its tangent met the higher slab's edge,
              * ahead like the block's: not counted, the rule gave up and the foot stood on the
