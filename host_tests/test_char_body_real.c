@@ -3925,6 +3925,165 @@ static void test_valley_slot_beside_ramp_top_edge(void)
                   "the same, the seed's run (s102 l395b): grounded foot (slot edges 0.3070)");
 }
 
+/* ---- a crack between two slabs walked across beside a V valley's end ---- */
+
+/* Soak s113 l98 (generator 2): the 81 static triangles within 1 m of the failing foot, exact
+ * (floats of the checker's doubles, bounding-sphere culled), one instance per generator piece
+ * (ids as in the soak): the room (1, floor y 0), a crack piece's side (3), a V valley (9: its
+ * blocks' slopes 38 degrees off up, the near block's end face towards the crack), an
+ * overhang's quad (12), a tile field (14) and the crack piece (16): two slabs side by side,
+ * 0.2423 and 0.2492 m high, their facing edges parallel and 0.2905 m apart. r 0.475, height
+ * 3.98, step 0.885, snap 0.979, walkable to 68.7 degrees, 8 slides, owner = foot. */
+static const float s113_l98_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 45 */
+    {0x0p+0f, 0x0p+0f, 0x1p+3f, 0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 54 */
+    {0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 56 */
+    {0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 57 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.b4e2fcp+2f, 0x0p+0f, 0x1.c85254p+3f, 0x1.4e87dp+2f, 0x0p+0f, 0x1.16a9aap+3f, 0x1.4e87dp+2f, 0x1.beca1p-3f, 0x1.16a9aap+3f}, /* 104 */
+    {0x1.b4e2fcp+2f, 0x0p+0f, 0x1.c85254p+3f, 0x1.4e87dp+2f, 0x1.beca1p-3f, 0x1.16a9aap+3f, 0x1.b4e2fcp+2f, 0x1.beca1p-3f, 0x1.c85254p+3f}, /* 105 */
+    {0x1.28b3dep+3f, 0x1.ec9454p-4f, 0x1.38ac3ap+3f, 0x1.1f53f4p+3f, 0x1.ec9454p-4f, 0x1.67e8d4p+3f, 0x1.a5c8b2p+2f, 0x1.37c5p+1f, 0x1.58bd6cp+3f}, /* 420 */
+    {0x1.28b3dep+3f, 0x1.ec9454p-4f, 0x1.38ac3ap+3f, 0x1.a5c8b2p+2f, 0x1.37c5p+1f, 0x1.58bd6cp+3f, 0x1.b88886p+2f, 0x1.37c5p+1f, 0x1.2980dp+3f}, /* 421 */
+    {0x1.28b3dep+3f, 0x0p+0f, 0x1.38ac3ap+3f, 0x1.1f53f4p+3f, 0x0p+0f, 0x1.67e8d4p+3f, 0x1.1f53f4p+3f, 0x1.ec9454p-4f, 0x1.67e8d4p+3f}, /* 422 */
+    {0x1.28b3dep+3f, 0x0p+0f, 0x1.38ac3ap+3f, 0x1.1f53f4p+3f, 0x1.ec9454p-4f, 0x1.67e8d4p+3f, 0x1.28b3dep+3f, 0x1.ec9454p-4f, 0x1.38ac3ap+3f}, /* 423 */
+    {0x1.28b3dep+3f, 0x0p+0f, 0x1.38ac3ap+3f, 0x1.28b3dep+3f, 0x1.ec9454p-4f, 0x1.38ac3ap+3f, 0x1.b88886p+2f, 0x1.37c5p+1f, 0x1.2980dp+3f}, /* 426 */
+    {0x1.28b3dep+3f, 0x0p+0f, 0x1.38ac3ap+3f, 0x1.b88886p+2f, 0x1.37c5p+1f, 0x1.2980dp+3f, 0x1.b88886p+2f, 0x0p+0f, 0x1.2980dp+3f}, /* 427 */
+    {0x1.1f53f4p+3f, 0x0p+0f, 0x1.67e8d4p+3f, 0x1.a5c8b2p+2f, 0x1.37c5p+1f, 0x1.58bd6cp+3f, 0x1.1f53f4p+3f, 0x1.ec9454p-4f, 0x1.67e8d4p+3f}, /* 429 */
+    {0x1.2c8994p+3f, 0x1.ec9454p-4f, 0x1.396f1p+3f, 0x1.2329aap+3f, 0x1.ec9454p-4f, 0x1.68abaap+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f}, /* 430 */
+    {0x1.2c8994p+3f, 0x1.ec9454p-4f, 0x1.396f1p+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f, 0x1.78f92ep+3f, 0x1.001f9cp+1f, 0x1.489a78p+3f}, /* 431 */
+    {0x1.2c8994p+3f, 0x0p+0f, 0x1.396f1p+3f, 0x1.2329aap+3f, 0x0p+0f, 0x1.68abaap+3f, 0x1.2329aap+3f, 0x1.ec9454p-4f, 0x1.68abaap+3f}, /* 432 */
+    {0x1.2c8994p+3f, 0x0p+0f, 0x1.396f1p+3f, 0x1.2329aap+3f, 0x1.ec9454p-4f, 0x1.68abaap+3f, 0x1.2c8994p+3f, 0x1.ec9454p-4f, 0x1.396f1p+3f}, /* 433 */
+    {0x1.78f92ep+3f, 0x0p+0f, 0x1.489a78p+3f, 0x1.6f9944p+3f, 0x0p+0f, 0x1.77d714p+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f}, /* 434 */
+    {0x1.78f92ep+3f, 0x0p+0f, 0x1.489a78p+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f, 0x1.78f92ep+3f, 0x1.001f9cp+1f, 0x1.489a78p+3f}, /* 435 */
+    {0x1.2c8994p+3f, 0x0p+0f, 0x1.396f1p+3f, 0x1.2c8994p+3f, 0x1.ec9454p-4f, 0x1.396f1p+3f, 0x1.78f92ep+3f, 0x1.001f9cp+1f, 0x1.489a78p+3f}, /* 436 */
+    {0x1.2c8994p+3f, 0x0p+0f, 0x1.396f1p+3f, 0x1.78f92ep+3f, 0x1.001f9cp+1f, 0x1.489a78p+3f, 0x1.78f92ep+3f, 0x0p+0f, 0x1.489a78p+3f}, /* 437 */
+    {0x1.2329aap+3f, 0x0p+0f, 0x1.68abaap+3f, 0x1.6f9944p+3f, 0x0p+0f, 0x1.77d714p+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f}, /* 438 */
+    {0x1.2329aap+3f, 0x0p+0f, 0x1.68abaap+3f, 0x1.6f9944p+3f, 0x1.001f9cp+1f, 0x1.77d714p+3f, 0x1.2329aap+3f, 0x1.ec9454p-4f, 0x1.68abaap+3f}, /* 439 */
+    {0x1.1d04fp+4f, 0x0p+0f, 0x1.508be4p+3f, 0x1.82ebb8p+3f, 0x1.3cd2c2p+0f, 0x1.e71406p+2f, 0x1.c42644p+3f, 0x1.3cd2c2p+0f, 0x1.854d4p+3f}, /* 525 */
+    {0x1.45fbe8p+3f, 0x0p+0f, 0x1.d9b468p+2f, 0x1.634bcep+3f, 0x0p+0f, 0x1.04be74p+3f, 0x1.634bcep+3f, 0x1.8e09dcp-3f, 0x1.04be74p+3f}, /* 554 */
+    {0x1.635918p+3f, 0x0p+0f, 0x1.04c948p+3f, 0x1.80a8fep+3f, 0x0p+0f, 0x1.1cad8ap+3f, 0x1.80a8fep+3f, 0x1.91db42p-3f, 0x1.1cad8ap+3f}, /* 566 */
+    {0x1.635918p+3f, 0x0p+0f, 0x1.04c948p+3f, 0x1.80a8fep+3f, 0x1.91db42p-3f, 0x1.1cad8ap+3f, 0x1.635918p+3f, 0x1.91db42p-3f, 0x1.04c948p+3f}, /* 567 */
+    {0x1.45e3c8p+3f, 0x0p+0f, 0x1.d9b952p+2f, 0x1.2dff88p+3f, 0x1.7be924p-3f, 0x1.0a2c9p+3f, 0x1.2dff88p+3f, 0x0p+0f, 0x1.0a2c9p+3f}, /* 611 */
+    {0x1.45f112p+3f, 0x0p+0f, 0x1.d9cefcp+2f, 0x1.6340f8p+3f, 0x1.7b24d4p-3f, 0x1.04cbbep+3f, 0x1.6340f8p+3f, 0x0p+0f, 0x1.04cbbep+3f}, /* 613 */
+    {0x1.2e0cd2p+3f, 0x0p+0f, 0x1.0a3764p+3f, 0x1.4b5cb8p+3f, 0x0p+0f, 0x1.221ba4p+3f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f}, /* 614 */
+    {0x1.2e0cd2p+3f, 0x0p+0f, 0x1.0a3764p+3f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f, 0x1.2e0cd2p+3f, 0x1.7b24d4p-3f, 0x1.0a3764p+3f}, /* 615 */
+    {0x1.45f112p+3f, 0x0p+0f, 0x1.d9cefcp+2f, 0x1.6340f8p+3f, 0x0p+0f, 0x1.04cbbep+3f, 0x1.4b5cb8p+3f, 0x0p+0f, 0x1.221ba4p+3f}, /* 616 */
+    {0x1.45f112p+3f, 0x0p+0f, 0x1.d9cefcp+2f, 0x1.4b5cb8p+3f, 0x0p+0f, 0x1.221ba4p+3f, 0x1.2e0cd2p+3f, 0x0p+0f, 0x1.0a3764p+3f}, /* 617 */
+    {0x1.45f112p+3f, 0x1.7b24d4p-3f, 0x1.d9cefcp+2f, 0x1.2e0cd2p+3f, 0x1.7b24d4p-3f, 0x1.0a3764p+3f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f}, /* 618 */
+    {0x1.45f112p+3f, 0x1.7b24d4p-3f, 0x1.d9cefcp+2f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f, 0x1.6340f8p+3f, 0x1.7b24d4p-3f, 0x1.04cbbep+3f}, /* 619 */
+    {0x1.45f112p+3f, 0x0p+0f, 0x1.d9cefcp+2f, 0x1.2e0cd2p+3f, 0x0p+0f, 0x1.0a3764p+3f, 0x1.2e0cd2p+3f, 0x1.7b24d4p-3f, 0x1.0a3764p+3f}, /* 620 */
+    {0x1.6340f8p+3f, 0x0p+0f, 0x1.04cbbep+3f, 0x1.6340f8p+3f, 0x1.7b24d4p-3f, 0x1.04cbbep+3f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f}, /* 622 */
+    {0x1.6340f8p+3f, 0x0p+0f, 0x1.04cbbep+3f, 0x1.4b5cb8p+3f, 0x1.7b24d4p-3f, 0x1.221ba4p+3f, 0x1.4b5cb8p+3f, 0x0p+0f, 0x1.221ba4p+3f}, /* 623 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.634e42p+3f, 0x1.91db42p-3f, 0x1.04d694p+3f, 0x1.809e2ap+3f, 0x1.91db42p-3f, 0x1.1cbad4p+3f}, /* 624 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.809e2ap+3f, 0x1.91db42p-3f, 0x1.1cbad4p+3f, 0x1.809e2ap+3f, 0x0p+0f, 0x1.1cbad4p+3f}, /* 625 */
+    {0x1.4b6a02p+3f, 0x0p+0f, 0x1.22267ap+3f, 0x1.68b9e8p+3f, 0x0p+0f, 0x1.3a0abap+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f}, /* 626 */
+    {0x1.4b6a02p+3f, 0x0p+0f, 0x1.22267ap+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f, 0x1.4b6a02p+3f, 0x1.91db42p-3f, 0x1.22267ap+3f}, /* 627 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.809e2ap+3f, 0x0p+0f, 0x1.1cbad4p+3f, 0x1.68b9e8p+3f, 0x0p+0f, 0x1.3a0abap+3f}, /* 628 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.68b9e8p+3f, 0x0p+0f, 0x1.3a0abap+3f, 0x1.4b6a02p+3f, 0x0p+0f, 0x1.22267ap+3f}, /* 629 */
+    {0x1.634e42p+3f, 0x1.91db42p-3f, 0x1.04d694p+3f, 0x1.4b6a02p+3f, 0x1.91db42p-3f, 0x1.22267ap+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f}, /* 630 */
+    {0x1.634e42p+3f, 0x1.91db42p-3f, 0x1.04d694p+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f, 0x1.809e2ap+3f, 0x1.91db42p-3f, 0x1.1cbad4p+3f}, /* 631 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.4b6a02p+3f, 0x0p+0f, 0x1.22267ap+3f, 0x1.4b6a02p+3f, 0x1.91db42p-3f, 0x1.22267ap+3f}, /* 632 */
+    {0x1.634e42p+3f, 0x0p+0f, 0x1.04d694p+3f, 0x1.4b6a02p+3f, 0x1.91db42p-3f, 0x1.22267ap+3f, 0x1.634e42p+3f, 0x1.91db42p-3f, 0x1.04d694p+3f}, /* 633 */
+    {0x1.809e2ap+3f, 0x0p+0f, 0x1.1cbad4p+3f, 0x1.809e2ap+3f, 0x1.91db42p-3f, 0x1.1cbad4p+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f}, /* 634 */
+    {0x1.809e2ap+3f, 0x0p+0f, 0x1.1cbad4p+3f, 0x1.68b9e8p+3f, 0x1.91db42p-3f, 0x1.3a0abap+3f, 0x1.68b9e8p+3f, 0x0p+0f, 0x1.3a0abap+3f}, /* 635 */
+    {0x1.68c732p+3f, 0x0p+0f, 0x1.3a158ep+3f, 0x1.861718p+3f, 0x1.97ed78p-3f, 0x1.51f9cep+3f, 0x1.68c732p+3f, 0x1.97ed78p-3f, 0x1.3a158ep+3f}, /* 639 */
+    {0x1.80ab74p+3f, 0x0p+0f, 0x1.1cc5a8p+3f, 0x1.861718p+3f, 0x0p+0f, 0x1.51f9cep+3f, 0x1.68c732p+3f, 0x0p+0f, 0x1.3a158ep+3f}, /* 641 */
+    {0x1.80ab74p+3f, 0x1.97ed78p-3f, 0x1.1cc5a8p+3f, 0x1.68c732p+3f, 0x1.97ed78p-3f, 0x1.3a158ep+3f, 0x1.861718p+3f, 0x1.97ed78p-3f, 0x1.51f9cep+3f}, /* 642 */
+    {0x1.80ab74p+3f, 0x0p+0f, 0x1.1cc5a8p+3f, 0x1.68c732p+3f, 0x0p+0f, 0x1.3a158ep+3f, 0x1.68c732p+3f, 0x1.97ed78p-3f, 0x1.3a158ep+3f}, /* 644 */
+    {0x1.80ab74p+3f, 0x0p+0f, 0x1.1cc5a8p+3f, 0x1.68c732p+3f, 0x1.97ed78p-3f, 0x1.3a158ep+3f, 0x1.80ab74p+3f, 0x1.97ed78p-3f, 0x1.1cc5a8p+3f}, /* 645 */
+    {0x1.a98e76p+3f, 0x0p+0f, 0x1.01a716p+3f, 0x1.a98e76p+3f, 0x1.f02aap-3f, 0x1.01a716p+3f, 0x1.634d86p+3f, 0x1.f02aap-3f, 0x1.4418d8p+3f}, /* 672 */
+    {0x1.a98e76p+3f, 0x0p+0f, 0x1.01a716p+3f, 0x1.634d86p+3f, 0x1.f02aap-3f, 0x1.4418d8p+3f, 0x1.634d86p+3f, 0x0p+0f, 0x1.4418d8p+3f}, /* 673 */
+    {0x1.831f9p+3f, 0x0p+0f, 0x1.b2083ep+2f, 0x1.3cdeap+3f, 0x0p+0f, 0x1.1b75e2p+3f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f}, /* 674 */
+    {0x1.831f9p+3f, 0x0p+0f, 0x1.b2083ep+2f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f, 0x1.831f9p+3f, 0x1.f02aap-3f, 0x1.b2083ep+2f}, /* 675 */
+    {0x1.a98e76p+3f, 0x0p+0f, 0x1.01a716p+3f, 0x1.634d86p+3f, 0x0p+0f, 0x1.4418d8p+3f, 0x1.3cdeap+3f, 0x0p+0f, 0x1.1b75e2p+3f}, /* 676 */
+    {0x1.a98e76p+3f, 0x0p+0f, 0x1.01a716p+3f, 0x1.3cdeap+3f, 0x0p+0f, 0x1.1b75e2p+3f, 0x1.831f9p+3f, 0x0p+0f, 0x1.b2083ep+2f}, /* 677 */
+    {0x1.a98e76p+3f, 0x1.f02aap-3f, 0x1.01a716p+3f, 0x1.831f9p+3f, 0x1.f02aap-3f, 0x1.b2083ep+2f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f}, /* 678 */
+    {0x1.a98e76p+3f, 0x1.f02aap-3f, 0x1.01a716p+3f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f, 0x1.634d86p+3f, 0x1.f02aap-3f, 0x1.4418d8p+3f}, /* 679 */
+    {0x1.634d86p+3f, 0x0p+0f, 0x1.4418d8p+3f, 0x1.634d86p+3f, 0x1.f02aap-3f, 0x1.4418d8p+3f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f}, /* 682 */
+    {0x1.634d86p+3f, 0x0p+0f, 0x1.4418d8p+3f, 0x1.3cdeap+3f, 0x1.f02aap-3f, 0x1.1b75e2p+3f, 0x1.3cdeap+3f, 0x0p+0f, 0x1.1b75e2p+3f}, /* 683 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.5c8cdp+3f, 0x1.fe4aa2p-3f, 0x1.4a7bd2p+3f, 0x1.3e5a88p+3f, 0x1.fe4aa2p-3f, 0x1.670af4p+3f}, /* 684 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.3e5a88p+3f, 0x1.fe4aa2p-3f, 0x1.670af4p+3f, 0x1.3e5a88p+3f, 0x0p+0f, 0x1.670af4p+3f}, /* 685 */
+    {0x1.361deap+3f, 0x0p+0f, 0x1.21d8dcp+3f, 0x1.17eba2p+3f, 0x0p+0f, 0x1.3e67fep+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f}, /* 686 */
+    {0x1.361deap+3f, 0x0p+0f, 0x1.21d8dcp+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f, 0x1.361deap+3f, 0x1.fe4aa2p-3f, 0x1.21d8dcp+3f}, /* 687 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.3e5a88p+3f, 0x0p+0f, 0x1.670af4p+3f, 0x1.17eba2p+3f, 0x0p+0f, 0x1.3e67fep+3f}, /* 688 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.17eba2p+3f, 0x0p+0f, 0x1.3e67fep+3f, 0x1.361deap+3f, 0x0p+0f, 0x1.21d8dcp+3f}, /* 689 */
+    {0x1.5c8cdp+3f, 0x1.fe4aa2p-3f, 0x1.4a7bd2p+3f, 0x1.361deap+3f, 0x1.fe4aa2p-3f, 0x1.21d8dcp+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f}, /* 690 */
+    {0x1.5c8cdp+3f, 0x1.fe4aa2p-3f, 0x1.4a7bd2p+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f, 0x1.3e5a88p+3f, 0x1.fe4aa2p-3f, 0x1.670af4p+3f}, /* 691 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.361deap+3f, 0x0p+0f, 0x1.21d8dcp+3f, 0x1.361deap+3f, 0x1.fe4aa2p-3f, 0x1.21d8dcp+3f}, /* 692 */
+    {0x1.5c8cdp+3f, 0x0p+0f, 0x1.4a7bd2p+3f, 0x1.361deap+3f, 0x1.fe4aa2p-3f, 0x1.21d8dcp+3f, 0x1.5c8cdp+3f, 0x1.fe4aa2p-3f, 0x1.4a7bd2p+3f}, /* 693 */
+    {0x1.3e5a88p+3f, 0x0p+0f, 0x1.670af4p+3f, 0x1.3e5a88p+3f, 0x1.fe4aa2p-3f, 0x1.670af4p+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f}, /* 694 */
+    {0x1.3e5a88p+3f, 0x0p+0f, 0x1.670af4p+3f, 0x1.17eba2p+3f, 0x1.fe4aa2p-3f, 0x1.3e67fep+3f, 0x1.17eba2p+3f, 0x0p+0f, 0x1.3e67fep+3f} /* 695 */
+};
+static const uint8_t s113_l98_piece_tris[] = {8, 2, 17, 1, 31, 22};
+static const uint16_t s113_l98_piece_ids[] = {1, 3, 9, 12, 14, 16};
+
+/* Where a ball over the foot rests on the level edge from vertex i to vertex j of triangle t:
+ * r - sqrt(r^2 - l^2) under it, l the foot's distance across up from the edge's line. */
+static float s113_l98_edge_rest(const float *t, int i, int j, fm_vec3_t foot, float r)
+{
+    const float ex = t[3 * j] - t[3 * i], ez = t[3 * j + 2] - t[3 * i + 2];
+    const float l = fabsf((foot.x - t[3 * i]) * ez - (foot.z - t[3 * i + 2]) * ex) / sqrtf(ex * ex + ez * ez);
+    return t[3 * i + 1] - (r - sqrtf(r * r - l * l));
+}
+
+/* The body walks at 1 m/s (30 Hz) across the crack from the lower slab towards the higher one,
+ * its foot in the crack (resting on the slabs' edges, 0.23 m up). In the replay's last step the
+ * foot went to 41 mm from the higher slab's edge; the crack rule's ball, dropped from the sweep
+ * capsule, met the V valley block's side edge first (0.59 m over the foot, 0.43 m across up,
+ * 65 degrees off up: walkable), rolled off it onto nothing, and slid down its tangent onto the
+ * higher slab's edge, ahead of the motion like the valley's edge: not counted (the stairs'
+ * gate), so the rule gave up and the foot stood on the room floor in the crack, 171 mm under
+ * the ball resting on the slabs' edges (soak s113 l98 frame 3). The body's own ball at the
+ * foot rests on those edges: it stands there (between the checker's least rest, on the lower
+ * slab's edge, and the higher slab's top), grounded, and walks on onto the higher slab. */
+static void test_crack_between_slabs_beside_valley_end(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s113_l98_piece_tris; p++) {
+        geo_tris(s113_l98_tris + first, s113_l98_piece_tris[p]);
+        first += s113_l98_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s113_l98_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s113_l98_tris / sizeof s113_l98_tris[0], first);
+    static const soak_shape_t shape = {0x1.e6979ap-2f, 0x1.fd901ap+1f, 0x1.c52abap-1f, 0x1.f52c4ep-1f,
+                                        0x1.32eefp+0f, 0x1.1b99e6p+4f, 0x1.d011b2p+5f, 8, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(0x1.49c646p+3f, 0x1.d2aadp-3f, 0x1.2e8334p+3f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.744618p-1f, 0.0f, 0x1.5ee6fap-1f));
+    const fm_vec3_t in = cb_vec(-0x1.7542a4p-1f, 0.0f, 0x1.5fd506p-1f);
+    const float speed = sqrtf(in.x * in.x + in.z * in.z);
+    body.input_velocity = in;
+    const float dt = 0x1.111112p-5f, r = shape.radius;
+    for (int f = 0; f < 4; f++) CB_STEP(&body, dt);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float low = s113_l98_edge_rest(s113_l98_tris[66], 1, 2, foot, r);  /* 679: 0.2423 */
+    const float high = s113_l98_tris[75][1];                                     /* 690: 0.2492 */
+    const float least = f_min_t(low, s113_l98_edge_rest(s113_l98_tris[75], 0, 1, foot, r));
+    cb_report("crack between slabs beside a V valley's end (s113 l98): grounded foot", foot.y, "m");
+    cb_report("crack between slabs beside a V valley's end (s113 l98): the checker's least rest", least, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= least - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= high + 0.001f);
+    /* on across the higher slab (10 steps: 0.33 m, within the rebuilt 1 m) */
+    const fm_vec3_t from = pos;
+    for (int f = 0; f < 10; f++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(char_body_foot_pos(&body).y >= foot.y - 0.001f); /* never down into the crack */
+    }
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, high, char_body_foot_pos(&body).y);
+    const float went = ((pos.x - from.x) * in.x + (pos.z - from.z) * in.z) / speed;
+    TEST_ASSERT_TRUE(went >= 0.9f * speed * 10.0f * dt);
+}
+
 /* Climbing ordinary stairs, the stair step comes back up onto the tread along the way its
  * lift just came down, unswept: the climb's queries, counted. */
 static void test_stair_climb_query_count(void)
@@ -4205,5 +4364,6 @@ int main(void)
     RUN_TEST(test_slot_hair_wider_than_capsule_no_topup_into_wall);
     RUN_TEST(test_valley_slot_beside_ramp_top_edge);
     RUN_TEST(test_tile_edge_beside_stair_block_and_ramp_corner);
+    RUN_TEST(test_crack_between_slabs_beside_valley_end);
     return UNITY_END();
 }

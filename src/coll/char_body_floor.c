@@ -891,8 +891,9 @@ again:;
             bool level = false; /* counted as a nearly level edge (level_edge), not a face */
             bool moved_off = false; /* moved off a nearly level first contact (drop_off_level) */
             const bool level_first = n1u * n1u >= 0.9f && v3_len(across) > 0.5f;
+            bool slid = false; /* drop_past_side's slide went somewhere (below) */
             if (over_floor && !rolled_off && c1 + floor_gap > 0.5f * r &&
-                (drop_past_side(c, &b0p, len, &h1p, &d1p) ||
+                ((slid = drop_past_side(c, &b0p, len, &h1p, &d1p)) ||
                  (level_first &&
                   (moved_off = drop_off_level(c, b1, across, foot, floor_gap, len, &b0p, &h1p, &d1p)))) &&
                 !(ahead && v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f) &&
@@ -933,6 +934,25 @@ again:;
                 n1u = v3_dot(h1.normal, up);
                 if (!(n1u > 0.02f)) return false;
                 goto again;
+            }
+            /* Slid past a contact ahead onto a walkable one ahead too, the foot over a gap
+             * (not on its floor: climbing stairs the foot is on its tread, and the stairs'
+             * gate above stands): the body's own ball at the foot decides, as after foot40's
+             * move off an edge ahead. Held from all sides (rest_at_foot's around: a crack's
+             * two edges), it rests on what it meets; on one side only, the old path runs.
+             * Walking (r 0.48) across a 0.29 m crack between slabs 0.242 and 0.249 m high
+             * towards the higher, beside a V valley's end: the drop met a valley block's
+             * side edge first (0.59 m over the foot, 0.43 m across up, walkable), the roll
+             * off it met nothing, and the slide down its tangent met the higher slab's edge,
+             * ahead like the block's: not counted, the rule gave up and the foot stood on the
+             * room floor in the crack, 171 mm under the ball resting on the edges (soak s113
+             * l98). */
+            if (slid && ahead && floor_gap > cb_len_tol(c, CB_STEP_EPS) &&
+                v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f && v3_dot(h1p.normal, up) >= b->cos_floor_max_angle) {
+                float rest = 0.0f;
+                bool around = false;
+                if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest, &around) && around)
+                    return held_at(rest, reach, -rest, up, h1p.point, &h1p, out, far_out);
             }
             goto hole; /* rolls off (a ledge), unless the ball is in a hole */
         }
