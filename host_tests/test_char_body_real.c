@@ -4296,6 +4296,138 @@ static void test_tile_edge_beside_stair_block_and_ramp_corner(void)
     TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
 }
 
+/* Soak s102 l296 (generator 2): the static triangles within 3 m of the spot (`dumptris`
+ * floats of the checker's doubles, bounding-sphere culled): the room's floor and walls, a
+ * triangle soup of 22 faces leaning over the spot (304-325), a block 0.238 m high (326-338,
+ * its top 332/333), a lower block (343-347) and a wedge (645-652). */
+static const float s102_l296_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 14 */
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+3f}, /* 15 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+4f}, /* 16 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+3f}, /* 17 */
+    {-0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, -0x1p+3f}, /* 26 */
+    {-0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f}, /* 27 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, -0x1p+3f}, /* 28 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f}, /* 29 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {-0x1.a56036p+2f, 0x1.474f82p-4f, -0x1.90b55p+2f, -0x1.b52134p+2f, 0x1.bb72c2p+1f, -0x1.737182p+2f, -0x1.a76144p+2f, 0x1.9d3fc2p+1f, -0x1.ecaebep+2f}, /* 304 */
+    {-0x1.a9de76p+2f, 0x1.37a15ep+1f, -0x1.8159f6p+1f, -0x1.48d786p+3f, 0x1.58229cp+1f, -0x1.9c096cp+2f, -0x1.32f1fep+3f, 0x1.b109dcp+1f, -0x1.ad690ap+2f}, /* 305 */
+    {-0x1.36996ap+3f, 0x1.97ffa2p+1f, -0x1.b6339p+2f, -0x1.25cf6cp+3f, 0x1.2b6e96p+0f, -0x1.fca9ap+2f, -0x1.d71bd6p+2f, 0x1.27b942p+1f, -0x1.d25ddcp+1f}, /* 306 */
+    {-0x1.321dep+3f, 0x1.97117ap+1f, -0x1.71b39ap+2f, -0x1.b33bd4p+2f, 0x1.26a7fp+1f, -0x1.58ba1p+2f, -0x1.ddb6f2p+2f, 0x1.22abb4p+2f, -0x1.c6ce5p+2f}, /* 307 */
+    {-0x1.9f280ep+2f, 0x1.d05432p+0f, -0x1.9ce172p+2f, -0x1.f5dc8p+2f, 0x1.0cc168p+2f, -0x1.ac7862p+2f, -0x1.f9f1f8p+2f, 0x1.74b69cp-2f, -0x1.7462b4p+2f}, /* 308 */
+    {-0x1.1485b6p+3f, 0x1.2c4bbp+0f, -0x1.5ebb54p+2f, -0x1.056a5ap+3f, 0x1.3d2f7cp+0f, -0x1.79e368p+2f, -0x1.1dc6f8p+3f, 0x1.2a6228p+0f, -0x1.b807a2p+2f}, /* 309 */
+    {-0x1.196314p+3f, 0x1.907178p+0f, -0x1.1348c2p+2f, -0x1.c0612p+2f, 0x1.dd8e54p+0f, -0x1.6084eap+2f, -0x1.e00e52p+2f, 0x1.b17878p+1f, -0x1.a21742p+2f}, /* 310 */
+    {-0x1.bf979p+2f, -0x1.aab6e2p-3f, -0x1.1705ccp+2f, -0x1.516c82p+3f, 0x1.2e1ac2p+1f, -0x1.2cab72p+2f, -0x1.588f1ep+3f, 0x1.2193ap+1f, -0x1.e88e08p+1f}, /* 311 */
+    {-0x1.e74a8ap+2f, -0x1.e26d44p-1f, -0x1.3edb92p+2f, -0x1.33271ap+3f, 0x1.1b8bb6p+0f, -0x1.966af8p+2f, -0x1.dff95p+2f, 0x1.537cf4p+2f, -0x1.3540fcp+2f}, /* 312 */
+    {-0x1.e045e8p+2f, 0x1.b8231cp-1f, -0x1.377378p+2f, -0x1.1ebf76p+3f, 0x1.d7fc58p+0f, -0x1.c8f446p+2f, -0x1.ed74eep+2f, -0x1.db65c2p-1f, -0x1.26cb22p+2f}, /* 313 */
+    {-0x1.fa4a1p+2f, 0x1.a337eep+1f, -0x1.72766ep+2f, -0x1.875bacp+2f, 0x1.19b10ap-1f, -0x1.6e5f9ep+2f, -0x1.4acd1cp+3f, 0x1.e64f44p+0f, -0x1.61827cp+2f}, /* 314 */
+    {-0x1.9809ccp+2f, 0x1.04484cp-2f, -0x1.8f69b8p+2f, -0x1.e675d2p+2f, 0x1.11c1d8p+2f, -0x1.a6c042p+2f, -0x1.e2e08ap+2f, 0x1.fc6d42p+1f, -0x1.fcd84ap+1f}, /* 315 */
+    {-0x1.00c24p+3f, 0x1.579a98p-1f, -0x1.a175b2p+2f, -0x1.1fd864p+3f, 0x1.1137p+1f, -0x1.b7910ep+1f, -0x1.bf87bp+2f, 0x1.142c4p+2f, -0x1.0222b2p+2f}, /* 316 */
+    {-0x1.248a66p+2f, 0x1.1cb798p+1f, -0x1.8339aap+2f, -0x1.119e52p+3f, 0x1.a59c4ap+0f, -0x1.e2fa5p+1f, -0x1.991768p+2f, 0x1.b2f7eep+1f, -0x1.4e0768p+2f}, /* 317 */
+    {-0x1.151e54p+3f, -0x1.b6f45ep-3f, -0x1.344288p+2f, -0x1.c70a78p+2f, 0x1.92dc94p+1f, -0x1.35fd6ep+2f, -0x1.c9c098p+2f, -0x1.d9f8c2p-5f, -0x1.d28034p+2f}, /* 318 */
+    {-0x1.fc31cep+2f, -0x1.93b0fcp-2f, -0x1.75f62ep+2f, -0x1.afe3c8p+2f, 0x1.801c4ap-2f, -0x1.d2db06p+2f, -0x1.a4a08ap+2f, 0x1.25ada6p+2f, -0x1.dd418p+2f}, /* 319 */
+    {-0x1.7c802ap+2f, 0x1.3b25eep+2f, -0x1.c03ba4p+2f, -0x1.c66cc6p+2f, 0x1.8d111ep+1f, -0x1.c1ebdap+2f, -0x1.2c84e2p+2f, 0x1.ee6c56p+0f, -0x1.a64946p+2f}, /* 320 */
+    {-0x1.c176c8p+2f, 0x1.22eeeap-2f, -0x1.af27a6p+2f, -0x1.0e7494p+3f, 0x1.94411cp+0f, -0x1.fdd326p+1f, -0x1.d92c1ap+2f, 0x1.40826ap+2f, -0x1.c31c7cp+2f}, /* 321 */
+    {-0x1.2fca84p+2f, 0x1.255f3p+1f, -0x1.c1423ep+2f, -0x1.40239cp+3f, 0x1.3d688ep+1f, -0x1.63db04p+2f, -0x1.138792p+3f, 0x1.1bb6dap+1f, -0x1.2d2e9ap+2f}, /* 322 */
+    {-0x1.cdb04cp+2f, 0x1.4afe1p+2f, -0x1.1bd88cp+2f, -0x1.a37a2ep+2f, 0x1.270d9ep+2f, -0x1.de4f16p+2f, -0x1.20849cp+3f, 0x1.0a5a56p+2f, -0x1.96dc7p+2f}, /* 323 */
+    {-0x1.a2e55p+2f, 0x1.dfccf8p+1f, -0x1.a2e15ep+1f, -0x1.e9457p+2f, 0x1.3b313ap+1f, -0x1.07a006p+2f, -0x1.698bb6p+2f, 0x1.7d0c16p+0f, -0x1.0392acp+2f}, /* 324 */
+    {-0x1.3b246p+2f, 0x1.60a3aap+1f, -0x1.6a7e3ep+2f, -0x1.dd28fep+2f, -0x1.3efd3p-2f, -0x1.08523p+2f, -0x1.b909acp+2f, 0x1.036046p+1f, -0x1.fc795ap+2f}, /* 325 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.780bccp+2f, 0x1.e75968p-3f, -0x1.a11448p+2f, -0x1.152bbcp+3f, 0x1.e75968p-3f, -0x1.5bcf46p+2f}, /* 326 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.152bbcp+3f, 0x1.e75968p-3f, -0x1.5bcf46p+2f, -0x1.152bbcp+3f, 0x0p+0f, -0x1.5bcf46p+2f}, /* 327 */
+    {-0x1.e1f7e8p+2f, 0x0p+0f, -0x1.58dbbcp+3f, -0x1.4a21cap+3f, 0x0p+0f, -0x1.36393cp+3f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f}, /* 328 */
+    {-0x1.e1f7e8p+2f, 0x0p+0f, -0x1.58dbbcp+3f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f, -0x1.e1f7e8p+2f, 0x1.e75968p-3f, -0x1.58dbbcp+3f}, /* 329 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.152bbcp+3f, 0x0p+0f, -0x1.5bcf46p+2f, -0x1.4a21cap+3f, 0x0p+0f, -0x1.36393cp+3f}, /* 330 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.4a21cap+3f, 0x0p+0f, -0x1.36393cp+3f, -0x1.e1f7e8p+2f, 0x0p+0f, -0x1.58dbbcp+3f}, /* 331 */
+    {-0x1.780bccp+2f, 0x1.e75968p-3f, -0x1.a11448p+2f, -0x1.e1f7e8p+2f, 0x1.e75968p-3f, -0x1.58dbbcp+3f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f}, /* 332 */
+    {-0x1.780bccp+2f, 0x1.e75968p-3f, -0x1.a11448p+2f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f, -0x1.152bbcp+3f, 0x1.e75968p-3f, -0x1.5bcf46p+2f}, /* 333 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.e1f7e8p+2f, 0x0p+0f, -0x1.58dbbcp+3f, -0x1.e1f7e8p+2f, 0x1.e75968p-3f, -0x1.58dbbcp+3f}, /* 334 */
+    {-0x1.780bccp+2f, 0x0p+0f, -0x1.a11448p+2f, -0x1.e1f7e8p+2f, 0x1.e75968p-3f, -0x1.58dbbcp+3f, -0x1.780bccp+2f, 0x1.e75968p-3f, -0x1.a11448p+2f}, /* 335 */
+    {-0x1.152bbcp+3f, 0x0p+0f, -0x1.5bcf46p+2f, -0x1.152bbcp+3f, 0x1.e75968p-3f, -0x1.5bcf46p+2f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f}, /* 336 */
+    {-0x1.152bbcp+3f, 0x0p+0f, -0x1.5bcf46p+2f, -0x1.4a21cap+3f, 0x1.e75968p-3f, -0x1.36393cp+3f, -0x1.4a21cap+3f, 0x0p+0f, -0x1.36393cp+3f}, /* 337 */
+    {-0x1.2b157ap+3f, 0x0p+0f, -0x1.4ac864p+2f, -0x1.2b157ap+3f, 0x1.cb45b2p-3f, -0x1.4ac864p+2f, -0x1.b1438cp+3f, 0x1.cb45b2p-3f, -0x1.c50b74p+1f}, /* 338 */
+    {-0x1.2b157ap+3f, 0x0p+0f, -0x1.4ac864p+2f, -0x1.e6399ap+3f, 0x0p+0f, -0x1.f328ecp+2f, -0x1.600b88p+3f, 0x0p+0f, -0x1.2db5cap+3f}, /* 343 */
+    {-0x1.2b157ap+3f, 0x1.cb45b2p-3f, -0x1.4ac864p+2f, -0x1.600b88p+3f, 0x1.cb45b2p-3f, -0x1.2db5cap+3f, -0x1.e6399ap+3f, 0x1.cb45b2p-3f, -0x1.f328ecp+2f}, /* 344 */
+    {-0x1.2b157ap+3f, 0x0p+0f, -0x1.4ac864p+2f, -0x1.600b88p+3f, 0x0p+0f, -0x1.2db5cap+3f, -0x1.600b88p+3f, 0x1.cb45b2p-3f, -0x1.2db5cap+3f}, /* 346 */
+    {-0x1.2b157ap+3f, 0x0p+0f, -0x1.4ac864p+2f, -0x1.600b88p+3f, 0x1.cb45b2p-3f, -0x1.2db5cap+3f, -0x1.2b157ap+3f, 0x1.cb45b2p-3f, -0x1.4ac864p+2f}, /* 347 */
+    {-0x1.ba7462p+2f, 0x0p+0f, -0x1.389f54p+2f, -0x1.83cb32p+2f, 0x0p+0f, -0x1.68a946p+1f, -0x1.311594p+1f, 0x1.425d06p+1f, -0x1.15886ep+2f}, /* 645 */
+    {-0x1.ba7462p+2f, 0x0p+0f, -0x1.389f54p+2f, -0x1.311594p+1f, 0x1.425d06p+1f, -0x1.15886ep+2f, -0x1.9e67f8p+1f, 0x1.425d06p+1f, -0x1.99d32p+2f}, /* 646 */
+    {-0x1.9e67f8p+1f, 0x0p+0f, -0x1.99d32p+2f, -0x1.9e67f8p+1f, 0x1.425d06p+1f, -0x1.99d32p+2f, -0x1.311594p+1f, 0x1.425d06p+1f, -0x1.15886ep+2f}, /* 647 */
+    {-0x1.9e67f8p+1f, 0x0p+0f, -0x1.99d32p+2f, -0x1.311594p+1f, 0x1.425d06p+1f, -0x1.15886ep+2f, -0x1.311594p+1f, 0x0p+0f, -0x1.15886ep+2f}, /* 648 */
+    {-0x1.ba7462p+2f, 0x0p+0f, -0x1.389f54p+2f, -0x1.9e67f8p+1f, 0x0p+0f, -0x1.99d32p+2f, -0x1.311594p+1f, 0x0p+0f, -0x1.15886ep+2f}, /* 649 */
+    {-0x1.ba7462p+2f, 0x0p+0f, -0x1.389f54p+2f, -0x1.311594p+1f, 0x0p+0f, -0x1.15886ep+2f, -0x1.83cb32p+2f, 0x0p+0f, -0x1.68a946p+1f}, /* 650 */
+    {-0x1.ba7462p+2f, 0x0p+0f, -0x1.389f54p+2f, -0x1.9e67f8p+1f, 0x1.425d06p+1f, -0x1.99d32p+2f, -0x1.9e67f8p+1f, 0x0p+0f, -0x1.99d32p+2f}, /* 651 */
+    {-0x1.83cb32p+2f, 0x0p+0f, -0x1.68a946p+1f, -0x1.311594p+1f, 0x0p+0f, -0x1.15886ep+2f, -0x1.311594p+1f, 0x1.425d06p+1f, -0x1.15886ep+2f} /* 652 */
+};
+
+/* The game teleported a body (r 0.88, h 1.87, step 0.0206) with its foot 20.1 mm in the
+ * block's top, 0.225 m inside its east edge: the sweep capsule's bottom 0.5 mm over that top,
+ * its top ball 0.5 mm into an edge of the soup leaning over it, the input (-2.46, 0, 4.28)
+ * m/s further under the soup. No room to be lifted onto the top (the edge over the head);
+ * the recovery's push out of the edge went into the top and the push out of the top into
+ * the edge again (0.25 mm left), and every way of the stand search, swept from inside that
+ * edge, met it at once: the body stood grounded on the top with its foot 20.05 mm under it
+ * (soak s102 l296 frame 2187). The search starts from the start pushed out to touching: it
+ * finds a place. The replay's start, then its input for a quarter second at 240 Hz: never
+ * grounded with the foot under the block's top over the block, and for the last half
+ * walking on the room floor along the input. */
+static void test_teleported_under_soup_edge_onto_block_in_step_zone(void)
+{
+    cb_world_reset();
+    geo_tris(s102_l296_tris, sizeof s102_l296_tris / sizeof s102_l296_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.c44eep-1f, 0x1.de52dap+0f, 0x1.50c62ep-6f, 0x1.05c2e6p-1f,
+                                        0x1.ba0bep-1f, 0x1.7e440cp+5f, 0x1.2cfa1p+5f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(-0x1.b35458p+2f, 0x1.26f248p+0f, -0x1.08e9dcp+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t input = cb_vec(-0x1.3b1a6p+1f, 0.0f, 0x1.11ff04p+2f);
+    body.input_velocity = input;
+    /* the block's top (y 0.238), corners in order around it */
+    static const float top = 0x1.e75968p-3f, cx[4] = {-0x1.780bccp+2f, -0x1.e1f7e8p+2f, -0x1.4a21cap+3f,
+                                                        -0x1.152bbcp+3f};
+    static const float cz[4] = {-0x1.a11448p+2f, -0x1.58dbbcp+3f, -0x1.36393cp+3f, -0x1.5bcf46p+2f};
+    int sunk = 0, walked = 0;
+    float worst = 0.0f;
+    fm_vec3_t from = start;
+    for (int f = 0; f < 60; f++) {
+        if (f == 30) from = pos;
+        CB_STEP(&body, 0x1.111112p-8f);
+        walked += f >= 30 && char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body);
+        const fm_vec3_t foot = char_body_foot_pos(&body);
+        bool over = true; /* the foot over the block's top (inside its four edges) */
+        for (int k = 0; k < 4; k++) {
+            const int j = (k + 1) & 3;
+            if ((cx[j] - cx[k]) * (foot.z - cz[k]) - (cz[j] - cz[k]) * (foot.x - cx[k]) > 0.0f) over = false;
+        }
+        if (char_body_is_on_floor(&body) && over && foot.y < top - 0.001f) {
+            sunk++;
+            if (top - foot.y > worst) worst = top - foot.y;
+        }
+    }
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): frames grounded under its top",
+              (float)sunk, "");
+    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): deepest foot under its top",
+              worst, "m");
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    /* out of there (its foot off the block, past its east edge: the search's first place, one
+     * to fall from), it lands on the room floor and walks the second half along the input (the
+     * block's side, 0.238 m high, a wall for this step, takes the part into it) */
+    TEST_ASSERT_EQUAL_INT(30, walked);
+    TEST_ASSERT_TRUE(foot.y > -0.001f && foot.y < 0.01f);
+    TEST_ASSERT_TRUE((pos.x - from.x) * input.x + (pos.z - from.z) * input.z > 0.0f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -4365,5 +4497,6 @@ int main(void)
     RUN_TEST(test_valley_slot_beside_ramp_top_edge);
     RUN_TEST(test_tile_edge_beside_stair_block_and_ramp_corner);
     RUN_TEST(test_crack_between_slabs_beside_valley_end);
+    RUN_TEST(test_teleported_under_soup_edge_onto_block_in_step_zone);
     return UNITY_END();
 }

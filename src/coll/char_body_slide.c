@@ -833,6 +833,29 @@ static bool foot_ball_rests(const cb_ctx_t *c, fm_vec3_t pos)
     return false;
 }
 
+/* Where the stand search's ways start: the start, or, where the sweep capsule is there in a
+ * shallow overlap (under the skin) that the recovery could not push it out of, the start
+ * pushed out of it to touching, verified, as the slide does (soak s69 l158): a sweep from
+ * inside stops at once whichever way it goes, so every way of the search was "blocked".
+ * The game teleported a body (r 0.88, step 0.021) with its foot 20 mm in a block 0.238 m
+ * high, the sweep capsule's bottom 0.5 mm over the block's top and its top ball 0.5 mm
+ * into a triangle soup's edge leaning over it: the recovery's push out of the edge went
+ * into the top, the push out of the top into the edge again (0.25 mm left); no room for
+ * the lift onto the top, the search's 16 ways all met the edge at t = 0, and the body
+ * stood on the top with its foot 20 mm under it (soak s102 l296). */
+static fm_vec3_t search_from(const cb_ctx_t *c, fm_vec3_t start)
+{
+    coll_contact_t ct[CB_MAX_CONTACTS];
+    const uint32_t n = overlaps_at(c, start, ct);
+    const coll_contact_t *deep = NULL;
+    for (uint32_t i = 0; i < n; i++)
+        if (ct[i].depth > c->min_depth && v3_finite(ct[i].normal) && (!deep || ct[i].depth > deep->depth))
+            deep = &ct[i];
+    fm_vec3_t p = start;
+    if (deep && deep->depth < c->skin) coll_cb_push_verified(c, &p, v3_scale(deep->normal, deep->depth));
+    return p;
+}
+
 bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3_t in_h, bool was_grounded,
                      bool rising)
 {
@@ -842,7 +865,6 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
      * nearest place where it stands, moved to as motion. The search's places are checked
      * by the probe itself (a crack's edges it has no room to be lifted onto: the next place,
      * along a V valley's slot, soak s3 l374). */
-    fm_vec3_t p = start;
     c->mem->edges_no_room = false;
     bool stands = coll_cb_probe_floor(c, pos, was_grounded, rising);
     /* Falling at the start only because the crack rule's edges had no room to lift the body
@@ -867,12 +889,14 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
     const fm_vec3_t held = *pos;
     int next = 0;
     bool tried = false;
+    const fm_vec3_t from = stands ? start : search_from(c, start);
+    fm_vec3_t p = from;
     while (!stands && coll_cb_stand_search(c, &p, in_h, !was_grounded, &next)) {
         *pos = p;
         c->mem->edges_no_room = false;
         stands = coll_cb_probe_floor(c, pos, was_grounded, rising) && !c->mem->edges_no_room;
         if (stands) b->velocity = v3_scale(v3_reject(v3_sub(*pos, start), c->up), 1.0f / c->dt);
-        p = start;
+        p = from;
         tried = true;
     }
     if (!stands && (tried || held_nowhere)) {
@@ -885,7 +909,7 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
      * overhang, down the ramp): there is no walk to keep to then (soak s2 l229, s3 l175:
      * grounded, the foot 0.18-0.23 m inside the floor, for ever). With no way out at all it
      * stays as it stands (s2 l193). */
-    fm_vec3_t q = start;
+    fm_vec3_t q = from;
     int first = 0;
     if (!stands && was_grounded && coll_cb_stand_search(c, &q, in_h, true, &first)) {
         *pos = start; /* nor lifted part of the way: that was no motion */
