@@ -1328,7 +1328,7 @@ static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
  * both fields and met nothing, the step's gather had overflowed (piece_beyond does not look),
  * and the foot stood on the lower top, 1.59 mm under the ball resting on both edges (soak
  * s97 l248). Not for a stair's nosing: a riser over the tread (the bench's 0.18-0.36 m, r
- * 0.5; 16 and 26 steps a course reach here). Out of line: a rare path.
+ * 0.5; 16 and 26 calls a course get here). Out of line: a rare path.
  */
 static __attribute__((noinline)) bool piece_half_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge,
                                                         float piece)
