@@ -1335,12 +1335,40 @@ static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
 }
 
 /**
+ * level_beyond's ray, one point a radius beyond the edge, found no piece over the floor under
+ * the foot, and the edge is at that floor's level (within level_beyond's tenth of a radius)
+ * but over it by more than the step tolerance (what crack_held lifts by): the ray may have
+ * gone down the next gap of a tile field whose tiles are about a radius wide. The far side of
+ * a crack narrow enough to hold such a ball is near: a ray half a radius beyond looks for a
+ * piece more than `piece` over the foot (the step tolerance over that floor). Running (r
+ * 0.87) across a 4.2 mm crack between tiles 0.864 m wide, tops 0.2693, over a near copy of
+ * the field 1.6 mm lower whose tile top showed through the crack: the sweep capsule came to
+ * rest on the two edges, the foot ray found that lower top, the first look met the north
+ * edge 3.2 mm from the foot's column, the ray a radius beyond went down the next crack of
+ * both fields and met nothing, the step's gather had overflowed (piece_beyond does not look),
+ * and the foot stood on the lower top, 1.59 mm under the ball resting on both edges (soak
+ * s97 l248). Not for a stair's nosing: a riser over the tread (the bench's 0.18-0.36 m, r
+ * 0.5; 16 and 26 calls a course get here). Out of line: a rare path.
+ */
+static __attribute__((noinline)) bool piece_half_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge,
+                                                        float piece)
+{
+    const fm_vec3_t up = c->up, side = v3_norm(v3_reject(edge->normal, up));
+    const float top = c->radius + c->step;
+    coll_ray_hit_t h;
+    return cb_ray(c, v3_madd(v3_madd(cb_foot(c, pos), side, 0.5f * c->radius), up, top), v3_scale(up, -1.0f),
+                  top - piece, &h) &&
+           isfinite(h.distance) && top - h.distance > piece;
+}
+
+/**
  * For a body standing on the floor the foot ray found (not stepping down onto it): can the
  * edge the ball met be one side of a groove? Only if, a radius away on the other side, a
  * surface lies at that edge's level (within the tenth of a radius ball_held allows), or
  * both lie above the foot: the groove's far block. A stair's nosing ahead has the lower
  * tread behind; a bump of uneven ground has ground at another height. One ray instead of
- * the full rule's sweeps.
+ * the full rule's sweeps (two where the first may have gone down another gap:
+ * piece_half_beyond).
  */
 __attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float gap)
 {
@@ -1359,11 +1387,18 @@ __attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t 
     if (gap < -c->contact_eps && c1 + gap > c->step) return true;
     fm_vec3_t o = v3_madd(v3_madd(foot, side, c->radius), up, top);
     coll_ray_hit_t h;
-    if (!cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) || !isfinite(h.distance)) return false;
+    const bool met = cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) && isfinite(h.distance);
     /* or both above the foot: it stands at the bottom of a groove between blocks of
      * different heights, inside both (a stair's tread behind is at or below the foot) */
-    const float beyond = top - h.distance;
-    return fabsf(beyond - c1) <= 0.1f * c->radius || (beyond > c->contact_eps && c1 > c->contact_eps);
+    const float beyond = met ? top - h.distance : 0.0f;
+    if (met && (fabsf(beyond - c1) <= 0.1f * c->radius || (beyond > c->contact_eps && c1 > c->contact_eps)))
+        return true;
+    /* An edge at the floor's level (within that tenth of a radius) and over the floor under
+     * the foot by more than the step tolerance, while the ray found no piece over that
+     * floor: it may have gone down another gap (piece_half_beyond). */
+    const float piece = cb_len_tol(c, CB_STEP_EPS) - gap; /* over the floor under the foot */
+    return c1 + gap <= 0.1f * c->radius && c1 > piece && !(met && beyond > piece) &&
+           piece_half_beyond(c, pos, edge, piece);
 }
 
 /**
