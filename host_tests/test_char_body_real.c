@@ -4386,6 +4386,48 @@ static void test_teleported_under_soup_edge_onto_block_in_step_zone(void)
                                         0x1.ba0bep-1f, 0x1.7e440cp+5f, 0x1.2cfa1p+5f, 3, false};
     char_body_settings_t s = soak_body_settings(&shape);
     const fm_vec3_t start = cb_vec(-0x1.b35458p+2f, 0x1.26f248p+0f, -0x1.08e9dcp+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t input = cb_vec(-0x1.3b1a6p+1f, 0.0f, 0x1.11ff04p+2f);
+    body.input_velocity = input;
+    /* the block's top (y 0.238), corners in order around it */
+    static const float top = 0x1.e75968p-3f, cx[4] = {-0x1.780bccp+2f, -0x1.e1f7e8p+2f, -0x1.4a21cap+3f,
+                                                        -0x1.152bbcp+3f};
+    static const float cz[4] = {-0x1.a11448p+2f, -0x1.58dbbcp+3f, -0x1.36393cp+3f, -0x1.5bcf46p+2f};
+    int sunk = 0, walked = 0;
+    float worst = 0.0f;
+    fm_vec3_t from = start;
+    for (int f = 0; f < 60; f++) {
+        if (f == 30) from = pos;
+        CB_STEP(&body, 0x1.111112p-8f);
+        walked += f >= 30 && char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body);
+        const fm_vec3_t foot = char_body_foot_pos(&body);
+        bool over = true; /* the foot over the block's top (inside its four edges) */
+        for (int k = 0; k < 4; k++) {
+            const int j = (k + 1) & 3;
+            if ((cx[j] - cx[k]) * (foot.z - cz[k]) - (cz[j] - cz[k]) * (foot.x - cx[k]) > 0.0f) over = false;
+        }
+        if (char_body_is_on_floor(&body) && over && foot.y < top - 0.001f) {
+            sunk++;
+            if (top - foot.y > worst) worst = top - foot.y;
+        }
+    }
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): frames grounded under its top",
+              (float)sunk, "");
+    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): deepest foot under its top",
+              worst, "m");
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    /* out of there (its foot off the block, past its east edge: the search's first place, one
+     * to fall from), it lands on the room floor and walks the second half along the input (the
+     * block's side, 0.238 m high, a wall for this step, takes the part into it) */
+    TEST_ASSERT_EQUAL_INT(30, walked);
+    TEST_ASSERT_TRUE(foot.y > -0.001f && foot.y < 0.01f);
+    TEST_ASSERT_TRUE((pos.x - from.x) * input.x + (pos.z - from.z) * input.z > 0.0f);
+}
+
 /* ---- a crack between floor tiles over a near copy of the field 1.6 mm lower ---- */
 
 /* Soak s97 l248 (generator 2): the 262 static triangles within 1.2 m of the failing foot
@@ -4682,42 +4724,6 @@ static void test_crack_over_lower_near_copy_of_tile_field(void)
     char_body_init(&body, &pos);
     char_body_configure(&body, &s);
     char_body_teleport(&body, pos, true);
-    const fm_vec3_t input = cb_vec(-0x1.3b1a6p+1f, 0.0f, 0x1.11ff04p+2f);
-    body.input_velocity = input;
-    /* the block's top (y 0.238), corners in order around it */
-    static const float top = 0x1.e75968p-3f, cx[4] = {-0x1.780bccp+2f, -0x1.e1f7e8p+2f, -0x1.4a21cap+3f,
-                                                        -0x1.152bbcp+3f};
-    static const float cz[4] = {-0x1.a11448p+2f, -0x1.58dbbcp+3f, -0x1.36393cp+3f, -0x1.5bcf46p+2f};
-    int sunk = 0, walked = 0;
-    float worst = 0.0f;
-    fm_vec3_t from = start;
-    for (int f = 0; f < 60; f++) {
-        if (f == 30) from = pos;
-        CB_STEP(&body, 0x1.111112p-8f);
-        walked += f >= 30 && char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body);
-        const fm_vec3_t foot = char_body_foot_pos(&body);
-        bool over = true; /* the foot over the block's top (inside its four edges) */
-        for (int k = 0; k < 4; k++) {
-            const int j = (k + 1) & 3;
-            if ((cx[j] - cx[k]) * (foot.z - cz[k]) - (cz[j] - cz[k]) * (foot.x - cx[k]) > 0.0f) over = false;
-        }
-        if (char_body_is_on_floor(&body) && over && foot.y < top - 0.001f) {
-            sunk++;
-            if (top - foot.y > worst) worst = top - foot.y;
-        }
-    }
-    const fm_vec3_t foot = char_body_foot_pos(&body);
-    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): frames grounded under its top",
-              (float)sunk, "");
-    cb_report("teleported under a soup edge onto a block in the step zone (s102 l296): deepest foot under its top",
-              worst, "m");
-    TEST_ASSERT_EQUAL_INT(0, sunk);
-    /* out of there (its foot off the block, past its east edge: the search's first place, one
-     * to fall from), it lands on the room floor and walks the second half along the input (the
-     * block's side, 0.238 m high, a wall for this step, takes the part into it) */
-    TEST_ASSERT_EQUAL_INT(30, walked);
-    TEST_ASSERT_TRUE(foot.y > -0.001f && foot.y < 0.01f);
-    TEST_ASSERT_TRUE((pos.x - from.x) * input.x + (pos.z - from.z) * input.z > 0.0f);
     const fm_vec3_t input = cb_vec(-0x1.9c6538p+0f, 0.0f, 0x1.0f0294p+0f);
     char_body_set_velocity(&body, input);
     body.input_velocity = input;
