@@ -4743,6 +4743,137 @@ static void test_crack_over_lower_near_copy_of_tile_field(void)
     TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
 }
 
+/* ---- a ball on a steep soup sliver's top edge, slid off it under a soup face ---- */
+
+/* Soak s90 l174 (generator 2): the 50 static triangles within 1.2 m of the failing foot
+ * (floats of the checker's doubles, bounding-sphere culled; comments: the checker's triangle
+ * numbers): the room (floor y 0, walls), a closed column's side (1391-1398) and a floating
+ * triangle soup (1220-1447, single-sided). Among them 1442, a thin sliver 69 degrees off up
+ * (y 2.33-2.84) the capsule's step zone holds, 1446, a 25-degree face whose tip is beside
+ * the foot, 1434, a 7.7-degree face 82 mm under the foot, and 1225, 65 degrees off up,
+ * leaning over the head. One mesh. r 0.183, height 3.44, step 0.482, snap 0.833, walkable
+ * to 58.9 degrees, 1 slide, the owner point the centre. */
+static const float s90_l174_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+3f, 0x0p+0f, -0x1p+3f, 0x1p+4f, 0x0p+0f, -0x1p+3f}, /* 21 */
+    {0x0p+0f, 0x0p+0f, -0x1p+3f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, -0x1p+3f}, /* 30 */
+    {0x1p+3f, 0x0p+0f, -0x1p+3f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, -0x1p+3f}, /* 32 */
+    {0x1p+3f, 0x0p+0f, -0x1p+3f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 33 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.63866ap+2f, 0x1.859168p+2f, -0x1.738958p+3f, 0x1.7d81bp+2f, 0x1.30e4fap+2f, -0x1.5668e8p+2f, 0x1.46fabcp+3f, 0x1.4634cep+2f, -0x1.3690fep+3f}, /* 1220 */
+    {0x1.d8e434p+2f, 0x1.cb45e4p+2f, -0x1.ce9596p+2f, 0x1.46204p+2f, 0x1.287266p+2f, -0x1.ea31fp+2f, 0x1.1e69fcp+3f, 0x1.b33904p+1f, -0x1.273ffp+3f}, /* 1221 */
+    {0x1.d5972p+2f, 0x1.59769cp+0f, -0x1.2225e2p+3f, 0x1.50cbc6p+3f, 0x1.b3ef0ap+2f, -0x1.55f152p+3f, 0x1.66fafp+3f, 0x1.5a927ep+2f, -0x1.3bc33p+3f}, /* 1222 */
+    {0x1.4b31f8p+3f, 0x1.1e2f62p+2f, -0x1.02ad9ap+3f, 0x1.00c6e2p+3f, 0x1.7d94c4p-1f, -0x1.90a996p+2f, 0x1.34cc9p+3f, 0x1.e9ed54p+0f, -0x1.bca48ep+2f}, /* 1223 */
+    {0x1.45d8e6p+2f, 0x1.8cb47ap-1f, -0x1.3ccd46p+3f, 0x1.2efe86p+2f, 0x1.b6e1ep+0f, -0x1.326e5cp+3f, 0x1.0f889cp+3f, 0x1.60bf7p+2f, -0x1.862bd8p+2f}, /* 1224 */
+    {0x1.33f804p+3f, 0x1.92a65ap+2f, -0x1.6803ap+2f, 0x1.049138p+3f, 0x1.543ab4p+2f, -0x1.56db9ep+3f, 0x1.c6b884p+2f, 0x1.ee35ecp+0f, -0x1.f8a404p+2f}, /* 1225 */
+    {0x1.0df7b4p+3f, 0x1.758cfp+2f, -0x1.6e84p+3f, 0x1.51e7d8p+3f, 0x1.4a92ecp-1f, -0x1.52cf58p+3f, 0x1.66b50ap+3f, 0x1.aaf262p+2f, -0x1.9c902ep+2f}, /* 1226 */
+    {0x1.98188ap+3f, 0x0p+0f, 0x1.f1af4cp-1f, 0x1.b4c86ep+3f, 0x0p+0f, 0x1.dd303p-1f, 0x1.ae13b8p+3f, 0x1.4p+3f, -0x1.e1620cp+1f}, /* 1391 */
+    {0x1.98188ap+3f, 0x0p+0f, 0x1.f1af4cp-1f, 0x1.ae13b8p+3f, 0x1.4p+3f, -0x1.e1620cp+1f, 0x1.9163d4p+3f, 0x1.4p+3f, -0x1.dc4246p+1f}, /* 1392 */
+    {0x1.9163d4p+3f, 0x0p+0f, -0x1.dc4246p+1f, 0x1.9163d4p+3f, 0x1.4p+3f, -0x1.dc4246p+1f, 0x1.ae13b8p+3f, 0x1.4p+3f, -0x1.e1620cp+1f}, /* 1393 */
+    {0x1.9163d4p+3f, 0x0p+0f, -0x1.dc4246p+1f, 0x1.ae13b8p+3f, 0x1.4p+3f, -0x1.e1620cp+1f, 0x1.ae13b8p+3f, 0x0p+0f, -0x1.e1620cp+1f}, /* 1394 */
+    {0x1.98188ap+3f, 0x0p+0f, 0x1.f1af4cp-1f, 0x1.9163d4p+3f, 0x1.4p+3f, -0x1.dc4246p+1f, 0x1.9163d4p+3f, 0x0p+0f, -0x1.dc4246p+1f}, /* 1397 */
+    {0x1.b4c86ep+3f, 0x0p+0f, 0x1.dd303p-1f, 0x1.ae13b8p+3f, 0x0p+0f, -0x1.e1620cp+1f, 0x1.ae13b8p+3f, 0x1.4p+3f, -0x1.e1620cp+1f}, /* 1398 */
+    {0x1.c032c6p+2f, 0x1.1fb232p+1f, -0x1.949416p+2f, 0x1.dc7b2cp+2f, 0x1.b152f4p+1f, -0x1.1a63aap+2f, 0x1.a4cc26p+2f, 0x1.9752dep+0f, -0x1.a1c98cp+2f}, /* 1419 */
+    {0x1.439c8cp+3f, 0x1.8714a6p+0f, -0x1.c7602ap+2f, 0x1.1574f6p+3f, 0x1.326f54p+1f, -0x1.d03948p+2f, 0x1.d4f32p+2f, 0x1.56cd06p+1f, -0x1.2ebaa2p+2f}, /* 1421 */
+    {0x1.e1528ap+2f, 0x1.ba5746p+0f, -0x1.14307p+3f, 0x1.2e8992p+3f, 0x1.05eacep+1f, -0x1.ac8348p+2f, 0x1.b971b6p+2f, 0x1.f89a6p+0f, -0x1.c9f21p+2f}, /* 1422 */
+    {0x1.212c48p+3f, 0x1.cfe8d4p+1f, -0x1.5c88ap+2f, 0x1.f58762p+2f, 0x1.c663b8p+1f, -0x1.77ffacp+2f, 0x1.e8ca78p+2f, 0x1.bd32ccp+1f, -0x1.0003e8p+2f}, /* 1423 */
+    {0x1.dc37ecp+2f, 0x1.dd3fa8p+0f, -0x1.987bf6p+2f, 0x1.0175acp+3f, 0x1.9f548ep+0f, -0x1.320e98p+2f, 0x1.eda36cp+2f, 0x1.acc114p+0f, -0x1.28aabep+3f}, /* 1424 */
+    {0x1.17de72p+3f, 0x1.809d7p+0f, -0x1.9f8fa4p+2f, 0x1.323b28p+3f, 0x1.de88fep+1f, -0x1.e8eaf2p+2f, 0x1.8facf4p+2f, 0x1.9959f2p+1f, -0x1.07b61ep+3f}, /* 1425 */
+    {0x1.98c742p+2f, 0x1.75b79p+1f, -0x1.a01b92p+2f, 0x1.92bd46p+2f, 0x1.79df84p+1f, -0x1.dacfbp+2f, 0x1.2c7b6ep+3f, 0x1.2d9384p+1f, -0x1.49603cp+2f}, /* 1426 */
+    {0x1.e4c95ap+2f, 0x1.f9dccep+1f, -0x1.8170fep+2f, 0x1.b6288p+2f, 0x1.34a34p+1f, -0x1.08523ap+3f, 0x1.e6644ep+2f, 0x1.9a4792p+0f, -0x1.227fcp+2f}, /* 1427 */
+    {0x1.500146p+3f, 0x1.e48fcap+1f, -0x1.994736p+2f, 0x1.47337ap+3f, 0x1.0eeb5ep+1f, -0x1.7f241cp+2f, 0x1.00cea2p+3f, 0x1.8699cep+1f, -0x1.0ac678p+3f}, /* 1428 */
+    {0x1.10174ap+3f, 0x1.994568p+1f, -0x1.3e822ep+2f, 0x1.2add6ap+3f, 0x1.ff456cp+1f, -0x1.26f20ep+2f, 0x1.161f26p+3f, 0x1.2ab108p+1f, -0x1.6a2aa6p+2f}, /* 1429 */
+    {0x1.d3b40cp+2f, 0x1.347a1cp+1f, -0x1.500e6ep+2f, 0x1.ab199cp+2f, 0x1.4b5b3ap+1f, -0x1.d4ff0cp+2f, 0x1.0f9e94p+3f, 0x1.f1cedp+0f, -0x1.d5049cp+2f}, /* 1430 */
+    {0x1.1da094p+3f, 0x1.bd0592p+1f, -0x1.3fae9p+2f, 0x1.eedb5cp+2f, 0x1.a3e524p+0f, -0x1.e1bb86p+2f, 0x1.047c8ap+3f, 0x1.c3019p+1f, -0x1.da5e22p+2f}, /* 1431 */
+    {0x1.85a252p+2f, 0x1.3db85ap+1f, -0x1.c169a2p+2f, 0x1.5e3892p+2f, 0x1.6231p+1f, -0x1.e56392p+2f, 0x1.12ec0ep+3f, 0x1.e2c9ep+1f, -0x1.e5958cp+2f}, /* 1432 */
+    {0x1.1ccc8cp+3f, 0x1.1b62e6p+1f, -0x1.974354p+2f, 0x1.0b435ep+3f, 0x1.77b1eap+1f, -0x1.d1948cp+1f, 0x1.fcd33ep+2f, 0x1.e6428p+1f, -0x1.6ddc34p+2f}, /* 1433 */
+    {0x1.3fb56ap+3f, 0x1.261a6p+1f, -0x1.c070ecp+2f, 0x1.47e29cp+2f, 0x1.affebap+0f, -0x1.9ef13cp+2f, 0x1.099752p+3f, 0x1.f29632p+0f, -0x1.2d41f4p+2f}, /* 1434 */
+    {0x1.0d87a6p+3f, 0x1.e75deep+0f, -0x1.fb593p+2f, 0x1.f62adp+2f, 0x1.b5058p+0f, -0x1.42c2b2p+2f, 0x1.0a6b8cp+3f, 0x1.94bc68p+1f, -0x1.50d15p+2f}, /* 1435 */
+    {0x1.a98586p+2f, 0x1.7516bap+1f, -0x1.15dffp+3f, 0x1.45b0b4p+3f, 0x1.7e96c8p+0f, -0x1.56e97ep+2f, 0x1.00fa22p+3f, 0x1.50b782p+1f, -0x1.19f9bcp+3f}, /* 1436 */
+    {0x1.094348p+3f, 0x1.1bf16ap+1f, -0x1.073388p+3f, 0x1.da45b4p+2f, 0x1.a33e3ep+1f, -0x1.350c98p+2f, 0x1.57530cp+2f, 0x1.93a14cp+1f, -0x1.b16e0ep+2f}, /* 1437 */
+    {0x1.03b90cp+3f, 0x1.f9951ap+1f, -0x1.aa7c0ep+2f, 0x1.6b8c82p+2f, 0x1.29cb0cp+1f, -0x1.dce45ep+2f, 0x1.26729p+3f, 0x1.9fea84p+1f, -0x1.813f78p+2f}, /* 1438 */
+    {0x1.05c826p+3f, 0x1.29756cp+1f, -0x1.3e5b22p+2f, 0x1.2b1c1cp+3f, 0x1.f02724p+1f, -0x1.3499d8p+2f, 0x1.6c09dap+2f, 0x1.e16d04p+1f, -0x1.cd5566p+2f}, /* 1439 */
+    {0x1.00ac06p+3f, 0x1.e55874p+1f, -0x1.1f8b4cp+3f, 0x1.099038p+3f, 0x1.fc0da2p+1f, -0x1.923fa4p+2f, 0x1.54d1c8p+2f, 0x1.c667ecp+0f, -0x1.a7ad94p+2f}, /* 1440 */
+    {0x1.9670dap+2f, 0x1.402daap+1f, -0x1.d9d7bp+2f, 0x1.04cd04p+3f, 0x1.9aec52p+1f, -0x1.8b03f8p+2f, 0x1.c294ap+2f, 0x1.932932p+1f, -0x1.6ca7aep+2f}, /* 1441 */
+    {0x1.2a5b2ap+3f, 0x1.2a28b8p+1f, -0x1.3a6cep+2f, 0x1.2a9624p+3f, 0x1.4a344cp+1f, -0x1.c4031ap+2f, 0x1.2f4f82p+3f, 0x1.6bea14p+1f, -0x1.77c0bep+2f}, /* 1442 */
+    {0x1.e2d73p+2f, 0x1.4c7286p+1f, -0x1.c0d5eep+2f, 0x1.c557b6p+2f, 0x1.48fc76p+1f, -0x1.437042p+2f, 0x1.df38ep+2f, 0x1.dcac26p+0f, -0x1.3a05d6p+2f}, /* 1443 */
+    {0x1.24584ap+3f, 0x1.5263a2p+1f, -0x1.9e8dbp+2f, 0x1.32fa3ap+3f, 0x1.f3d15cp+0f, -0x1.ee6d92p+2f, 0x1.14cc46p+3f, 0x1.de468ap+1f, -0x1.da866cp+2f}, /* 1444 */
+    {0x1.297b58p+3f, 0x1.b20c66p+1f, -0x1.e63dbp+2f, 0x1.0c379ap+3f, 0x1.e2ef9cp+1f, -0x1.19fe1cp+3f, 0x1.9272c2p+2f, 0x1.8d1dccp+1f, -0x1.5d72d8p+2f}, /* 1445 */
+    {0x1.a7f86cp+2f, 0x1.cd0b5p+0f, -0x1.1827p+3f, 0x1.91b624p+2f, 0x1.6164aap+1f, -0x1.a52844p+2f, 0x1.30bf88p+3f, 0x1.22866p+1f, -0x1.87e11ap+2f}, /* 1446 */
+    {0x1.0abd66p+3f, 0x1.d98b08p+1f, -0x1.0779e6p+3f, 0x1.aa3efp+2f, 0x1.d6b04ep+0f, -0x1.138bd4p+3f, 0x1.05114cp+3f, 0x1.d86ebap+1f, -0x1.a412cep+2f}, /* 1447 */
+};
+
+/* True when the foot is more than 1 mm under a walkable triangle of tris over it (along y). */
+static bool foot_under_walkable(const float (*tris)[9], size_t n, fm_vec3_t foot, float cos_max, float *depth)
+{
+    bool under = false;
+    for (size_t i = 0; i < n; i++) {
+        const float *t = tris[i];
+        const float ux = t[3] - t[0], uy = t[4] - t[1], uz = t[5] - t[2];
+        const float vx = t[6] - t[0], vy = t[7] - t[1], vz = t[8] - t[2];
+        float nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        const float len = sqrtf(nx * nx + ny * ny + nz * nz);
+        if (!(len > 0.0f)) continue;
+        if (ny < 0.0f) { nx = -nx; ny = -ny; nz = -nz; }
+        if (ny < cos_max * len) continue;
+        /* the foot's column inside the triangle's projection on y = 0 */
+        float sgn[3];
+        for (int k = 0; k < 3; k++) {
+            const float *a = t + 3 * k, *b = t + 3 * ((k + 1) % 3);
+            sgn[k] = (b[0] - a[0]) * (foot.z - a[2]) - (b[2] - a[2]) * (foot.x - a[0]);
+        }
+        if (!((sgn[0] >= 0.0f && sgn[1] >= 0.0f && sgn[2] >= 0.0f) || (sgn[0] <= 0.0f && sgn[1] <= 0.0f && sgn[2] <= 0.0f)))
+            continue;
+        const float h = t[1] - (nx * (foot.x - t[0]) + nz * (foot.z - t[2])) / ny;
+        if (h - foot.y > 0.001f) {
+            under = true;
+            if (h - foot.y > *depth) *depth = h - foot.y;
+        }
+    }
+    return under;
+}
+
+static void test_ball_on_soup_sliver_edge_slid_off_under_face(void)
+{
+    cb_world_reset();
+    geo_tris(s90_l174_tris, sizeof s90_l174_tris / sizeof s90_l174_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.77082ap-3f, 0x1.b86c7p+1f, 0x1.ed4eaep-2f, 0x1.aa5ebp-1f,
+                                        0x1.070f22p+0f, 0x1.1a78f6p+5f, 0x1.313faap+6f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(0x1.2aa704p+3f, 0x1.fe4308p+1f, -0x1.92f838p+2f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.68effep-4f, -0x1.d447fep-4f, -0x1.5d73fep-3f));
+    /* the replay's two frames, then the second one's input held */
+    static const float dts[2] = {0x1.111112p-8f, 0x1.76962ep-4f};
+    static const fm_vec3_t inputs[2] = {{{-0x1.cfdb0ap+0f, 0.0f, -0x1.8c6c4ep+0f}},
+                                        {{-0x1.13c5f4p+0f, 0.0f, -0x1.081d2p+1f}}};
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded = 0;
+    float worst = 0.0f;
+    for (int f = 0; f < 30; f++) {
+        body.input_velocity = inputs[f < 1 ? 0 : 1];
+        CB_STEP(&body, dts[f < 1 ? 0 : 1]);
+        if (!char_body_is_on_floor(&body)) continue;
+        grounded++;
+        if (foot_under_walkable(s90_l174_tris, sizeof s90_l174_tris / sizeof s90_l174_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    cb_report("ball on a soup sliver's edge slid off under a soup face (s90 l174): frames grounded under a floor",
+              (float)sunk, "");
+    cb_report("ball on a soup sliver's edge slid off under a soup face (s90 l174): deepest foot under it", worst,
+              "m");
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    TEST_ASSERT_TRUE(grounded > 0);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -4814,5 +4945,6 @@ int main(void)
     RUN_TEST(test_crack_between_slabs_beside_valley_end);
     RUN_TEST(test_teleported_under_soup_edge_onto_block_in_step_zone);
     RUN_TEST(test_crack_over_lower_near_copy_of_tile_field);
+    RUN_TEST(test_ball_on_soup_sliver_edge_slid_off_under_face);
     return UNITY_END();
 }

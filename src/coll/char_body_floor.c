@@ -2227,6 +2227,18 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                     if (g2 < -step_eps && stand_on(c, pos, g2, h2.normal)) {
                         if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, slid_to), up);
                         s = (support_t){true, false, g2, h2.normal, h2.point, h2.id, h2.instance};
+                    } else if (g2 < -step_eps && s.gap > 0.0f) {
+                        /* No room for that lift: the slide off took the foot under a floor
+                         * it cannot stand on, so it is not made; the snap goes straight
+                         * down instead (as snap_kept_over). The ball on a thin steep
+                         * sliver's top edge in a triangle soup slid off it 14 mm across
+                         * up, its foot under a 25-degree face of the soup the step zone
+                         * hid, a face leaning over the head leaving no room: it stood
+                         * 8.8 mm under that face (soak s90 l174). */
+                        b->velocity = v3_madd(b->velocity, across, -1.0f / c->dt);
+                        *pos = before;
+                        coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
+                        if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, slid_to), up);
                     } else {
                         *pos = slid_to;
                     }
