@@ -4874,6 +4874,107 @@ static void test_ball_on_soup_sliver_edge_slid_off_under_face(void)
     TEST_ASSERT_TRUE(grounded > 0);
 }
 
+/* ---- a crack between a block's corner and a taller block's edge beside a wall leaning under
+ * a tilted up ---- */
+
+/* Soak s95 l293 (generator 2): the 44 static triangles within 1.5 m of (16.4, 0.8, 3.8)
+ * (floats of the checker's doubles, bounding-sphere culled; comments: the checker's triangle
+ * numbers), one mesh: the room (floor y 0), block A (a 1.556 m square turned 34 degrees, top
+ * 0.2882: 437-446), block B (5.63 x 2.33 m, top 0.5276: 495-504; its long edge 0.46 m from A's
+ * corner), a single-sided wall 4.31 m high crossing both (529-532), two other low blocks
+ * (377-383, 450-456). r 0.473, height 3.14, step 0.596, snap 0.938, walkable to 50.9 degrees,
+ * 5 slides, up 5.3 degrees off y (the wall 87 degrees off it, leaning under the body). */
+static const float s95_l293_tris[][9] = {
+    {0x1p+4f, 0x0p+0f, -0x1p+3f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f}, /* 35 closed 0 */
+    {0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 44 closed 0 */
+    {0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 45 closed 0 */
+    {0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x1p+3f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f}, /* 46 closed 0 */
+    {0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1.8p+4f, 0x0p+0f, 0x1p+3f}, /* 47 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 closed 0 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 closed 0 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 closed 0 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.0d09a2p+4f, 0x1.34fffp-2f, 0x1.9af18p+0f}, /* 377 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x1.34fffp-2f, 0x1.9af18p+0f, 0x1.f0ec54p+3f, 0x1.34fffp-2f, 0x1.3db984p+1f}, /* 378 closed 1 */
+    {0x1.d4dc22p+3f, 0x0p+0f, 0x1.323b8ap+0f, 0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f}, /* 380 closed 1 */
+    {0x1.d4dc22p+3f, 0x1.34fffp-2f, 0x1.323b8ap+0f, 0x1.f0ec54p+3f, 0x1.34fffp-2f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x1.34fffp-2f, 0x1.9af18p+0f}, /* 381 closed 1 */
+    {0x1.d4dc22p+3f, 0x0p+0f, 0x1.323b8ap+0f, 0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.f0ec54p+3f, 0x1.34fffp-2f, 0x1.3db984p+1f}, /* 383 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.f0ec54p+3f, 0x1.271c6p-2f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x1.271c6p-2f, 0x1.9af18p+0f}, /* 435 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x1.271c6p-2f, 0x1.9af18p+0f, 0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f}, /* 436 closed 1 */
+    {0x1.067e42p+4f, 0x0p+0f, 0x1.e2553ep+1f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f}, /* 437 closed 1 */
+    {0x1.067e42p+4f, 0x0p+0f, 0x1.e2553ep+1f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f, 0x1.067e42p+4f, 0x1.271c6p-2f, 0x1.e2553ep+1f}, /* 438 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f}, /* 439 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f, 0x1.067e42p+4f, 0x0p+0f, 0x1.e2553ep+1f}, /* 440 closed 1 */
+    {0x1.f0ec54p+3f, 0x1.271c6p-2f, 0x1.3db984p+1f, 0x1.067e42p+4f, 0x1.271c6p-2f, 0x1.e2553ep+1f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f}, /* 441 closed 1 */
+    {0x1.f0ec54p+3f, 0x1.271c6p-2f, 0x1.3db984p+1f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f, 0x1.0d09a2p+4f, 0x1.271c6p-2f, 0x1.9af18p+0f}, /* 442 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.067e42p+4f, 0x0p+0f, 0x1.e2553ep+1f, 0x1.067e42p+4f, 0x1.271c6p-2f, 0x1.e2553ep+1f}, /* 443 closed 1 */
+    {0x1.f0ec54p+3f, 0x0p+0f, 0x1.3db984p+1f, 0x1.067e42p+4f, 0x1.271c6p-2f, 0x1.e2553ep+1f, 0x1.f0ec54p+3f, 0x1.271c6p-2f, 0x1.3db984p+1f}, /* 444 closed 1 */
+    {0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.0d09a2p+4f, 0x1.271c6p-2f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f}, /* 445 closed 1 */
+    {0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x1.271c6p-2f, 0x1.72147ap+1f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f}, /* 446 closed 1 */
+    {0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f, 0x1.2fa532p+4f, 0x1.2b4b0ep-2f, 0x1.01d3b6p+1f, 0x1.1b11bap+4f, 0x1.2b4b0ep-2f, 0x1.72147ap+1f}, /* 450 closed 1 */
+    {0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.2fa532p+4f, 0x0p+0f, 0x1.01d3b6p+1f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f}, /* 452 closed 1 */
+    {0x1.0d09a2p+4f, 0x1.2b4b0ep-2f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x1.2b4b0ep-2f, 0x1.72147ap+1f, 0x1.2fa532p+4f, 0x1.2b4b0ep-2f, 0x1.01d3b6p+1f}, /* 453 closed 1 */
+    {0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x0p+0f, 0x1.72147ap+1f, 0x1.1b11bap+4f, 0x1.2b4b0ep-2f, 0x1.72147ap+1f}, /* 455 closed 1 */
+    {0x1.0d09a2p+4f, 0x0p+0f, 0x1.9af18p+0f, 0x1.1b11bap+4f, 0x1.2b4b0ep-2f, 0x1.72147ap+1f, 0x1.0d09a2p+4f, 0x1.2b4b0ep-2f, 0x1.9af18p+0f}, /* 456 closed 1 */
+    {0x1.cbf7c4p+3f, 0x0p+0f, 0x1.4cc734p+1f, 0x1.cbf7c4p+3f, 0x1.0e1cbcp-1f, 0x1.4cc734p+1f, 0x1.2a1fe4p+4f, 0x1.0e1cbcp-1f, 0x1.92723ep+2f}, /* 495 closed 1 */
+    {0x1.cbf7c4p+3f, 0x0p+0f, 0x1.4cc734p+1f, 0x1.2a1fe4p+4f, 0x1.0e1cbcp-1f, 0x1.92723ep+2f, 0x1.2a1fe4p+4f, 0x0p+0f, 0x1.92723ep+2f}, /* 496 closed 1 */
+    {0x1.9b1a02p+3f, 0x0p+0f, 0x1.173c4ep+2f, 0x1.11b102p+4f, 0x0p+0f, 0x1.01a578p+3f, 0x1.11b102p+4f, 0x1.0e1cbcp-1f, 0x1.01a578p+3f}, /* 497 closed 1 */
+    {0x1.9b1a02p+3f, 0x0p+0f, 0x1.173c4ep+2f, 0x1.11b102p+4f, 0x1.0e1cbcp-1f, 0x1.01a578p+3f, 0x1.9b1a02p+3f, 0x1.0e1cbcp-1f, 0x1.173c4ep+2f}, /* 498 closed 1 */
+    {0x1.cbf7c4p+3f, 0x0p+0f, 0x1.4cc734p+1f, 0x1.2a1fe4p+4f, 0x0p+0f, 0x1.92723ep+2f, 0x1.11b102p+4f, 0x0p+0f, 0x1.01a578p+3f}, /* 499 closed 1 */
+    {0x1.cbf7c4p+3f, 0x0p+0f, 0x1.4cc734p+1f, 0x1.11b102p+4f, 0x0p+0f, 0x1.01a578p+3f, 0x1.9b1a02p+3f, 0x0p+0f, 0x1.173c4ep+2f}, /* 500 closed 1 */
+    {0x1.cbf7c4p+3f, 0x1.0e1cbcp-1f, 0x1.4cc734p+1f, 0x1.9b1a02p+3f, 0x1.0e1cbcp-1f, 0x1.173c4ep+2f, 0x1.11b102p+4f, 0x1.0e1cbcp-1f, 0x1.01a578p+3f}, /* 501 closed 1 */
+    {0x1.cbf7c4p+3f, 0x1.0e1cbcp-1f, 0x1.4cc734p+1f, 0x1.11b102p+4f, 0x1.0e1cbcp-1f, 0x1.01a578p+3f, 0x1.2a1fe4p+4f, 0x1.0e1cbcp-1f, 0x1.92723ep+2f}, /* 502 closed 1 */
+    {0x1.cbf7c4p+3f, 0x0p+0f, 0x1.4cc734p+1f, 0x1.9b1a02p+3f, 0x1.0e1cbcp-1f, 0x1.173c4ep+2f, 0x1.cbf7c4p+3f, 0x1.0e1cbcp-1f, 0x1.4cc734p+1f}, /* 504 closed 1 */
+    {0x1.174ca2p+4f, 0x0p+0f, 0x1.3fc128p+1f, 0x1.97eca6p+3f, 0x0p+0f, 0x1.7e5ad8p+2f, 0x1.97eca6p+3f, 0x1.141404p+2f, 0x1.7e5ad8p+2f}, /* 529 closed 0 */
+    {0x1.174ca2p+4f, 0x0p+0f, 0x1.3fc128p+1f, 0x1.97eca6p+3f, 0x1.141404p+2f, 0x1.7e5ad8p+2f, 0x1.174ca2p+4f, 0x1.141404p+2f, 0x1.3fc128p+1f}, /* 530 closed 0 */
+    {0x1.174ca2p+4f, 0x0p+0f, 0x1.3fc128p+1f, 0x1.174ca2p+4f, 0x1.141404p+2f, 0x1.3fc128p+1f, 0x1.3540eep+4f, 0x1.141404p+2f, -0x1.c271eap-1f}, /* 531 closed 0 */
+    {0x1.174ca2p+4f, 0x0p+0f, 0x1.3fc128p+1f, 0x1.3540eep+4f, 0x1.141404p+2f, -0x1.c271eap-1f, 0x1.3540eep+4f, 0x0p+0f, -0x1.c271eap-1f}, /* 532 closed 0 */
+};
+
+static void test_crack_beside_wall_leaning_under_tilted_up(void)
+{
+    cb_world_reset();
+    geo_tris(s95_l293_tris, sizeof s95_l293_tris / sizeof s95_l293_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.e4aabep-2f, 0x1.91d54p+1f, 0x1.313292p-1f, 0x1.e06fd2p-1f,
+                                        0x1.c67ea4p-1f, 0x1.29929ap+5f, 0x1.f1fffep+4f, 5, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t up = cb_vec(0x1.787938p-4f, 0x1.fdd44p-1f, -0x1.ee2632p-9f);
+    s.up = up;
+    const fm_vec3_t start = cb_vec(0x1.0d5b86p+4f, 0x1.92125p+0f, 0x1.ca0a6ap+1f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.67681ep+1f, -0x1.fd1076p+0f, 0x1.0b3b02p+1f));
+    const fm_vec3_t input = cb_vec(-0x1.54457ap+2f, 0.0f, -0x1.911362p+0f);
+    body.input_velocity = input;
+    /* block A's corner (top 0.2882): the foot walks past it, B's edge 0.38 m across up on the
+     * other side of the foot (180 degrees from it) */
+    const fm_vec3_t corner = cb_vec(0x1.067e42p+4f, 0x1.271c6p-2f, 0x1.e2553ep+1f);
+    const float r = 0x1.e4aabep-2f;
+    float worst = -1.0f;
+    int grounded = 0;
+    for (int f = 0; f < 4; f++) {
+        CB_STEP(&body, 0x1.111112p-5f);
+        const fm_vec3_t foot = char_body_foot_pos(&body);
+        const float dx = corner.x - foot.x, dy = corner.y - foot.y, dz = corner.z - foot.z;
+        const float h = dx * up.x + dy * up.y + dz * up.z, l2 = dx * dx + dy * dy + dz * dz - h * h;
+        grounded += char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body);
+        /* how far the foot is under the ball resting on the corner (along up) */
+        if (char_body_is_on_floor(&body) && l2 < r * r) {
+            const float under = h - (r - sqrtf(r * r - l2));
+            if (under > worst) worst = under;
+        }
+    }
+    cb_report("crack beside a wall leaning under a tilted up (s95 l293): foot under the ball on A's corner", worst,
+              "m");
+    TEST_ASSERT_EQUAL_INT(4, grounded);
+    TEST_ASSERT_TRUE(worst <= 0.001f);
+    /* and it went the way it was asked (across up, along the input) */
+    TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -4946,5 +5047,6 @@ int main(void)
     RUN_TEST(test_teleported_under_soup_edge_onto_block_in_step_zone);
     RUN_TEST(test_crack_over_lower_near_copy_of_tile_field);
     RUN_TEST(test_ball_on_soup_sliver_edge_slid_off_under_face);
+    RUN_TEST(test_crack_beside_wall_leaning_under_tilted_up);
     return UNITY_END();
 }

@@ -635,6 +635,22 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
         const fm_vec3_t b0_0 = b0;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
         n1u = v3_dot(h1.normal, up);
+        /* Over a floor, the second slide, off a steep edge (not a face) the first slide down
+         * a wall met, went straight back into a wall's face, no lower: the slid ball sits in
+         * the groove between that wall and the edge, beside the foot, and says nothing about
+         * it. The body's own ball at the foot decides, as below (rest_at_foot, around). Under
+         * an up 5.3 degrees off y a wall 87 degrees off up leaning under the body (in the
+         * step zone: the full ball at the foot 31 mm in it) took the drop first, its slide
+         * met a 0.53 m block's top edge 52.6 degrees off up, and the slide off that edge went
+         * back into the wall: the rule gave up, the snap to the room floor stopped on the
+         * wall, and the foot stood 10.2 mm under the ball resting on a 0.29 m block's corner
+         * and the taller block's edge, 180 degrees apart across the foot (soak s95 l293). */
+        if (over_floor && k == 1 && !(d1 > d0) && steep_face(c, &h1) && !steep_face(c, &h0)) {
+            float rest = 0.0f;
+            bool around = false;
+            if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h0.point, foot), up), &rest, &around) && around)
+                return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
+        }
         /* Over a floor, slid past a steep first contact out of the foot's column (more than
          * a radius across up) onto the very floor the foot ray found under the foot: the
          * slid ball says nothing about the foot (the body is not moved across, and the snap
