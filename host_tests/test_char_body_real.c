@@ -4975,6 +4975,93 @@ static void test_crack_beside_wall_leaning_under_tilted_up(void)
     TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
 }
 
+/* ---- a ball at rest on a soup face's corner over a room floor steep for a tilted up ---- */
+
+/* Soak s124 l182 (generator 2): the 24 static triangles within 3.5 m of (-1.385, 1.915, 22.586)
+ * (floats of the checker's doubles; comments: the checker's triangle numbers), one mesh: the
+ * room (floor y 0: 64-67, walls 82-86) and a triangle soup (1418-1437). r 0.837, height 3.87,
+ * step 0.267, snap 0.587, walkable to 26.4 degrees, 3 slides, up 28.5 degrees off y (the room
+ * floor steep for it). The sweep capsule's bottom ball rests on soup triangle 1422's corner
+ * (-1.359, 0.381, 22.015), the contact 21.9 degrees off up (walkable), and touches 1436's edge
+ * (0.6 mm) on the side the way off the corner goes; the foot ray meets only the room floor,
+ * steep, 0.245 m under the foot. The body was never grounded, at rest for ever. */
+static const float s124_l182_tris[][9] = {
+    {-0x1p+3f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f}, /* 64 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f}, /* 65 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 66 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 67 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {-0x1.8c2f2p+0f, 0x1.f1d9a6p+2f, 0x1.0ed3f8p+4f, -0x1.f6ac34p+1f, 0x1.c7ba4ep+2f, 0x1.1fb99p+4f, -0x1.81bd84p+2f, 0x1.0d4dbcp+1f, 0x1.13ad6p+4f}, /* 932 */
+    {-0x1.1add0ep+1f, -0x1.349cb2p-3f, 0x1.4c653p+4f, -0x1.900e72p+2f, -0x1.e523b4p-1f, 0x1.1ffffcp+4f, -0x1.9f3d4ep+1f, 0x1.023c9ap+0f, 0x1.3a7a22p+4f}, /* 1418 */
+    {-0x1.2081bap+2f, 0x1.82c3fp+1f, 0x1.14394cp+4f, -0x1.76d3ccp+0f, -0x1.54c97cp-5f, 0x1.3c8568p+4f, -0x1.a0d042p+0f, 0x1.78811cp+0f, 0x1.56ad38p+4f}, /* 1419 */
+    {-0x1.0b7906p+2f, 0x1.78894ap-5f, 0x1.38d71ap+4f, -0x1.66725cp+1f, 0x1.192666p+1f, 0x1.41e20ap+4f, -0x1.41ff04p+1f, -0x1.ba79dp-2f, 0x1.4d35ccp+4f}, /* 1421 */
+    {-0x1.9b106p+2f, -0x1.107f98p-1f, 0x1.1c1124p+4f, -0x1.aa1eeap+1f, -0x1.9454bp+0f, 0x1.379a14p+4f, -0x1.5bf20ap+0f, 0x1.867d62p-2f, 0x1.603e2p+4f}, /* 1422 */
+    {-0x1.0258f2p+3f, -0x1.0097e2p-1f, 0x1.0a4c6ep+4f, -0x1.2abb1ep+1f, -0x1.103f5ep+1f, 0x1.376ab2p+4f, -0x1.d88f7ap+0f, -0x1.50b01cp+1f, 0x1.456bf8p+4f}, /* 1423 */
+    {-0x1.f542acp+1f, -0x1.ba9bbap-1f, 0x1.24628cp+4f, -0x1.0ebf96p+1f, -0x1.0ae72p-3f, 0x1.38a8d4p+4f, -0x1.ca5056p+2f, 0x1.bded7p+1f, 0x1.1ad896p+4f}, /* 1424 */
+    {-0x1.90e582p+2f, 0x1.c85e0ap+0f, 0x1.14bbdcp+4f, -0x1.d895cap+2f, 0x1.94675ep+1f, 0x1.0b7c9p+4f, -0x1.1b5f8ap+2f, -0x1.b1ceeep+0f, 0x1.4513bep+4f}, /* 1425 */
+    {-0x1.90dad2p-1f, 0x1.ff5012p-2f, 0x1.522578p+4f, -0x1.bdd3ecp+2f, 0x1.01d8ccp+1f, 0x1.feb058p+3f, -0x1.ef608cp+1f, -0x1.05f1fap+0f, 0x1.43b064p+4f}, /* 1426 */
+    {-0x1.e108e8p+2f, -0x1.4be23p-4f, 0x1.f86dfp+3f, -0x1.c58ceap+2f, 0x1.13410ap+1f, 0x1.229da6p+4f, -0x1.47adb4p+1f, -0x1.c7a9a8p-2f, 0x1.2caf42p+4f}, /* 1427 */
+    {-0x1.17c686p+2f, 0x1.68d0a4p+1f, 0x1.1fd624p+4f, -0x1.0812p+1f, 0x1.dd6f72p+0f, 0x1.5b7582p+4f, -0x1.c0bfap+2f, 0x1.4ee17cp-2f, 0x1.e51974p+3f}, /* 1428 */
+    {-0x1.f4aa5cp-1f, 0x1.f53fap-2f, 0x1.581768p+4f, -0x1.1ce186p+2f, 0x1.f087aep+0f, 0x1.363492p+4f, -0x1.71c158p+2f, 0x1.e96b94p-2f, 0x1.1e3c12p+4f}, /* 1431 */
+    {-0x1.f60078p+1f, -0x1.80485cp-3f, 0x1.20ee1ap+4f, -0x1.2b29ccp+2f, -0x1.6ee056p+0f, 0x1.31813cp+4f, -0x1.a7e7dp+0f, 0x1.893f1ap+0f, 0x1.4bdbeap+4f}, /* 1434 */
+    {-0x1.62f4d6p+2f, 0x1.b47cfep+1f, 0x1.205932p+4f, -0x1.8e7de8p+1f, 0x1.bf25f2p-3f, 0x1.34f18ep+4f, -0x1.412fd2p+2f, -0x1.c1b468p-1f, 0x1.08c1aep+4f}, /* 1435 */
+    {-0x1.1dca3ep+1f, 0x1.8bcdfap+0f, 0x1.6015a4p+4f, -0x1.c0ac44p+2f, 0x1.24a36ap+1f, 0x1.f0e548p+3f, -0x1.df782cp+2f, 0x1.7616ccp+1f, 0x1.1a6abap+4f}, /* 1436 */
+    {-0x1.cb9c7p+0f, 0x1.acccdp-2f, 0x1.5dc67cp+4f, -0x1.6828c4p+0f, 0x1.5ecbaep+0f, 0x1.42e098p+4f, -0x1.033638p+3f, 0x1.90ddeap-1f, 0x1.1a8d26p+4f}, /* 1437 */
+};
+
+static void test_ball_on_soup_corner_over_steep_room_floor(void)
+{
+    cb_world_reset();
+    geo_tris(s124_l182_tris, sizeof s124_l182_tris / sizeof s124_l182_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.ac6af4p-1f, 0x1.ef168cp+1f, 0x1.1120bcp-2f, 0x1.2c77d2p-1f,
+                                        0x1.d6f0dap-2f, 0x1.6ef992p+3f, 0x1.399608p+5f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t up = cb_vec(0x1.096256p-3f, 0x1.c204a4p-1f, 0x1.d600fep-2f);
+    s.up = up;
+    const fm_vec3_t start = cb_vec(-0x1.629c02p+0f, 0x1.ea4c6ep+0f, 0x1.695ecep+4f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(0.0f, 0.0f, 0.0f));
+    /* the replay's 32 frames, its input held (along y: mostly along up) */
+    static const float dts[32] = {
+                                    0x1.5afd9p-3f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+                                    0x1.37ff76p-3f, 0x1.111112p-7f, 0x1.db74e8p-7f, 0x1.111112p-7f,
+                                    0x1.111112p-7f, 0x1.111112p-7f, 0x1.2e62bap-3f, 0x1.111112p-7f,
+                                    0x1.a8dedcp-4f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+                                    0x1.07e696p-4f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+                                    0x1.378a82p-3f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+                                    0x1.1ee9cep-5f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+                                    0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f, 0x1.111112p-7f,
+    };
+    body.input_velocity = cb_vec(0.0f, 0x1.f9361p+3f, 0.0f);
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded_late = 0;
+    float worst = 0.0f;
+    for (int f = 0; f < 32; f++) {
+        CB_STEP(&body, dts[f]);
+        if (!char_body_is_on_floor(&body)) continue;
+        if (f >= 24) grounded_late++;
+        if (foot_under_walkable(s124_l182_tris, sizeof s124_l182_tris / sizeof s124_l182_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    /* how far it moved along up in all (at rest on the corner: not falling, not lifted) */
+    const float along = (pos.x - start.x) * up.x + (pos.y - start.y) * up.y + (pos.z - start.z) * up.z;
+    cb_report("ball on a soup corner over a steep room floor (s124 l182): last 8 frames grounded",
+              (float)grounded_late, "");
+    cb_report("ball on a soup corner over a steep room floor (s124 l182): moved along up", along, "m");
+    TEST_ASSERT_EQUAL_INT(8, grounded_late);
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    TEST_ASSERT_TRUE(fabsf(along) < 0.01f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5048,5 +5135,6 @@ int main(void)
     RUN_TEST(test_crack_over_lower_near_copy_of_tile_field);
     RUN_TEST(test_ball_on_soup_sliver_edge_slid_off_under_face);
     RUN_TEST(test_crack_beside_wall_leaning_under_tilted_up);
+    RUN_TEST(test_ball_on_soup_corner_over_steep_room_floor);
     return UNITY_END();
 }

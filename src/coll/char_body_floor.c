@@ -2186,7 +2186,13 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
             ball_held(c, *pos, reach, found ? &hit : NULL, 1e30f, NULL, 0.0f, false, false, &s, NULL);
             alone = s.found;
             edges_over_floor = s.found && found && floor_below(c, *pos, &hit, above);
-            if (!s.found && !found) held_on_edge_alone(c, *pos, was_grounded, &s);
+            /* No floor in the ray's reach, or only one too steep to stand on (not a floor
+             * for this up): the ball may rest on a walkable vertex there all the same. Under
+             * an up 28.5 degrees off y the room floor was steep 0.245 m under the foot and
+             * the ball sat on a soup face's corner (contact 21.9 degrees off up), its way off
+             * into another face: at rest, never grounded (soak s124 l182). */
+            if (!s.found && (!found || v3_dot(hit.normal, up) < b->cos_floor_max_angle))
+                held_on_edge_alone(c, *pos, was_grounded, &s);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
         if (s.found && !s.steep) {
