@@ -4982,7 +4982,7 @@ static void test_crack_beside_wall_leaning_under_tilted_up(void)
  * walls and floor (z 24 is the floor under this up) and a triangle soup of large faces. The
  * body's floor is the soup face of floor_id 6 (normal (-0.837, 0.286, -0.466), 54.2 degrees off
  * up, walkable to 54.8). r 0.166, height 0.93, step 0.212, snap 0.696, up (-0.151, -0.009,
- * -0.988): 81 degrees off z. */
+ * -0.988): nearly horizontal (8.9 degrees off -z). */
 static const float s124_l135_tris[][9] = {
     {0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f}, /* 59 closed 0 */
     {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 68 closed 0 */
