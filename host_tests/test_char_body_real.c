@@ -5062,6 +5062,132 @@ static void test_ball_on_soup_corner_over_steep_room_floor(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
 }
 
+/* ---- a snap slid off a soup face's edge, then straight down to its plane past the face ---- */
+
+/* Soak s124 l135 (generator 2): the 32 static triangles within 1.5 m of (16.15, 4.6, 17.3)
+ * (floats of the checker's doubles; comments: the checker's triangle numbers): the room's
+ * walls and floor (z 24 is the floor under this up) and a triangle soup of large faces. The
+ * body's floor is the soup face of floor_id 6 (normal (-0.837, 0.286, -0.466), 54.2 degrees off
+ * up, walkable to 54.8). r 0.166, height 0.93, step 0.212, snap 0.696, up (-0.151, -0.009,
+ * -0.988): nearly horizontal (8.9 degrees off -z). */
+static const float s124_l135_tris[][9] = {
+    {0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f}, /* 59 closed 0 */
+    {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 68 closed 0 */
+    {0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f}, /* 70 closed 0 */
+    {0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 71 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 closed 0 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 closed 0 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 closed 0 */
+    {0x1.670cd6p+4f, 0x1.b40e6p+2f, 0x1.ec6a68p+3f, 0x1.2e5708p+4f, 0x1.95d546p+1f, 0x1.deb17ep+3f, 0x1.09f3cp+4f, 0x1.2a2e2ep+3f, 0x1.14130cp+4f}, /* 309 closed 0 */
+    {0x1.530e6cp+4f, 0x1.ebf0d6p+0f, 0x1.fef6f2p+3f, 0x1.0bdf9ap+4f, 0x1.edc216p+0f, 0x1.1ba4acp+4f, 0x1.152bb2p+4f, 0x1.bd5cf8p+2f, 0x1.edbb08p+3f}, /* 311 closed 0 */
+    {0x1.fe6b1ep+3f, 0x1.1096acp+1f, 0x1.0d8dbp+4f, 0x1.0e369ep+4f, 0x1.247ceap+3f, 0x1.376c0ep+4f, 0x1.2ccb36p+4f, 0x1.20d34ep+3f, 0x1.feb32p+3f}, /* 312 closed 0 */
+    {0x1.169e4p+4f, 0x1.57c63p+3f, 0x1.4106bp+4f, 0x1.22b2fcp+4f, 0x1.a9b3c4p+2f, 0x1.d7359p+3f, 0x1.18a1e4p+4f, 0x1.2e1afcp+3f, 0x1.1bd90ep+4f}, /* 313 closed 0 */
+    {0x1.4e8bc8p+4f, 0x1.0d626p+3f, 0x1.08c66p+4f, 0x1.20cc7ap+4f, 0x1.8d1f16p+2f, 0x1.365c66p+4f, 0x1.5ad89cp+4f, 0x1.4fa696p+3f, 0x1.c225a2p+3f}, /* 314 closed 0 */
+    {0x1.249418p+4f, 0x1.c126c8p+0f, 0x1.cd461ep+3f, 0x1.29dc9ep+4f, 0x1.6c9a78p+1f, 0x1.ef41f4p+3f, 0x1.1ec422p+4f, 0x1.2f31d4p+2f, 0x1.1c6f62p+4f}, /* 316 closed 0 */
+    {0x1.0643cep+4f, 0x1.df6504p+2f, 0x1.2a614cp+4f, 0x1.40633ep+4f, 0x1.2cc142p+1f, 0x1.b7ff66p+3f, 0x1.31be9ap+4f, 0x1.987bfep+1f, 0x1.e3644cp+3f}, /* 317 closed 0 */
+    {0x1.249e56p+4f, 0x1.0af6f4p+3f, 0x1.34862cp+4f, 0x1.f8d534p+3f, 0x1.83ae4ep+2f, 0x1.2ee466p+4f, 0x1.77c416p+4f, 0x1.f249dep+2f, 0x1.e3838ep+3f}, /* 319 closed 0 */
+    {0x1.229784p+4f, 0x1.631156p+2f, 0x1.4f7be6p+4f, 0x1.88428cp+4f, 0x1.925a22p+2f, 0x1.bb310ep+3f, 0x1.46ef14p+4f, 0x1.2f1c8p+3f, 0x1.0778ccp+4f}, /* 321 closed 0 */
+    {0x1.6780e2p+4f, 0x1.25e6a4p+3f, 0x1.c3b21p+3f, 0x1.161eaep+4f, 0x1.2e305cp+2f, 0x1.43dd74p+4f, 0x1.180072p+4f, 0x1.127ddap+3f, 0x1.1d7bbep+4f}, /* 322 closed 0 */
+    {0x1.156562p+4f, 0x1.425d1ap+3f, 0x1.3961d2p+4f, 0x1.529e44p+4f, 0x1.f8769p+2f, 0x1.af3548p+3f, 0x1.037acp+4f, 0x1.2e449ep+3f, 0x1.2d3652p+4f}, /* 323 closed 0 */
+    {0x1.720c88p+4f, 0x1.a662cep+2f, 0x1.8d01p+3f, 0x1.0b813cp+4f, 0x1.126c64p+3f, 0x1.37e44ap+4f, 0x1.1baec4p+4f, 0x1.804a9ep+2f, 0x1.31c0b2p+4f}, /* 324 closed 0 */
+    {0x1.14ce72p+4f, 0x1.091a7p+3f, 0x1.40a51ep+4f, 0x1.6a3c04p+4f, 0x1.4079f2p+1f, 0x1.a09aeep+3f, 0x1.61cb92p+4f, 0x1.74ca42p+2f, 0x1.6e96c8p+3f}, /* 328 closed 0 */
+    {0x1.2dd5aep+4f, 0x1.21fda2p+2f, 0x1.b81de6p+3f, 0x1.1bc8eap+4f, 0x1.3c423cp+2f, 0x1.1fb37ep+4f, 0x1.2ffa08p+4f, 0x1.1665f2p+2f, 0x1.c3c936p+3f}, /* 330 closed 0 */
+    {0x1.516732p+4f, 0x1.21672ap+1f, 0x1.073acp+4f, 0x1.e46deep+3f, 0x1.4d14dp+1f, 0x1.1f6c3ap+4f, 0x1.1ed586p+4f, 0x1.575058p+2f, 0x1.32e628p+4f}, /* 331 closed 0 */
+    {0x1.35730ep+4f, 0x1.649d12p+1f, 0x1.3744d2p+4f, 0x1.532f5p+4f, 0x1.26961ap+1f, 0x1.900f52p+3f, 0x1.720726p+4f, 0x1.f8d7d6p+2f, 0x1.8c9ce8p+3f}, /* 333 closed 0 */
+    {0x1.2958e4p+4f, 0x1.44f2aep+3f, 0x1.0e768p+4f, 0x1.34df2p+4f, 0x1.b000fp+2f, 0x1.f388ap+3f, 0x1.281226p+4f, 0x1.342b14p+2f, 0x1.4aed14p+4f}, /* 334 closed 0 */
+    {0x1.6b299ep+4f, 0x1.ebeed8p+2f, 0x1.d4b3acp+3f, 0x1.1aa824p+4f, 0x1.281c38p+2f, 0x1.4304a6p+4f, 0x1.08d58p+4f, 0x1.552722p+2f, 0x1.034936p+4f}, /* 335 closed 0 */
+    {0x1.5aa04cp+4f, 0x1.1fa19p+1f, 0x1.04c38ep+4f, 0x1.1eece6p+4f, 0x1.92668ep+2f, 0x1.2a3f0ep+4f, 0x1.52ed5ap+4f, 0x1.c77cb8p+1f, 0x1.061b12p+4f}, /* 336 closed 0 */
+    {0x1.6d166ep+4f, 0x1.4a3306p+3f, 0x1.c0164cp+3f, 0x1.286374p+4f, 0x1.62311cp+2f, 0x1.44cf16p+4f, 0x1.50c10ep+4f, 0x1.0996a8p+3f, 0x1.66133p+3f}, /* 337 closed 0 */
+    {0x1.1919a8p+4f, 0x1.9279d4p+2f, 0x1.ee8356p+3f, 0x1.55745ap+4f, 0x1.76b7ep+2f, 0x1.775ff2p+3f, 0x1.1da08p+4f, 0x1.3dc1eep+3f, 0x1.dc1412p+3f}, /* 338 closed 0 */
+    {0x1.41aa28p+4f, 0x1.0f0b26p+2f, 0x1.07d61ep+4f, 0x1.2a157p+4f, 0x1.2053f6p+3f, 0x1.3e09d8p+4f, 0x1.51e51cp+4f, 0x1.438178p+3f, 0x1.7a725cp+3f}, /* 339 closed 0 */
+    {0x1.fcc0dcp+3f, 0x1.a2046p+1f, 0x1.0eccccp+4f, 0x1.2237fp+4f, 0x1.4f2d4cp+3f, 0x1.1b73d2p+4f, 0x1.3c272p+4f, 0x1.f7ebecp+2f, 0x1.300f06p+4f}, /* 341 closed 0 */
+    {0x1.6f7cd6p+4f, 0x1.7a2838p+2f, 0x1.b8544p+3f, 0x1.4c1322p+4f, 0x1.2485e4p+2f, 0x1.ae462cp+3f, 0x1.245e4cp+4f, 0x1.313986p+2f, 0x1.29304p+4f}, /* 342 closed 0 */
+};
+
+/* distance from p to the triangle t (closest point, Ericson's regions) */
+static float t3_dot(const float *u, const float *v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+static float point_tri_dist(fm_vec3_t pv, const float *t)
+{
+    const float p[3] = {pv.x, pv.y, pv.z}, *a = t, *b = t + 3, *c = t + 6;
+    float ab[3], ac[3], ap[3], bp[3], cp[3], q[3];
+    for (int k = 0; k < 3; k++) {
+        ab[k] = b[k] - a[k];
+        ac[k] = c[k] - a[k];
+        ap[k] = p[k] - a[k];
+        bp[k] = p[k] - b[k];
+        cp[k] = p[k] - c[k];
+    }
+    const float d1 = t3_dot(ab, ap), d2 = t3_dot(ac, ap), d3 = t3_dot(ab, bp), d4 = t3_dot(ac, bp);
+    const float d5 = t3_dot(ab, cp), d6 = t3_dot(ac, cp);
+    const float va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+    float wb, wc; /* q = a + ab wb + ac wc */
+    if (d1 <= 0.0f && d2 <= 0.0f) wb = 0.0f, wc = 0.0f;
+    else if (d3 >= 0.0f && d4 <= d3) wb = 1.0f, wc = 0.0f;
+    else if (d6 >= 0.0f && d5 <= d6) wb = 0.0f, wc = 1.0f;
+    else if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) wb = d1 / (d1 - d3), wc = 0.0f;
+    else if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) wb = 0.0f, wc = d2 / (d2 - d6);
+    else if (va <= 0.0f && d4 - d3 >= 0.0f && d5 - d6 >= 0.0f) {
+        wc = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        wb = 1.0f - wc;
+    } else {
+        const float den = 1.0f / (va + vb + vc);
+        wb = vb * den;
+        wc = vc * den;
+    }
+    for (int k = 0; k < 3; k++) q[k] = p[k] - (a[k] + ab[k] * wb + ac[k] * wc);
+    return sqrtf(t3_dot(q, q));
+}
+
+static void test_snap_slid_off_soup_edge_not_past_snap_distance(void)
+{
+    cb_world_reset();
+    const size_t n = sizeof s124_l135_tris / sizeof s124_l135_tris[0];
+    geo_tris(s124_l135_tris, n);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.54686ap-3f, 0x1.dadaep-1f, 0x1.b23e08p-3f, 0x1.647fp-1f,
+                                        0x1.e9b06ep-1f, 0x1.493818p+2f, 0x1.4dd0e2p+5f, 5, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.up = cb_vec(-0x1.358eeap-3f, -0x1.337d8cp-7f, -0x1.fa1838p-1f);
+    const fm_vec3_t start = cb_vec(0x1.0e6e2cp+4f, 0x1.203328p+2f, 0x1.f90986p+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.05bf34p+0f, 0x1.3ecabap-5f, 0x1.8426e2p+1f));
+    const fm_vec3_t input = cb_vec(-0x1.a636fap+0f, 0.0f, -0x1.11165ep+0f);
+    body.input_velocity = input;
+    /* the replay's 8 steps of 0.2 s: grounded only with a surface within the snap reach */
+    const float snap = 0x1.647fp-1f, r = 0x1.54686ap-3f;
+    int grounded = 0, floating = 0;
+    float worst = 0.0f;
+    for (int f = 0; f < 8; f++) {
+        CB_STEP(&body, 0x1.99999ap-3f);
+        if (!char_body_is_on_floor(&body)) continue;
+        grounded++;
+        /* the checker's reach: the capsule's axis, its bottom ball swept the snap distance
+         * down along -up, grown by r (sampled every 1.5 mm); d is how far beyond it */
+        const fm_vec3_t foot = char_body_foot_pos(&body);
+        const float top = 0x1.dadaep-1f - r, bottom = r - snap;
+        float d = 1e30f;
+        for (int k = 0; k <= 1000; k++) {
+            const float a = bottom + (top - bottom) * (float)k / 1000.0f;
+            const fm_vec3_t q = cb_vec(foot.x + s.up.x * a, foot.y + s.up.y * a, foot.z + s.up.z * a);
+            for (size_t i = 0; i < n; i++) d = fminf(d, point_tri_dist(q, s124_l135_tris[i]) - r);
+        }
+        if (d > worst) worst = d;
+        if (d > 0.001f) floating++;
+    }
+    cb_report("snap slid off a soup face's edge (s124 l135): grounded frames with no surface in snap reach",
+              (float)floating, "");
+    cb_report("snap slid off a soup face's edge (s124 l135): grounded, farthest beyond the snap reach", worst,
+              "m");
+    TEST_ASSERT_EQUAL_INT(0, floating);
+    TEST_ASSERT_TRUE(grounded > 0);
+    /* and it went the way it was asked (across up, along the input) */
+    TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5136,5 +5262,6 @@ int main(void)
     RUN_TEST(test_ball_on_soup_sliver_edge_slid_off_under_face);
     RUN_TEST(test_crack_beside_wall_leaning_under_tilted_up);
     RUN_TEST(test_ball_on_soup_corner_over_steep_room_floor);
+    RUN_TEST(test_snap_slid_off_soup_edge_not_past_snap_distance);
     return UNITY_END();
 }

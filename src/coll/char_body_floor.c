@@ -2229,6 +2229,16 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                 c->mem->crack_no_floor = true;
             }
             if (s.found && s.gap > 0.0f) snap_kept_over(c, pos, before, &s);
+            /* A snap is no more than the snap distance down. Sliding off an edge into the
+             * open, then straight down to the floor's plane, went 0.733 m (snap 0.696) past
+             * the edge of a soup face 54 degrees off a nearly horizontal up: its plane went on,
+             * the face did not, and the body stood grounded with no surface in the snap's reach
+             * (soak s124 l135). The slide is not made; the snap goes straight down (as
+             * snap_kept_over). */
+            if (s.found && s.gap > 0.0f && v3_dot(v3_sub(before, *pos), up) > c->snap + contact_eps) {
+                *pos = before;
+                coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
+            }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
              * motion, and the velocity says so */
