@@ -744,13 +744,17 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
+    fm_vec3_t at = *p; /* (*p is written only where it stands: a place to fall from is the way's end) */
     for (int k = 0;; k++) {
-        fm_vec3_t foot = cb_foot(c, *p);
+        fm_vec3_t foot = cb_foot(c, at);
         float rise;
         if (!floor_height(c, foot, c->radius + c->step, below, foot, &rise, false)) return false;
         float gap = -rise;
-        if (!(gap < -step_eps)) return true;
-        fm_vec3_t q = *p, n = v3(0.0f, 0.0f, 0.0f);
+        if (!(gap < -step_eps)) {
+            *p = at;
+            return true;
+        }
+        fm_vec3_t q = at, n = v3(0.0f, 0.0f, 0.0f);
         const float f = move_swept_in(c, &q, v3_scale(c->up, -gap), &n, false);
         if (!(f * -gap < -gap - step_eps)) {
             *p = q;
@@ -762,7 +766,7 @@ static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
         if (k >= CB_BACK_TRIES || !(nu < 0.0f) || !(la > 1e-3f)) return false;
         float m = (1.0f - f) * -gap * -nu / la + c->skin;
         if (m > 0.5f * c->radius) m = 0.5f * c->radius;
-        if (move_swept_in(c, p, v3_scale(na, m / la), NULL, false) < 1.0f || !v3_finite(*p)) return false;
+        if (move_swept_in(c, &at, v3_scale(na, m / la), NULL, false) < 1.0f || !v3_finite(at)) return false;
     }
 }
 
