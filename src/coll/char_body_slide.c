@@ -738,7 +738,7 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
  * normal (at most r / 2 a time, CB_BACK_TRIES times; the move swept): in a triangle soup the
  * game teleported a body (r 0.19, step 0.23) into, a pocket over a 20-degree face, under
  * two faces leaning over it, the only place to stand there is 3 cm wide, 0.2 m away; the
- * search's ways ended beside it, lifted 3-72 % of the way, and the body stood grounded on
+ * search's ways ended beside it, lifted 28-86 % of the way, and the body stood grounded on
  * the face with its foot 132 mm under it (soak s118 l131). */
 #define CB_BACK_TRIES 3
 static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
