@@ -4807,7 +4807,8 @@ static const float s90_l174_tris[][9] = {
 };
 
 /* True when the foot is more than 1 mm under a walkable triangle of tris over it (along y). */
-static bool foot_under_walkable(const float (*tris)[9], size_t n, fm_vec3_t foot, float cos_max, float *depth)
+static bool foot_under_walkable_within(const float (*tris)[9], size_t n, fm_vec3_t foot, float cos_max, float reach,
+                                       float *depth)
 {
     bool under = false;
     for (size_t i = 0; i < n; i++) {
@@ -4828,12 +4829,17 @@ static bool foot_under_walkable(const float (*tris)[9], size_t n, fm_vec3_t foot
         if (!((sgn[0] >= 0.0f && sgn[1] >= 0.0f && sgn[2] >= 0.0f) || (sgn[0] <= 0.0f && sgn[1] <= 0.0f && sgn[2] <= 0.0f)))
             continue;
         const float h = t[1] - (nx * (foot.x - t[0]) + nz * (foot.z - t[2])) / ny;
-        if (h - foot.y > 0.001f) {
+        if (h - foot.y > 0.001f && h - foot.y <= reach) {
             under = true;
             if (h - foot.y > *depth) *depth = h - foot.y;
         }
     }
     return under;
+}
+
+static bool foot_under_walkable(const float (*tris)[9], size_t n, fm_vec3_t foot, float cos_max, float *depth)
+{
+    return foot_under_walkable_within(tris, n, foot, cos_max, INFINITY, depth);
 }
 
 static void test_ball_on_soup_sliver_edge_slid_off_under_face(void)
@@ -5188,6 +5194,98 @@ static void test_snap_slid_off_soup_edge_not_past_snap_distance(void)
     TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
 }
 
+/* ---- a pocket in a triangle soup under two faces leaning over it, 3 cm wide ---- */
+
+/* Soak s118 l131 (generator 2): the 42 static triangles within 1.5 m of the failing foot
+ * (floats of the checker's doubles, bounding-sphere culled; comments: the checker's triangle
+ * numbers), one mesh: the room (floor y 0, walls) and a triangle soup of 34 crossing faces
+ * (358-391), double-sided. r 0.193, height 1.127, step 0.232, snap 0.341, walkable to 25.1
+ * degrees, 7 slides, the owner point the capsule's centre. The game teleported the body with
+ * its sweep capsule over face 361 (20 degrees off up) and its foot 132 mm under it, faces 367
+ * and 371 leaning over the head (0.5 mm from 371): no room for the lift there; the only place
+ * to stand near is a pocket about 3 cm wide, 0.2 m away on 361, between the search's ways. */
+static const float s118_l131_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 1 closed 0 */
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 3 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 12 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1.8p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, -0x1p+3f}, /* 13 closed 0 */
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 14 closed 0 */
+    {-0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, -0x1p+3f}, /* 15 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 closed 0 */
+    {-0x1.de5d54p+3f, 0x1.d6a8aep+1f, -0x1.00cad6p+4f, -0x1.078cfcp+4f, 0x1.577c06p-1f, -0x1.656daep+3f, -0x1.b3aee8p+3f, 0x1.e00724p-1f, -0x1.deffc6p+3f}, /* 358 closed 0 */
+    {-0x1.f1508p+3f, 0x1.840112p+0f, -0x1.ccdd2p+3f, -0x1.07a3e4p+4f, 0x1.51564cp-2f, -0x1.8361b6p+3f, -0x1.e8efaap+3f, 0x1.0604dp+2f, -0x1.cf240ep+3f}, /* 359 closed 0 */
+    {-0x1.b44d86p+3f, 0x1.7384bcp+1f, -0x1.3eda5p+3f, -0x1.adc71p+3f, 0x1.c0eb78p-2f, -0x1.c8cae4p+3f, -0x1.5d17cap+3f, 0x1.47908ap+0f, -0x1.c5489p+3f}, /* 360 closed 0 */
+    {-0x1.9b2bc2p+3f, 0x1.d775bcp-1f, -0x1.ead252p+3f, -0x1.dc1068p+3f, 0x1.9ba68p-1f, -0x1.5931dcp+3f, -0x1.0f4926p+4f, 0x1.1f36b2p+1f, -0x1.e8206p+3f}, /* 361 closed 0 */
+    {-0x1.1aa5fp+4f, 0x1.0d1026p+2f, -0x1.c8b3b2p+3f, -0x1.555cc8p+3f, 0x1.b0c35cp+0f, -0x1.cfe332p+3f, -0x1.8e19p+3f, 0x1.f2b606p+1f, -0x1.f4587ap+3f}, /* 362 closed 0 */
+    {-0x1.6c118p+3f, 0x1.22efe6p-1f, -0x1.e7997cp+3f, -0x1.92affap+3f, 0x1.0b5b8ep+2f, -0x1.167ed2p+4f, -0x1.f11dcap+3f, 0x1.08e586p+2f, -0x1.39c7cep+3f}, /* 363 closed 0 */
+    {-0x1.87d7d2p+3f, 0x1.1e0316p+2f, -0x1.6b7cecp+3f, -0x1.dadc94p+3f, 0x1.2ec066p+2f, -0x1.779f0ap+3f, -0x1.0ef52cp+4f, 0x1.37d23p+2f, -0x1.b022dp+3f}, /* 364 closed 0 */
+    {-0x1.f967fp+3f, 0x1.e04746p+0f, -0x1.6e8fbcp+3f, -0x1.44f6fap+3f, 0x1.a29934p+0f, -0x1.ca13e2p+3f, -0x1.e12508p+3f, 0x1.2c35c4p+1f, -0x1.750f04p+3f}, /* 366 closed 0 */
+    {-0x1.905712p+3f, 0x1.09a06cp+2f, -0x1.005986p+4f, -0x1.f91b88p+3f, 0x1.985528p+0f, -0x1.826b66p+3f, -0x1.121af8p+4f, 0x1.5373bp+1f, -0x1.bc7fa8p+3f}, /* 367 closed 0 */
+    {-0x1.e01d94p+3f, 0x1.39cc58p+1f, -0x1.9777f2p+3f, -0x1.8387b2p+3f, 0x1.203dacp+2f, -0x1.7fc4d8p+3f, -0x1.445a46p+3f, 0x1.379d6ep+0f, -0x1.92feeap+3f}, /* 368 closed 0 */
+    {-0x1.eba6fap+3f, 0x1.895524p+1f, -0x1.053bccp+4f, -0x1.59bd9p+3f, 0x1.a286dp+0f, -0x1.9e7d82p+3f, -0x1.a6412cp+3f, 0x1.6a7e76p+0f, -0x1.5685dap+3f}, /* 369 closed 0 */
+    {-0x1.0b2e7ap+4f, 0x1.97d72cp+1f, -0x1.abbeep+3f, -0x1.231dcep+4f, 0x1.9c758cp+1f, -0x1.d24c44p+3f, -0x1.7d4e16p+3f, 0x1.3af48cp+2f, -0x1.b9e3dp+3f}, /* 370 closed 0 */
+    {-0x1.feee3ep+3f, 0x1.4b701cp+1f, -0x1.8148a4p+3f, -0x1.fceb64p+3f, 0x1.926c3p+1f, -0x1.d963e2p+3f, -0x1.bd5f4ap+3f, 0x1.89fcc4p-2f, -0x1.1c05eep+4f}, /* 371 closed 0 */
+    {-0x1.4e6f72p+3f, 0x1.836d82p+1f, -0x1.e05dd2p+3f, -0x1.0a265p+4f, 0x1.31909ep+2f, -0x1.ef89bp+3f, -0x1.a0658p+3f, 0x1.a2ef3ap+0f, -0x1.19455cp+4f}, /* 372 closed 0 */
+    {-0x1.091708p+4f, 0x1.df7eb8p+0f, -0x1.832dd4p+3f, -0x1.c53cdp+3f, 0x1.0081bcp+2f, -0x1.9e9652p+3f, -0x1.c108f2p+3f, 0x1.759276p+0f, -0x1.eb3dap+3f}, /* 373 closed 0 */
+    {-0x1.e074fcp+3f, 0x1.4c6abap+1f, -0x1.cea02p+3f, -0x1.e754aap+3f, 0x1.9c2802p+1f, -0x1.790c06p+3f, -0x1.ee06cap+3f, 0x1.20dcfp+1f, -0x1.a9fb7p+3f}, /* 374 closed 0 */
+    {-0x1.060554p+4f, 0x1.e9365p+0f, -0x1.ca506ep+3f, -0x1.cf85a6p+3f, 0x1.aafe02p+0f, -0x1.53ae14p+3f, -0x1.125038p+4f, 0x1.c0138p+0f, -0x1.ea3c12p+3f}, /* 375 closed 0 */
+    {-0x1.16743ep+4f, 0x1.322a76p+2f, -0x1.ae42f2p+3f, -0x1.a83cd8p+3f, 0x1.8cc87cp+1f, -0x1.a41282p+3f, -0x1.95ccd8p+3f, 0x1.8dddc8p-1f, -0x1.a3545ap+3f}, /* 376 closed 0 */
+    {-0x1.e95122p+3f, 0x1.9039a2p+1f, -0x1.8d1c76p+3f, -0x1.c68cbep+3f, 0x1.85f564p+0f, -0x1.566162p+3f, -0x1.a4892ep+3f, 0x1.a9358ep+1f, -0x1.08cd32p+4f}, /* 377 closed 0 */
+    {-0x1.1201a4p+4f, 0x1.88c2ecp+1f, -0x1.e124e2p+3f, -0x1.72e016p+3f, 0x1.8a0392p+1f, -0x1.d0573ep+3f, -0x1.9ab8c2p+3f, 0x1.a5bc92p+1f, -0x1.ed5c5cp+3f}, /* 378 closed 0 */
+    {-0x1.e4a11ep+3f, 0x1.a3726p+1f, -0x1.b75e7ap+3f, -0x1.01ed1p+4f, 0x1.25a428p+2f, -0x1.68e81p+3f, -0x1.0729ap+4f, 0x1.3b273p+0f, -0x1.ad38bp+3f}, /* 379 closed 0 */
+    {-0x1.feeb0ap+3f, 0x1.adfbf6p+0f, -0x1.c88dc2p+3f, -0x1.b6da74p+3f, 0x1.7c5052p+1f, -0x1.41a3a6p+3f, -0x1.e7641p+3f, 0x1.809dbep-1f, -0x1.f772dcp+3f}, /* 380 closed 0 */
+    {-0x1.3cbf2ap+3f, 0x1.12fa0ep+1f, -0x1.a8e508p+3f, -0x1.9addb2p+3f, 0x1.1fa20ap-1f, -0x1.00a43ap+4f, -0x1.e26b52p+3f, 0x1.ecd9bap+0f, -0x1.6f4c6ap+3f}, /* 381 closed 0 */
+    {-0x1.1855d8p+4f, 0x1.0e7818p+1f, -0x1.c350f6p+3f, -0x1.0381fap+4f, 0x1.a4caap+1f, -0x1.cc349cp+3f, -0x1.dae456p+3f, 0x1.88ef92p+0f, -0x1.d8b0ecp+3f}, /* 382 closed 0 */
+    {-0x1.8fffe2p+3f, 0x1.2a69fp+0f, -0x1.8987fep+3f, -0x1.d4c1ep+3f, 0x1.0e0404p+2f, -0x1.97bef2p+3f, -0x1.8e4382p+3f, 0x1.1cdc2p-1f, -0x1.a46b8cp+3f}, /* 383 closed 0 */
+    {-0x1.dabd6p+3f, 0x1.4cbdb2p+1f, -0x1.74b86cp+3f, -0x1.d4d2f4p+3f, 0x1.0d9346p+0f, -0x1.da8e92p+3f, -0x1.831336p+3f, 0x1.0c97dep+2f, -0x1.781fecp+3f}, /* 384 closed 0 */
+    {-0x1.ca43c4p+3f, 0x1.ab9208p+1f, -0x1.0c7002p+4f, -0x1.e7b2b6p+3f, 0x1.21f3c2p+2f, -0x1.bf8916p+3f, -0x1.ed1304p+3f, 0x1.ea2936p+0f, -0x1.37fefp+3f}, /* 386 closed 0 */
+    {-0x1.0c0ebcp+4f, 0x1.8aa044p+1f, -0x1.b50a0ap+3f, -0x1.a8d4c2p+3f, 0x1.36651p+1f, -0x1.cc7724p+3f, -0x1.5559b8p+3f, 0x1.2d6d36p+2f, -0x1.e90e28p+3f}, /* 387 closed 0 */
+    {-0x1.7f349ep+3f, 0x1.741f3ap+1f, -0x1.c9e61p+3f, -0x1.c21114p+3f, 0x1.e6f824p+0f, -0x1.705c2cp+3f, -0x1.344808p+3f, 0x1.1aa99cp+2f, -0x1.b6e63ep+3f}, /* 388 closed 0 */
+    {-0x1.0454ep+4f, 0x1.048ddp+2f, -0x1.e1cb92p+3f, -0x1.ca932ep+3f, 0x1.d321d4p+1f, -0x1.aeb63cp+3f, -0x1.df20ccp+3f, 0x1.0a43eep+2f, -0x1.740ce8p+3f}, /* 389 closed 0 */
+    {-0x1.a8b532p+3f, 0x1.a50352p+1f, -0x1.f52062p+3f, -0x1.93bfc8p+3f, 0x1.39794ap+2f, -0x1.1e517p+4f, -0x1.9a0194p+3f, 0x1.12f31cp+0f, -0x1.784caap+3f}, /* 390 closed 0 */
+    {-0x1.734f56p+3f, 0x1.27fea4p+2f, -0x1.ffa4fp+3f, -0x1.f4e2c6p+3f, 0x1.22414ep+1f, -0x1.ada2aap+3f, -0x1.8d1078p+3f, 0x1.e44ab4p-2f, -0x1.152e0ep+4f}, /* 391 closed 0 */
+};
+
+static void test_teleported_into_soup_pocket_under_leaning_faces(void)
+{
+    cb_world_reset();
+    geo_tris(s118_l131_tris, sizeof s118_l131_tris / sizeof s118_l131_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.8af096p-3f, 0x1.2083f4p+0f, 0x1.dab3aep-3f, 0x1.5d87p-2f,
+                                        0x1.c1194p-2f, 0x1.5feca6p+5f, 0x1.110b1cp+6f, 7, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(-0x1.fb3f48p+3f, 0x1.0dfbe6p+1f, -0x1.c17a88p+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    body.input_velocity = cb_vec(0.0f, 0.0f, 0.0f);
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded = 0;
+    float worst = 0.0f;
+    for (int f = 0; f < 30; f++) {
+        CB_STEP(&body, 0x1.966616p-4f);
+        if (!char_body_is_on_floor(&body)) continue;
+        grounded++;
+        /* (within the step over the foot, as the footing oracle: soup faces cross the column
+         * higher up too) */
+        if (foot_under_walkable_within(s118_l131_tris, sizeof s118_l131_tris / sizeof s118_l131_tris[0],
+                                       char_body_foot_pos(&body), cos_max, s.step_height, &worst))
+            sunk++;
+    }
+    cb_report("teleported into a soup pocket under leaning faces (s118 l131): frames grounded under a floor",
+              (float)sunk, "");
+    cb_report("teleported into a soup pocket under leaning faces (s118 l131): deepest foot under it", worst, "m");
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    /* it stands (on face 361, in the pocket), at rest, near where it was put */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(grounded >= 29);
+    TEST_ASSERT_TRUE(fabsf(pos.x - start.x) + fabsf(pos.z - start.z) < 0.5f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5263,5 +5361,6 @@ int main(void)
     RUN_TEST(test_crack_beside_wall_leaning_under_tilted_up);
     RUN_TEST(test_ball_on_soup_corner_over_steep_room_floor);
     RUN_TEST(test_snap_slid_off_soup_edge_not_past_snap_distance);
+    RUN_TEST(test_teleported_into_soup_pocket_under_leaning_faces);
     return UNITY_END();
 }

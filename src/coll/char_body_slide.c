@@ -732,20 +732,42 @@ static void unstick(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 
 /* The full capsule stands at *p: a walkable floor under the foot within `below` under it
  * or the step height above it, and room to lift the body onto a floor above the foot
- * (swept). *p is moved onto that floor. */
+ * (swept). *p is moved onto that floor. A lift stopped short by an overhang's underside
+ * (what it met leans over the body: its normal points down and across up) is tried again
+ * from beside it, moved back across up by what the lift lacked, to first order, along that
+ * normal (at most r / 2 a time, CB_BACK_TRIES times; the move swept): in a triangle soup the
+ * game teleported a body (r 0.19, step 0.23) into, a pocket over a 20-degree face, under
+ * two faces leaning over it, the only place to stand there is 3 cm wide, 0.2 m away; the
+ * search's ways ended beside it, lifted 28-86 % of the way, and the body stood grounded on
+ * the face with its foot 132 mm under it (soak s118 l131). */
+#define CB_BACK_TRIES 3
 static bool stands_at(const cb_ctx_t *c, fm_vec3_t *p, float below)
 {
     const float step_eps = cb_len_tol(c, CB_STEP_EPS);
-    fm_vec3_t foot = cb_foot(c, *p);
-    float rise;
-    if (!floor_height(c, foot, c->radius + c->step, below, foot, &rise, false)) return false;
-    float gap = -rise;
-    if (gap < -step_eps) {
-        fm_vec3_t q = *p;
-        if (coll_cb_move_swept(c, &q, v3_scale(c->up, -gap)) * -gap < -gap - step_eps) return false;
-        *p = q;
+    fm_vec3_t at = *p; /* (*p is written only where it stands: a place to fall from is the way's end) */
+    for (int k = 0;; k++) {
+        fm_vec3_t foot = cb_foot(c, at);
+        float rise;
+        if (!floor_height(c, foot, c->radius + c->step, below, foot, &rise, false)) return false;
+        float gap = -rise;
+        if (!(gap < -step_eps)) {
+            *p = at;
+            return true;
+        }
+        fm_vec3_t q = at, n = v3(0.0f, 0.0f, 0.0f);
+        const float f = move_swept_in(c, &q, v3_scale(c->up, -gap), &n, false);
+        if (!(f * -gap < -gap - step_eps)) {
+            *p = q;
+            return true;
+        }
+        const float nu = v3_dot(n, c->up);
+        const fm_vec3_t na = v3_reject(n, c->up);
+        const float la = v3_len(na);
+        if (k >= CB_BACK_TRIES || !(nu < 0.0f) || !(la > 1e-3f)) return false;
+        float m = (1.0f - f) * -gap * -nu / la + c->skin;
+        if (m > 0.5f * c->radius) m = 0.5f * c->radius;
+        if (move_swept_in(c, &at, v3_scale(na, m / la), NULL, false) < 1.0f || !v3_finite(at)) return false;
     }
-    return true;
 }
 
 /* Nothing (a floor, a slope, any face) between the foot at p and r + step above it: the
@@ -802,12 +824,14 @@ bool coll_cb_stand_search(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t input, bo
                 if (!(v3_dot(n, c->up) >= c->body->cos_floor_max_angle)) continue;
                 const fm_vec3_t rest = v3_scale(way, 1.0f - f);
                 if (move_swept_in(c, &p, v3_madd(rest, n, -v3_dot(rest, n)), NULL, false) < 1.0f ||
-                    !v3_finite(p) || !stands_at(c, &p, c->contact_eps))
+                    !v3_finite(p) || !stands_at(c, &p, c->contact_eps) ||
+                    v3_len(v3_reject(v3_sub(p, *pos), c->up)) > reach)
                     continue;
                 *pos = p;
                 return true;
             }
-            if (v3_finite(p) && (stands_at(c, &p, c->snap) || (airborne && foot_free_at(c, p)))) {
+            if (v3_finite(p) && (stands_at(c, &p, c->snap) || (airborne && foot_free_at(c, p))) &&
+                v3_len(v3_reject(v3_sub(p, *pos), c->up)) <= reach) {
                 *pos = p;
                 return true;
             }
