@@ -388,6 +388,16 @@ static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, flo
     return found;
 }
 
+/* rest_at_foot at the level of contact h, answered only where the contacts hold the ball
+ * from all sides (around): the body's own ball at the foot rests there, *rest over the
+ * foot. ball_held's looks after its drop went astray (foot40, foot63, foot67) all ask it. */
+static bool surrounded_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, const coll_sweep_hit_t *h,
+                               float *rest)
+{
+    bool around = false;
+    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h->point, foot), c->up), rest, &around) && around;
+}
+
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
 static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
 {
@@ -647,8 +657,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * and the taller block's edge, 180 degrees apart across the foot (soak s95 l293). */
         if (over_floor && k == 1 && !(d1 > d0) && steep_face(c, &h1) && !steep_face(c, &h0)) {
             float rest = 0.0f;
-            bool around = false;
-            if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h0.point, foot), up), &rest, &around) && around)
+            if (surrounded_at_foot(c, foot, floor_gap, &h0, &rest))
                 return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
         }
         /* Over a floor, slid past a steep first contact out of the foot's column (more than
@@ -670,8 +679,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
             fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
             v3_len2(v3_reject(v3_sub(b0, b0_0), up)) > r * r) {
             float rest = 0.0f;
-            bool around = false;
-            if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h0.point, foot), up), &rest, &around) && around)
+            if (surrounded_at_foot(c, foot, floor_gap, &h0, &rest))
                 return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
         }
         /* Over a floor, the slide past a steep contact ran into a wall beside the ball (a
@@ -966,8 +974,7 @@ again:;
             if (slid && ahead && floor_gap > cb_len_tol(c, CB_STEP_EPS) &&
                 v3_dot(v3_sub(h1p.point, foot), vel) > 0.0f && v3_dot(h1p.normal, up) >= b->cos_floor_max_angle) {
                 float rest = 0.0f;
-                bool around = false;
-                if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest, &around) && around)
+                if (surrounded_at_foot(c, foot, floor_gap, &h1p, &rest))
                     return held_at(rest, reach, -rest, up, h1p.point, &h1p, out, far_out);
             }
             goto hole; /* rolls off (a ledge), unless the ball is in a hole */
@@ -1826,6 +1833,15 @@ static inline bool stand_on(const cb_ctx_t *c, fm_vec3_t *pos, float gap, fm_vec
     return !(gap < -step_eps && done * -gap < -gap - step_eps);
 }
 
+/* The snap made straight down from where it began (before), no slide across up: where a
+ * slide off an edge took the foot somewhere the snap must not go (snap_kept_over, and the
+ * probe's two checks after it). */
+static void snap_straight(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, float gap)
+{
+    *pos = before;
+    coll_cb_move_swept(c, pos, v3_scale(c->up, -gap));
+}
+
 /**
  * The snap onto s (from `before`, s->gap below the foot) slid the body down a walkable slope
  * steeper than the capsule's bottom allows (r / cos > r + step: the sweep capsule rests on
@@ -1853,8 +1869,7 @@ static void snap_kept_over(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t before, 
     if (cb_ray(c, v3_madd(cb_foot(c, *pos), up, above), v3_scale(up, -1.0f), above + f_max(hold, 0.0f), &h) &&
         isfinite(h.distance))
         return;
-    *pos = before;
-    coll_cb_move_swept(c, pos, v3_scale(up, -s->gap));
+    snap_straight(c, pos, before, s->gap);
 }
 
 /* A jump's rise skips the probe, so nothing looks at a walkable face the step zone (unswept)
@@ -2236,8 +2251,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
              * (soak s124 l135). The slide is not made; the snap goes straight down (as
              * snap_kept_over). */
             if (s.found && s.gap > 0.0f && v3_dot(v3_sub(before, *pos), up) > c->snap + contact_eps) {
-                *pos = before;
-                coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
+                snap_straight(c, pos, before, s.gap);
             }
             if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, before), up);
             /* sliding off a nosing on the way down moved the body across up too: that is
@@ -2268,8 +2282,7 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                          * hid, a face leaning over the head leaving no room: it stood
                          * 8.8 mm under that face (soak s90 l174). */
                         b->velocity = v3_madd(b->velocity, across, -1.0f / c->dt);
-                        *pos = before;
-                        coll_cb_move_swept(c, pos, v3_scale(up, -s.gap));
+                        snap_straight(c, pos, before, s.gap);
                         if (c->ev) c->ev->step += v3_dot(v3_sub(*pos, slid_to), up);
                     } else {
                         *pos = slid_to;
