@@ -5291,7 +5291,7 @@ static void test_teleported_into_soup_pocket_under_leaning_faces(void)
 /* Soak s123 l362 (generator 2): the 23 static triangles within 1 m of the body's capsule
  * (floats of the checker's doubles; comments: the checker's triangle numbers): the room floor
  * (y 0), a slab 1.285 x 5.39 m, 0.1147 high, turned 16.6 degrees about y (1229-1240), the next
- * slab 0.096 m beside it (1241-1252), two tiles (359-363) and a block floating 2.13-2.39 m
+ * slab 0.096 m beside it (1241-1252), a tile (359, 362-363) and a block floating 2.13-2.39 m
  * over the floor (1217-1228). r 0.879, height 2.776, step 0, snap 0, floor angle 66.7
  * degrees, one slide. The sweep capsule's bottom ball rests on the slab's long top edge
  * (contact 5.4 degrees off up, the ball's centre 83 mm past the edge over the room floor, the
