@@ -5286,6 +5286,96 @@ static void test_teleported_into_soup_pocket_under_leaning_faces(void)
     TEST_ASSERT_TRUE(fabsf(pos.x - start.x) + fabsf(pos.z - start.z) < 0.5f);
 }
 
+/* ---- a ball at rest on a slab's top edge, its push off blocked, snap 0 ---- */
+
+/* Soak s123 l362 (generator 2): the 23 static triangles within 1 m of the body's capsule
+ * (floats of the checker's doubles; comments: the checker's triangle numbers): the room floor
+ * (y 0), a slab 1.285 x 5.39 m, 0.1147 high, turned 16.6 degrees about y (1229-1240), the next
+ * slab 0.096 m beside it (1241-1252), a tile (359, 362-363) and a block floating 2.13-2.39 m
+ * over the floor (1217-1228). r 0.879, height 2.776, step 0, snap 0, floor angle 66.7
+ * degrees, one slide. The sweep capsule's bottom ball rests on the slab's long top edge
+ * (contact 5.4 degrees off up, the ball's centre 83 mm past the edge over the room floor, the
+ * foot 0.112 m over it); its top ball touches the block's lower edge (0.28 mm), so the slide's
+ * push off the slab's edge has no room. held_on_edge grounded it in the air, and grounded,
+ * with snap 0, nothing did: it stood one step and fell the next, at rest, for ever. */
+static const float s123_l362_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 3 */
+    {-0x1.c69c16p+3f, 0x1.284a42p-3f, -0x1.e6066ep+3f, -0x1.ab6902p+3f, 0x1.284a42p-3f, -0x1.12af12p+4f, -0x1.d8ae66p+3f, 0x1.284a42p-3f, -0x1.09a5eap+4f}, /* 359 */
+    {-0x1.d8ae66p+3f, 0x0p+0f, -0x1.09a5eap+4f, -0x1.d8ae66p+3f, 0x1.284a42p-3f, -0x1.09a5eap+4f, -0x1.ab6902p+3f, 0x1.284a42p-3f, -0x1.12af12p+4f}, /* 362 */
+    {-0x1.d8ae66p+3f, 0x0p+0f, -0x1.09a5eap+4f, -0x1.ab6902p+3f, 0x1.284a42p-3f, -0x1.12af12p+4f, -0x1.ab6902p+3f, 0x0p+0f, -0x1.12af12p+4f}, /* 363 */
+    {-0x1.2d6a04p+4f, 0x1.109ea2p+1f, -0x1.1ac1aep+4f, -0x1.2d6a04p+4f, 0x1.31facep+1f, -0x1.1ac1aep+4f, -0x1.716122p+3f, 0x1.31facep+1f, -0x1.1b5958p+4f}, /* 1217 */
+    {-0x1.2d6a04p+4f, 0x1.109ea2p+1f, -0x1.1ac1aep+4f, -0x1.716122p+3f, 0x1.31facep+1f, -0x1.1b5958p+4f, -0x1.716122p+3f, 0x1.109ea2p+1f, -0x1.1b5958p+4f}, /* 1218 */
+    {-0x1.2d6a04p+4f, 0x1.109ea2p+1f, -0x1.1ac1aep+4f, -0x1.716122p+3f, 0x1.109ea2p+1f, -0x1.1b5958p+4f, -0x1.7030ccp+3f, 0x1.109ea2p+1f, -0x1.4c78fcp+3f}, /* 1221 */
+    {-0x1.2d6a04p+4f, 0x1.31facep+1f, -0x1.1ac1aep+4f, -0x1.7030ccp+3f, 0x1.31facep+1f, -0x1.4c78fcp+3f, -0x1.716122p+3f, 0x1.31facep+1f, -0x1.1b5958p+4f}, /* 1224 */
+    {-0x1.c0f9fp+3f, 0x0p+0f, -0x1.1dafe4p+4f, -0x1.999268p+3f, 0x0p+0f, -0x1.238cf8p+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f}, /* 1231 */
+    {-0x1.c0f9fp+3f, 0x0p+0f, -0x1.1dafe4p+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f, -0x1.c0f9fp+3f, 0x1.d5f6b8p-4f, -0x1.1dafe4p+4f}, /* 1232 */
+    {-0x1.f22f92p+3f, 0x0p+0f, -0x1.705c98p+4f, -0x1.cac80ap+3f, 0x0p+0f, -0x1.7639aap+4f, -0x1.999268p+3f, 0x0p+0f, -0x1.238cf8p+4f}, /* 1233 */
+    {-0x1.f22f92p+3f, 0x0p+0f, -0x1.705c98p+4f, -0x1.999268p+3f, 0x0p+0f, -0x1.238cf8p+4f, -0x1.c0f9fp+3f, 0x0p+0f, -0x1.1dafe4p+4f}, /* 1234 */
+    {-0x1.f22f92p+3f, 0x1.d5f6b8p-4f, -0x1.705c98p+4f, -0x1.c0f9fp+3f, 0x1.d5f6b8p-4f, -0x1.1dafe4p+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f}, /* 1235 */
+    {-0x1.f22f92p+3f, 0x1.d5f6b8p-4f, -0x1.705c98p+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f, -0x1.cac80ap+3f, 0x1.d5f6b8p-4f, -0x1.7639aap+4f}, /* 1236 */
+    {-0x1.f22f92p+3f, 0x0p+0f, -0x1.705c98p+4f, -0x1.c0f9fp+3f, 0x0p+0f, -0x1.1dafe4p+4f, -0x1.c0f9fp+3f, 0x1.d5f6b8p-4f, -0x1.1dafe4p+4f}, /* 1237 */
+    {-0x1.f22f92p+3f, 0x0p+0f, -0x1.705c98p+4f, -0x1.c0f9fp+3f, 0x1.d5f6b8p-4f, -0x1.1dafe4p+4f, -0x1.f22f92p+3f, 0x1.d5f6b8p-4f, -0x1.705c98p+4f}, /* 1238 */
+    {-0x1.cac80ap+3f, 0x0p+0f, -0x1.7639aap+4f, -0x1.cac80ap+3f, 0x1.d5f6b8p-4f, -0x1.7639aap+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f}, /* 1239 */
+    {-0x1.cac80ap+3f, 0x0p+0f, -0x1.7639aap+4f, -0x1.999268p+3f, 0x1.d5f6b8p-4f, -0x1.238cf8p+4f, -0x1.999268p+3f, 0x0p+0f, -0x1.238cf8p+4f}, /* 1240 */
+    {-0x1.969f7ap+3f, 0x0p+0f, -0x1.23fd4ep+4f, -0x1.03f4c4p+3f, 0x1.d5f6b8p-4f, -0x1.39d06ep+4f, -0x1.969f7ap+3f, 0x1.d5f6b8p-4f, -0x1.23fd4ep+4f}, /* 1244 */
+    {-0x1.c7d51cp+3f, 0x0p+0f, -0x1.76aap+4f, -0x1.03f4c4p+3f, 0x0p+0f, -0x1.39d06ep+4f, -0x1.969f7ap+3f, 0x0p+0f, -0x1.23fd4ep+4f}, /* 1246 */
+    {-0x1.c7d51cp+3f, 0x1.d5f6b8p-4f, -0x1.76aap+4f, -0x1.969f7ap+3f, 0x1.d5f6b8p-4f, -0x1.23fd4ep+4f, -0x1.03f4c4p+3f, 0x1.d5f6b8p-4f, -0x1.39d06ep+4f}, /* 1247 */
+    {-0x1.c7d51cp+3f, 0x0p+0f, -0x1.76aap+4f, -0x1.969f7ap+3f, 0x0p+0f, -0x1.23fd4ep+4f, -0x1.969f7ap+3f, 0x1.d5f6b8p-4f, -0x1.23fd4ep+4f}, /* 1249 */
+    {-0x1.c7d51cp+3f, 0x0p+0f, -0x1.76aap+4f, -0x1.969f7ap+3f, 0x1.d5f6b8p-4f, -0x1.23fd4ep+4f, -0x1.c7d51cp+3f, 0x1.d5f6b8p-4f, -0x1.76aap+4f}, /* 1250 */
+};
+
+static void test_ball_on_slab_edge_push_blocked_snap0_stays_grounded(void)
+{
+    cb_world_reset();
+    geo_tris(s123_l362_tris, sizeof s123_l362_tris / sizeof s123_l362_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.c20e36p-1f, 0x1.635ac2p+1f, 0x0p+0f, 0x0p+0f,
+                                        0x1.29eafep+0f, 0x1.741928p+5f, 0x1.2e3dfap+5f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(-0x1.ca4fecp+3f, 0x1.802b46p+0f, -0x1.290f76p+4f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.79edfep-3f, -0x1.dd6bfep-7f, 0x1.7e7ffep-9f));
+    /* the replay's 32 frames: its first frame's input, then none */
+    static const float dts[32] = {
+        0x1.4f4b4p-5f, 0x1.909e5cp-7f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.2db5aap-3f, 0x1.4c0ddcp-3f, 0x1.d4f86ep-4f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.358542p-5f,
+        0x1.111112p-5f, 0x1.629d28p-3f, 0x1.111112p-5f, 0x1.111112p-5f,
+    };
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded_late = 0;
+    float worst = 0.0f;
+    fm_vec3_t at4 = start;
+    for (int f = 0; f < 32; f++) {
+        body.input_velocity = f == 0 ? cb_vec(-0x1.79af58p+2f, 0.0f, 0x1.6e443ap+0f) : cb_vec(0.0f, 0.0f, 0.0f);
+        CB_STEP(&body, dts[f]);
+        if (f == 3) at4 = pos;
+        if (!char_body_is_on_floor(&body)) continue;
+        if (f >= 4) grounded_late++;
+        if (foot_under_walkable(s123_l362_tris, sizeof s123_l362_tris / sizeof s123_l362_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    const float moved = sqrtf((pos.x - at4.x) * (pos.x - at4.x) + (pos.y - at4.y) * (pos.y - at4.y) +
+                              (pos.z - at4.z) * (pos.z - at4.z));
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("ball on a slab edge, push off blocked, snap 0 (s123 l362): frames 4-31 grounded",
+              (float)grounded_late, "");
+    cb_report("ball on a slab edge, push off blocked, snap 0 (s123 l362): foot over the room floor", foot.y, "m");
+    TEST_ASSERT_EQUAL_INT(28, grounded_late);
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    TEST_ASSERT_TRUE(moved < 0.01f);                      /* at rest on the edge */
+    TEST_ASSERT_TRUE(foot.y > 0.10f && foot.y < 0.1148f); /* held by the slab's edge, not on the floor */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5362,5 +5452,6 @@ int main(void)
     RUN_TEST(test_ball_on_soup_corner_over_steep_room_floor);
     RUN_TEST(test_snap_slid_off_soup_edge_not_past_snap_distance);
     RUN_TEST(test_teleported_into_soup_pocket_under_leaning_faces);
+    RUN_TEST(test_ball_on_slab_edge_push_blocked_snap0_stays_grounded);
     return UNITY_END();
 }

@@ -2205,8 +2205,13 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
              * for this up): the ball may rest on a walkable vertex there all the same. Under
              * an up 28.5 degrees off y the room floor was steep 0.245 m under the foot and
              * the ball sat on a soup face's corner (contact 21.9 degrees off up), its way off
-             * into another face: at rest, never grounded (soak s124 l182). */
-            if (!s.found && (!found || v3_dot(hit.normal, up) < b->cos_floor_max_angle))
+             * into another face: at rest, never grounded (soak s124 l182). Nor over a
+             * walkable floor out of reach when the body stood last step: held_on_edge (which
+             * grounded it, airborne) is not asked then, and the snap does not reach. With
+             * snap 0 a ball at rest on a slab's top edge (contact 5.4 degrees off up), its
+             * push off blocked by a block's lower edge at its top ball, the room floor 0.112
+             * m under the foot, stood one step and fell the next, for ever (soak s123 l362). */
+            if (!s.found && (!found || v3_dot(hit.normal, up) < b->cos_floor_max_angle || was_grounded))
                 held_on_edge_alone(c, *pos, was_grounded, &s);
         } else if (s.steep)
             wall_under_crack(c, *pos, reach, &hit, &s);
