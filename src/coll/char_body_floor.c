@@ -1936,9 +1936,9 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
 /* Standing steep on a face over the foot with no floor in reach under it: the walkable
  * edges the foot went down past this step, that hold the body's own ball at the foot above
  * it. The ball, its bottom at the foot, overlaps them; resting on one l across up from the
- * foot, its bottom is r - sqrt(r^2 - l^2) under that contact. Only walkable contacts no
- * higher than the foot was before the step (the rule never lifts the body over where it
- * was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
+ * foot, its bottom is r - sqrt(r^2 - l^2) under that contact (on a walkable face: where it
+ * clears the face's plane). Only walkable contacts no higher than the foot was before the
+ * step (a face's: its rest; the rule never lifts the body over where it was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
  * a crack's two edges) is *s, not steep: the foot is in the step zone, inside the steep
  * piece itself, and the ball meets that piece's edges 0.15-0.30 m deep (what the body
  * stands on, not what holds it up): the highest rest would lift it out of the piece.
