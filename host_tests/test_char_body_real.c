@@ -5376,6 +5376,134 @@ static void test_ball_on_slab_edge_push_blocked_snap0_stays_grounded(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
 }
 
+/* ---- a V valley's slot walked across under an overhang's edge ---- */
+
+/* Soak s127 l14 (generator 2): the 57 static triangles within 1.2 m of the replay's foot
+ * positions (floats of the checker's doubles; comments: the checker's triangle numbers), one
+ * instance per generator piece (ids as in the soak): the room (1, floor y 0), a V valley (2):
+ * two wedges whose slopes rise away from a 0.119 m slot between their low edges, 0.1255 m over
+ * the floor (88-89: the face 35.7 degrees off up; 98-99: the one 42.9 degrees off up), a slab
+ * 0.634-1.286 m high (13) and an overhang (17), its ledge 1.020-1.220 m high. r 0.347, height
+ * 3.967, step and snap 1.282, walkable to 48.1 degrees, 5 slides, owner = the capsule's centre. */
+static const float s127_l14_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+3f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 25 */
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x0p+0f}, /* 36 */
+    {-0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+3f}, /* 37 */
+    {-0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 39 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {-0x1.2680eap+4f, 0x1.00efdep-3f, 0x1.4c1e02p+1f, -0x1.5346f8p+4f, 0x1.00efdep-3f, 0x1.6188e6p+2f, -0x1.763538p+4f, 0x1.261086p+1f, 0x1.b81e1p+1f}, /* 88 */
+    {-0x1.2680eap+4f, 0x1.00efdep-3f, 0x1.4c1e02p+1f, -0x1.763538p+4f, 0x1.261086p+1f, 0x1.b81e1p+1f, -0x1.496f2ap+4f, 0x1.261086p+1f, 0x1.04a91ep-1f}, /* 89 */
+    {-0x1.2680eap+4f, 0x0p+0f, 0x1.4c1e02p+1f, -0x1.5346f8p+4f, 0x0p+0f, 0x1.6188e6p+2f, -0x1.5346f8p+4f, 0x1.00efdep-3f, 0x1.6188e6p+2f}, /* 90 */
+    {-0x1.2680eap+4f, 0x0p+0f, 0x1.4c1e02p+1f, -0x1.5346f8p+4f, 0x1.00efdep-3f, 0x1.6188e6p+2f, -0x1.2680eap+4f, 0x1.00efdep-3f, 0x1.4c1e02p+1f}, /* 91 */
+    {-0x1.496f2ap+4f, 0x0p+0f, 0x1.04a91ep-1f, -0x1.763538p+4f, 0x0p+0f, 0x1.b81e1p+1f, -0x1.763538p+4f, 0x1.261086p+1f, 0x1.b81e1p+1f}, /* 92 */
+    {-0x1.496f2ap+4f, 0x0p+0f, 0x1.04a91ep-1f, -0x1.763538p+4f, 0x1.261086p+1f, 0x1.b81e1p+1f, -0x1.496f2ap+4f, 0x1.261086p+1f, 0x1.04a91ep-1f}, /* 93 */
+    {-0x1.2680eap+4f, 0x0p+0f, 0x1.4c1e02p+1f, -0x1.2680eap+4f, 0x1.00efdep-3f, 0x1.4c1e02p+1f, -0x1.496f2ap+4f, 0x1.261086p+1f, 0x1.04a91ep-1f}, /* 94 */
+    {-0x1.2680eap+4f, 0x0p+0f, 0x1.4c1e02p+1f, -0x1.496f2ap+4f, 0x1.261086p+1f, 0x1.04a91ep-1f, -0x1.496f2ap+4f, 0x0p+0f, 0x1.04a91ep-1f}, /* 95 */
+    {-0x1.5346f8p+4f, 0x0p+0f, 0x1.6188e6p+2f, -0x1.763538p+4f, 0x1.261086p+1f, 0x1.b81e1p+1f, -0x1.5346f8p+4f, 0x1.00efdep-3f, 0x1.6188e6p+2f}, /* 97 */
+    {-0x1.25216p+4f, 0x1.00efdep-3f, 0x1.569c9cp+1f, -0x1.51e76ep+4f, 0x1.00efdep-3f, 0x1.66c834p+2f, -0x1.2ef92ep+4f, 0x1.772bcp+1f, 0x1.ec421p+2f}, /* 98 */
+    {-0x1.25216p+4f, 0x1.00efdep-3f, 0x1.569c9cp+1f, -0x1.2ef92ep+4f, 0x1.772bcp+1f, 0x1.ec421p+2f, -0x1.02332p+4f, 0x1.772bcp+1f, 0x1.30c82cp+2f}, /* 99 */
+    {-0x1.25216p+4f, 0x0p+0f, 0x1.569c9cp+1f, -0x1.51e76ep+4f, 0x0p+0f, 0x1.66c834p+2f, -0x1.51e76ep+4f, 0x1.00efdep-3f, 0x1.66c834p+2f}, /* 100 */
+    {-0x1.25216p+4f, 0x0p+0f, 0x1.569c9cp+1f, -0x1.51e76ep+4f, 0x1.00efdep-3f, 0x1.66c834p+2f, -0x1.25216p+4f, 0x1.00efdep-3f, 0x1.569c9cp+1f}, /* 101 */
+    {-0x1.02332p+4f, 0x0p+0f, 0x1.30c82cp+2f, -0x1.2ef92ep+4f, 0x0p+0f, 0x1.ec421p+2f, -0x1.2ef92ep+4f, 0x1.772bcp+1f, 0x1.ec421p+2f}, /* 102 */
+    {-0x1.02332p+4f, 0x0p+0f, 0x1.30c82cp+2f, -0x1.2ef92ep+4f, 0x1.772bcp+1f, 0x1.ec421p+2f, -0x1.02332p+4f, 0x1.772bcp+1f, 0x1.30c82cp+2f}, /* 103 */
+    {-0x1.25216p+4f, 0x0p+0f, 0x1.569c9cp+1f, -0x1.25216p+4f, 0x1.00efdep-3f, 0x1.569c9cp+1f, -0x1.02332p+4f, 0x1.772bcp+1f, 0x1.30c82cp+2f}, /* 104 */
+    {-0x1.25216p+4f, 0x0p+0f, 0x1.569c9cp+1f, -0x1.02332p+4f, 0x1.772bcp+1f, 0x1.30c82cp+2f, -0x1.02332p+4f, 0x0p+0f, 0x1.30c82cp+2f}, /* 105 */
+    {-0x1.51e76ep+4f, 0x0p+0f, 0x1.66c834p+2f, -0x1.2ef92ep+4f, 0x1.772bcp+1f, 0x1.ec421p+2f, -0x1.51e76ep+4f, 0x1.00efdep-3f, 0x1.66c834p+2f}, /* 107 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.136792p+4f, 0x1.49219ap+0f, 0x1.621756p+1f, -0x1.0da10ep+4f, 0x1.49219ap+0f, 0x1.da5824p+2f}, /* 665 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.0da10ep+4f, 0x1.49219ap+0f, 0x1.da5824p+2f, -0x1.0da10ep+4f, 0x1.449278p-1f, 0x1.da5824p+2f}, /* 666 */
+    {-0x1.29067ep+4f, 0x1.449278p-1f, 0x1.6f8818p+1f, -0x1.233ffap+4f, 0x1.449278p-1f, 0x1.e11084p+2f, -0x1.233ffap+4f, 0x1.49219ap+0f, 0x1.e11084p+2f}, /* 667 */
+    {-0x1.29067ep+4f, 0x1.449278p-1f, 0x1.6f8818p+1f, -0x1.233ffap+4f, 0x1.49219ap+0f, 0x1.e11084p+2f, -0x1.29067ep+4f, 0x1.49219ap+0f, 0x1.6f8818p+1f}, /* 668 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.0da10ep+4f, 0x1.449278p-1f, 0x1.da5824p+2f, -0x1.233ffap+4f, 0x1.449278p-1f, 0x1.e11084p+2f}, /* 669 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.233ffap+4f, 0x1.449278p-1f, 0x1.e11084p+2f, -0x1.29067ep+4f, 0x1.449278p-1f, 0x1.6f8818p+1f}, /* 670 */
+    {-0x1.136792p+4f, 0x1.49219ap+0f, 0x1.621756p+1f, -0x1.29067ep+4f, 0x1.49219ap+0f, 0x1.6f8818p+1f, -0x1.233ffap+4f, 0x1.49219ap+0f, 0x1.e11084p+2f}, /* 671 */
+    {-0x1.136792p+4f, 0x1.49219ap+0f, 0x1.621756p+1f, -0x1.233ffap+4f, 0x1.49219ap+0f, 0x1.e11084p+2f, -0x1.0da10ep+4f, 0x1.49219ap+0f, 0x1.da5824p+2f}, /* 672 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.29067ep+4f, 0x1.449278p-1f, 0x1.6f8818p+1f, -0x1.29067ep+4f, 0x1.49219ap+0f, 0x1.6f8818p+1f}, /* 673 */
+    {-0x1.136792p+4f, 0x1.449278p-1f, 0x1.621756p+1f, -0x1.29067ep+4f, 0x1.49219ap+0f, 0x1.6f8818p+1f, -0x1.136792p+4f, 0x1.49219ap+0f, 0x1.621756p+1f}, /* 674 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.0839b4p+4f, 0x1.385e9cp+0f, 0x1.faf162p+1f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f}, /* 714 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f, -0x1.0cf3fap+4f, 0x0p+0f, 0x1.00cb1p+2f}, /* 715 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.0cf3fap+4f, 0x0p+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x0p+0f, 0x1.ee936cp-3f}, /* 718 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.178d1ep+4f, 0x0p+0f, 0x1.ee936cp-3f, -0x1.12d2dap+4f, 0x0p+0f, 0x1.84477ap-3f}, /* 719 */
+    {-0x1.0839b4p+4f, 0x1.385e9cp+0f, 0x1.faf162p+1f, -0x1.12d2dap+4f, 0x1.385e9cp+0f, 0x1.84477ap-3f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f}, /* 720 */
+    {-0x1.0839b4p+4f, 0x1.385e9cp+0f, 0x1.faf162p+1f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f}, /* 721 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.12d2dap+4f, 0x0p+0f, 0x1.84477ap-3f, -0x1.12d2dap+4f, 0x1.385e9cp+0f, 0x1.84477ap-3f}, /* 722 */
+    {-0x1.0839b4p+4f, 0x0p+0f, 0x1.faf162p+1f, -0x1.12d2dap+4f, 0x1.385e9cp+0f, 0x1.84477ap-3f, -0x1.0839b4p+4f, 0x1.385e9cp+0f, 0x1.faf162p+1f}, /* 723 */
+    {-0x1.0cf3fap+4f, 0x0p+0f, 0x1.00cb1p+2f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f}, /* 724 */
+    {-0x1.0cf3fap+4f, 0x0p+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f, -0x1.178d1ep+4f, 0x0p+0f, 0x1.ee936cp-3f}, /* 725 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f, -0x1.29545ap+4f, 0x1.385e9cp+0f, 0x1.14bb3ep+2f}, /* 726 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.29545ap+4f, 0x1.385e9cp+0f, 0x1.14bb3ep+2f, -0x1.29545ap+4f, 0x1.052454p+0f, 0x1.14bb3ep+2f}, /* 727 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.29545ap+4f, 0x1.052454p+0f, 0x1.14bb3ep+2f, -0x1.33ed7ep+4f, 0x1.052454p+0f, 0x1.1b264p-1f}, /* 730 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.33ed7ep+4f, 0x1.052454p+0f, 0x1.1b264p-1f, -0x1.178d1ep+4f, 0x1.052454p+0f, 0x1.ee936cp-3f}, /* 731 */
+    {-0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f, -0x1.33ed7ep+4f, 0x1.385e9cp+0f, 0x1.1b264p-1f}, /* 732 */
+    {-0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f, -0x1.33ed7ep+4f, 0x1.385e9cp+0f, 0x1.1b264p-1f, -0x1.29545ap+4f, 0x1.385e9cp+0f, 0x1.14bb3ep+2f}, /* 733 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x1.052454p+0f, 0x1.ee936cp-3f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f}, /* 734 */
+    {-0x1.0cf3fap+4f, 0x1.052454p+0f, 0x1.00cb1p+2f, -0x1.178d1ep+4f, 0x1.385e9cp+0f, 0x1.ee936cp-3f, -0x1.0cf3fap+4f, 0x1.385e9cp+0f, 0x1.00cb1p+2f}, /* 735 */
+    {-0x1.29545ap+4f, 0x1.052454p+0f, 0x1.14bb3ep+2f, -0x1.29545ap+4f, 0x1.385e9cp+0f, 0x1.14bb3ep+2f, -0x1.33ed7ep+4f, 0x1.385e9cp+0f, 0x1.1b264p-1f}, /* 736 */
+    {-0x1.29545ap+4f, 0x1.052454p+0f, 0x1.14bb3ep+2f, -0x1.33ed7ep+4f, 0x1.385e9cp+0f, 0x1.1b264p-1f, -0x1.33ed7ep+4f, 0x1.052454p+0f, 0x1.1b264p-1f} /* 737 */
+};
+static const uint8_t s127_l14_piece_tris[] = {9, 18, 10, 20};
+static const uint16_t s127_l14_piece_ids[] = {1, 2, 13, 17};
+
+/* The body walks at 6.4 m/s (30 Hz, one step of 0.1 s) off the slab's top onto the overhang's
+ * ledge, off it down onto the 43-degree slope and, in the replay's last step, across the slot
+ * towards the 36-degree slope. The step zone's slide sank the foot 71 mm under the slot's edges;
+ * the crack rule's ball, dropped from the sweep capsule, met the ledge's top edge first, slid
+ * down its tangent onto the far slope and gave up there; the body's own ball at the foot then
+ * counted the slot's edges only (the slopes' faces it sinks into touch it higher than the foot
+ * was), and the foot stood on those edges, 52.5 mm under the ball resting on the 36-degree
+ * face (soak s127 l14 frame 3). It stands at least where the ball at the foot clears one of
+ * the two faces (the checker's least rest), at most where it clears both, grounded, and walks
+ * on up the slope it was walking to. */
+static void test_valley_slot_walked_across_under_overhang_edge(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s127_l14_piece_tris; p++) {
+        geo_tris(s127_l14_tris + first, s127_l14_piece_tris[p]);
+        first += s127_l14_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s127_l14_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s127_l14_tris / sizeof s127_l14_tris[0], first);
+    static const soak_shape_t shape = {0x1.639b52p-2f, 0x1.fbcce2p+1f, 0x1.481bfp+0f, 0x1.481bfp+0f,
+                                        0x1.adf206p-1f, 0x1.f39a72p+4f, 0x1.2de63p+4f, 5, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(-0x1.1ba9dep+4f, 0x1.a2774p+1f, 0x1.ac52a6p+1f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t v0 = cb_vec(-0x1.985dfep+2f, 0.0f, -0x1.174f66p-1f);
+    char_body_set_velocity(&body, v0);
+    body.input_velocity = v0;
+    static const float dts[4] = {0x1.111112p-5f, 0x1.a3d6ep-4f, 0x1.111112p-5f, 0x1.111112p-5f};
+    for (int f = 0; f < 4; f++) CB_STEP(&body, dts[f]);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float r = shape.radius;
+    const float ahead = s102_l395_face_rest(s127_l14_tris[9], foot, r); /* 88: walked to */
+    const float behind = s102_l395_face_rest(s127_l14_tris[18], foot, r); /* 98: walked down */
+    const float lo = f_min_t(ahead, behind), hi = ahead < behind ? behind : ahead;
+    cb_report("V valley's slot under an overhang's edge (s127 l14): grounded foot (slot edges 0.1255)", foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= lo - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= hi + 0.001f);
+    TEST_ASSERT_TRUE(pos.x < start.x - 1.0f);
+    /* on up the 36-degree slope: 10 more steps, grounded, a metre further */
+    const fm_vec3_t at = pos;
+    int grounded = 0;
+    for (int f = 0; f < 10; f++) {
+        CB_STEP(&body, 1.0f / 30.0f);
+        if (char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body)) grounded++;
+    }
+    cb_report("the same, then up the slope: x walked in 10 steps", (double)(at.x - pos.x), "m");
+    TEST_ASSERT_EQUAL_INT(10, grounded);
+    TEST_ASSERT_TRUE(pos.x < at.x - 1.0f);
+    TEST_ASSERT_TRUE(pos.y > at.y + 0.3f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5453,5 +5581,6 @@ int main(void)
     RUN_TEST(test_snap_slid_off_soup_edge_not_past_snap_distance);
     RUN_TEST(test_teleported_into_soup_pocket_under_leaning_faces);
     RUN_TEST(test_ball_on_slab_edge_push_blocked_snap0_stays_grounded);
+    RUN_TEST(test_valley_slot_walked_across_under_overhang_edge);
     return UNITY_END();
 }

@@ -1936,9 +1936,9 @@ static __attribute__((noinline)) void held_over(const cb_ctx_t *c, fm_vec3_t pos
 /* Standing steep on a face over the foot with no floor in reach under it: the walkable
  * edges the foot went down past this step, that hold the body's own ball at the foot above
  * it. The ball, its bottom at the foot, overlaps them; resting on one l across up from the
- * foot, its bottom is r - sqrt(r^2 - l^2) under that contact. Only walkable contacts no
- * higher than the foot was before the step (the rule never lifts the body over where it
- * was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
+ * foot, its bottom is r - sqrt(r^2 - l^2) under that contact (on a walkable face: where it
+ * clears the face's plane). Only walkable contacts no higher than the foot was before the
+ * step (a face's: its rest; the rule never lifts the body over where it was). The lowest rest at which those up to it hold the ball from all sides (dirs_around:
  * a crack's two edges) is *s, not steep: the foot is in the step zone, inside the steep
  * piece itself, and the ball meets that piece's edges 0.15-0.30 m deep (what the body
  * stands on, not what holds it up): the highest rest would lift it out of the piece.
@@ -1969,11 +1969,25 @@ static __attribute__((noinline)) void edges_over_foot(const cb_ctx_t *c, fm_vec3
         /* its side: where the contact is across up from the foot (an edge's normal leans
          * the other way; an edge 0.4 mm off the foot's column left the normal's lean at
          * rounding, where the point's own offset is still exact) */
-        if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) >= b->cos_floor_max_angle) || !(l2 < r * r) ||
-            !(h > 0.0f) || !(h <= level) || !(l2 > tol * tol)) /* (right under the foot: no side) */
+        const float nu = v3_finite(ct[i].normal) ? v3_dot(ct[i].normal, up) : 0.0f;
+        if (!(nu >= b->cos_floor_max_angle) || !(l2 < r * r) || !(h > 0.0f) ||
+            !(l2 > tol * tol)) /* (right under the foot: no side) */
             continue;
+        /* On a walkable face (not an edge or a corner) the ball rests where it clears the
+         * face's plane, raised depth / n.up; through the contact point alone it stays in the
+         * face. That rest, not the sunk ball's nearest point of the face (anywhere up the
+         * slope), is what may not be over where the foot was. Walking at 6.4 m/s (r 0.35)
+         * down a V valley's 43-degree slope across its 0.12 m slot, the step zone's slide
+         * sank the foot 71 mm under the slot's edges; the faces' nearest points lay over
+         * the foot's old level, the slot's edges alone were counted, and the foot stood on
+         * them, 52.5 mm under the ball resting on the 36-degree face ahead (soak s127 l14). */
+        const coll_sweep_hit_t on = {ct[i].point, ct[i].normal, 0.0f, ct[i].depth, ct[i].id, ct[i].type,
+                                     ct[i].triangle, ct[i].instance, ct[i].body};
+        fm_vec3_t fn;
+        const bool face = coll_cb_face_normal(&on, &fn);
+        const float hr = face ? ct[i].depth / nu : h - (r - sqrtf(r * r - l2));
+        if (!((face ? hr : h) <= level)) continue;
         /* sorted by rest, lowest first */
-        const float hr = h - (r - sqrtf(r * r - l2));
         uint32_t k = m++;
         for (; k > 0 && rest[k - 1] > hr; k--) {
             rest[k] = rest[k - 1];
