@@ -1140,9 +1140,9 @@ again:;
             if (out->found && far_out) *far_out = out->point;
             return out->found;
         }
-        /* Over a floor, the slide past a steep first contact (a taller piece's edge in the
-         * step zone beside the foot, above) ended on a walkable contact outside the foot's
-         * gap, and the rule gave up from there: the slid ball says nothing about the foot.
+        /* Over a floor, the slide past a steep first contact (a taller piece's top edge
+         * beside the foot, above) ended on a walkable contact outside the foot's gap, and
+         * the rule gave up from there: the slid ball says nothing about the foot.
          * The body's own ball at the foot decides (rest_at_foot, around), at the level of the
          * contact the slide ended on: at the steep contact's level that taller edge, 0.52 m
          * across up, would count as a point the ball rests on (a lift of 0.34 m). Running at
