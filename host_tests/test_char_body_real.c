@@ -5504,6 +5504,143 @@ static void test_valley_slot_walked_across_under_overhang_edge(void)
     TEST_ASSERT_TRUE(pos.y > at.y + 0.3f);
 }
 
+/* ---- a crack between two tiles beside a V valley's block (its top edge in the step zone) ---- */
+
+/* Soak s128 l322 (generator 2): the 63 static triangles whose bounding spheres come within
+ * 2.5 m of the failing foot, exact (floats of the checker's doubles; comments: its triangle
+ * numbers), one instance per generator piece with the soak's ids: the room 1 (floor y 0), a
+ * slab crack 6 (two slabs 0.32 and 0.31 m high, 2.8 m off), two tiles 11 (0.14023 m high,
+ * 4.7 m squares turned 45 degrees about y, a 0.141 m crack between them along (0.71, 0,
+ * 0.70)), an overhang's ramp 12 and a V valley 15 (two blocks whose 19.6-degree slopes rise
+ * from 0.2477 m away from a 0.133 m slot; the west block stands through the west tile, its
+ * side face 0.51 m from the foot, its top edge there 0.66 m high). r 0.93, height 3.14, step
+ * 0.50, snap 0.99, walkable to 22.6 degrees, 7 slides, the owner point the foot. */
+static const float s128_l322_tris[][9] = {
+    {-0x1p+3f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+4f}, /* 16 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, -0x1p+3f}, /* 17 */
+    {0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+3f, 0x1p+3f, 0x0p+0f, -0x1p+3f}, /* 19 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+3f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, -0x1p+3f}, /* 28 */
+    {-0x1p+3f, 0x0p+0f, -0x1p+3f, -0x1p+3f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f}, /* 29 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {-0x1.cb6886p-4f, 0x0p+0f, -0x1.496014p+2f, -0x1.cb6886p-4f, 0x1.4ac622p-2f, -0x1.496014p+2f, -0x1.5f241p-3f, 0x1.4ac622p-2f, -0x1.32a802p+3f}, /* 126 */
+    {-0x1.cb6886p-4f, 0x0p+0f, -0x1.496014p+2f, -0x1.5f241p-3f, 0x1.4ac622p-2f, -0x1.32a802p+3f, -0x1.5f241p-3f, 0x0p+0f, -0x1.32a802p+3f}, /* 127 */
+    {-0x1.cb6886p-4f, 0x0p+0f, -0x1.496014p+2f, -0x1.5f241p-3f, 0x0p+0f, -0x1.32a802p+3f, 0x1.e55b26p+1f, 0x0p+0f, -0x1.3459f2p+3f}, /* 130 */
+    {-0x1.cb6886p-4f, 0x1.4ac622p-2f, -0x1.496014p+2f, 0x1.e55b26p+1f, 0x1.4ac622p-2f, -0x1.3459f2p+3f, -0x1.5f241p-3f, 0x1.4ac622p-2f, -0x1.32a802p+3f}, /* 133 */
+    {-0x1.5f241p-3f, 0x0p+0f, -0x1.32a802p+3f, -0x1.5f241p-3f, 0x1.4ac622p-2f, -0x1.32a802p+3f, 0x1.e55b26p+1f, 0x1.4ac622p-2f, -0x1.3459f2p+3f}, /* 136 */
+    {-0x1.5faafcp-3f, 0x0p+0f, -0x1.3345bep+3f, -0x1.5faafcp-3f, 0x1.39b87ap-2f, -0x1.3345bep+3f, -0x1.c0185ap-3f, 0x1.39b87ap-2f, -0x1.a400cap+3f}, /* 138 */
+    {-0x1.5faafcp-3f, 0x0p+0f, -0x1.3345bep+3f, -0x1.c0185ap-3f, 0x1.39b87ap-2f, -0x1.a400cap+3f, -0x1.c0185ap-3f, 0x0p+0f, -0x1.a400cap+3f}, /* 139 */
+    {-0x1.5faafcp-3f, 0x0p+0f, -0x1.3345bep+3f, -0x1.c0185ap-3f, 0x0p+0f, -0x1.a400cap+3f, 0x1.df4be2p+1f, 0x0p+0f, -0x1.a5b2bap+3f}, /* 142 */
+    {-0x1.5faafcp-3f, 0x1.39b87ap-2f, -0x1.3345bep+3f, 0x1.df4be2p+1f, 0x1.39b87ap-2f, -0x1.a5b2bap+3f, -0x1.c0185ap-3f, 0x1.39b87ap-2f, -0x1.a400cap+3f}, /* 145 */
+    {-0x1.5faafcp-3f, 0x0p+0f, -0x1.3345bep+3f, 0x1.e552b6p+1f, 0x1.39b87ap-2f, -0x1.34f7aep+3f, -0x1.5faafcp-3f, 0x1.39b87ap-2f, -0x1.3345bep+3f}, /* 147 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, 0x1.ad76fep+1f, 0x1.1f3084p-3f, -0x1.319274p+3f, 0x1.b55384p-3f, 0x1.1f3084p-3f, -0x1.985bccp+2f}, /* 211 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, 0x1.b55384p-3f, 0x1.1f3084p-3f, -0x1.985bccp+2f, 0x1.b55384p-3f, 0x0p+0f, -0x1.985bccp+2f}, /* 212 */
+    {0x1.41e6a4p-6f, 0x0p+0f, -0x1.9b678ap+3f, -0x1.8f9df8p+1f, 0x0p+0f, -0x1.3602fap+3f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f}, /* 213 */
+    {0x1.41e6a4p-6f, 0x0p+0f, -0x1.9b678ap+3f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f, 0x1.41e6a4p-6f, 0x1.1f3084p-3f, -0x1.9b678ap+3f}, /* 214 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, 0x1.b55384p-3f, 0x0p+0f, -0x1.985bccp+2f, -0x1.8f9df8p+1f, 0x0p+0f, -0x1.3602fap+3f}, /* 215 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, -0x1.8f9df8p+1f, 0x0p+0f, -0x1.3602fap+3f, 0x1.41e6a4p-6f, 0x0p+0f, -0x1.9b678ap+3f}, /* 216 */
+    {0x1.ad76fep+1f, 0x1.1f3084p-3f, -0x1.319274p+3f, 0x1.41e6a4p-6f, 0x1.1f3084p-3f, -0x1.9b678ap+3f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f}, /* 217 */
+    {0x1.ad76fep+1f, 0x1.1f3084p-3f, -0x1.319274p+3f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f, 0x1.b55384p-3f, 0x1.1f3084p-3f, -0x1.985bccp+2f}, /* 218 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, 0x1.41e6a4p-6f, 0x0p+0f, -0x1.9b678ap+3f, 0x1.41e6a4p-6f, 0x1.1f3084p-3f, -0x1.9b678ap+3f}, /* 219 */
+    {0x1.ad76fep+1f, 0x0p+0f, -0x1.319274p+3f, 0x1.41e6a4p-6f, 0x1.1f3084p-3f, -0x1.9b678ap+3f, 0x1.ad76fep+1f, 0x1.1f3084p-3f, -0x1.319274p+3f}, /* 220 */
+    {0x1.b55384p-3f, 0x0p+0f, -0x1.985bccp+2f, 0x1.b55384p-3f, 0x1.1f3084p-3f, -0x1.985bccp+2f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f}, /* 221 */
+    {0x1.b55384p-3f, 0x0p+0f, -0x1.985bccp+2f, -0x1.8f9df8p+1f, 0x1.1f3084p-3f, -0x1.3602fap+3f, -0x1.8f9df8p+1f, 0x0p+0f, -0x1.3602fap+3f}, /* 222 */
+    {0x1.d32bbep-4f, 0x0p+0f, -0x1.91efeep+2f, 0x1.d32bbep-4f, 0x1.1f3084p-3f, -0x1.91efeep+2f, -0x1.3246eap+1f, 0x1.1f3084p-3f, -0x1.e04108p+1f}, /* 223 */
+    {-0x1.9c59d2p+1f, 0x0p+0f, -0x1.32cd0cp+3f, -0x1.6e9d0ep+2f, 0x0p+0f, -0x1.c3caaep+2f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f}, /* 225 */
+    {-0x1.9c59d2p+1f, 0x0p+0f, -0x1.32cd0cp+3f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f, -0x1.9c59d2p+1f, 0x1.1f3084p-3f, -0x1.32cd0cp+3f}, /* 226 */
+    {0x1.d32bbep-4f, 0x0p+0f, -0x1.91efeep+2f, -0x1.3246eap+1f, 0x0p+0f, -0x1.e04108p+1f, -0x1.6e9d0ep+2f, 0x0p+0f, -0x1.c3caaep+2f}, /* 227 */
+    {0x1.d32bbep-4f, 0x0p+0f, -0x1.91efeep+2f, -0x1.6e9d0ep+2f, 0x0p+0f, -0x1.c3caaep+2f, -0x1.9c59d2p+1f, 0x0p+0f, -0x1.32cd0cp+3f}, /* 228 */
+    {0x1.d32bbep-4f, 0x1.1f3084p-3f, -0x1.91efeep+2f, -0x1.9c59d2p+1f, 0x1.1f3084p-3f, -0x1.32cd0cp+3f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f}, /* 229 */
+    {0x1.d32bbep-4f, 0x1.1f3084p-3f, -0x1.91efeep+2f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f, -0x1.3246eap+1f, 0x1.1f3084p-3f, -0x1.e04108p+1f}, /* 230 */
+    {0x1.d32bbep-4f, 0x0p+0f, -0x1.91efeep+2f, -0x1.9c59d2p+1f, 0x0p+0f, -0x1.32cd0cp+3f, -0x1.9c59d2p+1f, 0x1.1f3084p-3f, -0x1.32cd0cp+3f}, /* 231 */
+    {0x1.d32bbep-4f, 0x0p+0f, -0x1.91efeep+2f, -0x1.9c59d2p+1f, 0x1.1f3084p-3f, -0x1.32cd0cp+3f, 0x1.d32bbep-4f, 0x1.1f3084p-3f, -0x1.91efeep+2f}, /* 232 */
+    {-0x1.3246eap+1f, 0x0p+0f, -0x1.e04108p+1f, -0x1.3246eap+1f, 0x1.1f3084p-3f, -0x1.e04108p+1f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f}, /* 233 */
+    {-0x1.3246eap+1f, 0x0p+0f, -0x1.e04108p+1f, -0x1.6e9d0ep+2f, 0x1.1f3084p-3f, -0x1.c3caaep+2f, -0x1.6e9d0ep+2f, 0x0p+0f, -0x1.c3caaep+2f}, /* 234 */
+    {-0x1.9edb46p+0f, 0x0p+0f, -0x1.add15p+0f, -0x1.174744p-2f, 0x0p+0f, -0x1.7373e8p+2f, -0x1.7add06p+0f, 0x1.446ec6p-1f, -0x1.8cb276p+2f}, /* 235 */
+    {-0x1.e077fcp+0f, 0x1.fb3ac2p-3f, -0x1.282876p+3f, -0x1.45eee6p+0f, 0x1.fb3ac2p-3f, -0x1.ca6d9cp+2f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f}, /* 253 */
+    {-0x1.e077fcp+0f, 0x1.fb3ac2p-3f, -0x1.282876p+3f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f, -0x1.5f6afap+2f, 0x1.960cdap+0f, -0x1.06c964p+3f}, /* 254 */
+    {-0x1.e077fcp+0f, 0x0p+0f, -0x1.282876p+3f, -0x1.45eee6p+0f, 0x0p+0f, -0x1.ca6d9cp+2f, -0x1.45eee6p+0f, 0x1.fb3ac2p-3f, -0x1.ca6d9cp+2f}, /* 255 */
+    {-0x1.e077fcp+0f, 0x0p+0f, -0x1.282876p+3f, -0x1.45eee6p+0f, 0x1.fb3ac2p-3f, -0x1.ca6d9cp+2f, -0x1.e077fcp+0f, 0x1.fb3ac2p-3f, -0x1.282876p+3f}, /* 256 */
+    {-0x1.5f6afap+2f, 0x0p+0f, -0x1.06c964p+3f, -0x1.38c8b4p+2f, 0x0p+0f, -0x1.87af7cp+2f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f}, /* 257 */
+    {-0x1.5f6afap+2f, 0x0p+0f, -0x1.06c964p+3f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f, -0x1.5f6afap+2f, 0x1.960cdap+0f, -0x1.06c964p+3f}, /* 258 */
+    {-0x1.e077fcp+0f, 0x0p+0f, -0x1.282876p+3f, -0x1.e077fcp+0f, 0x1.fb3ac2p-3f, -0x1.282876p+3f, -0x1.5f6afap+2f, 0x1.960cdap+0f, -0x1.06c964p+3f}, /* 259 */
+    {-0x1.e077fcp+0f, 0x0p+0f, -0x1.282876p+3f, -0x1.5f6afap+2f, 0x1.960cdap+0f, -0x1.06c964p+3f, -0x1.5f6afap+2f, 0x0p+0f, -0x1.06c964p+3f}, /* 260 */
+    {-0x1.45eee6p+0f, 0x0p+0f, -0x1.ca6d9cp+2f, -0x1.38c8b4p+2f, 0x0p+0f, -0x1.87af7cp+2f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f}, /* 261 */
+    {-0x1.45eee6p+0f, 0x0p+0f, -0x1.ca6d9cp+2f, -0x1.38c8b4p+2f, 0x1.960cdap+0f, -0x1.87af7cp+2f, -0x1.45eee6p+0f, 0x1.fb3ac2p-3f, -0x1.ca6d9cp+2f}, /* 262 */
+    {-0x1.bfd63ap+0f, 0x1.fb3ac2p-3f, -0x1.2955c6p+3f, -0x1.254d24p+0f, 0x1.fb3ac2p-3f, -0x1.ccc83cp+2f, 0x1.3bf362p+1f, 0x1.40a26p+0f, -0x1.07c33p+3f}, /* 263 */
+    {-0x1.bfd63ap+0f, 0x1.fb3ac2p-3f, -0x1.2955c6p+3f, 0x1.3bf362p+1f, 0x1.40a26p+0f, -0x1.07c33p+3f, 0x1.dd5dbp+0f, 0x1.40a26p+0f, -0x1.4ab4d6p+3f}, /* 264 */
+    {-0x1.bfd63ap+0f, 0x0p+0f, -0x1.2955c6p+3f, -0x1.254d24p+0f, 0x0p+0f, -0x1.ccc83cp+2f, -0x1.254d24p+0f, 0x1.fb3ac2p-3f, -0x1.ccc83cp+2f}, /* 265 */
+    {-0x1.bfd63ap+0f, 0x0p+0f, -0x1.2955c6p+3f, -0x1.254d24p+0f, 0x1.fb3ac2p-3f, -0x1.ccc83cp+2f, -0x1.bfd63ap+0f, 0x1.fb3ac2p-3f, -0x1.2955c6p+3f}, /* 266 */
+    {-0x1.bfd63ap+0f, 0x0p+0f, -0x1.2955c6p+3f, -0x1.bfd63ap+0f, 0x1.fb3ac2p-3f, -0x1.2955c6p+3f, 0x1.dd5dbp+0f, 0x1.40a26p+0f, -0x1.4ab4d6p+3f}, /* 269 */
+    {-0x1.bfd63ap+0f, 0x0p+0f, -0x1.2955c6p+3f, 0x1.dd5dbp+0f, 0x1.40a26p+0f, -0x1.4ab4d6p+3f, 0x1.dd5dbp+0f, 0x0p+0f, -0x1.4ab4d6p+3f}, /* 270 */
+    {-0x1.254d24p+0f, 0x0p+0f, -0x1.ccc83cp+2f, 0x1.3bf362p+1f, 0x0p+0f, -0x1.07c33p+3f, 0x1.3bf362p+1f, 0x1.40a26p+0f, -0x1.07c33p+3f}, /* 271 */
+    {-0x1.254d24p+0f, 0x0p+0f, -0x1.ccc83cp+2f, 0x1.3bf362p+1f, 0x1.40a26p+0f, -0x1.07c33p+3f, -0x1.254d24p+0f, 0x1.fb3ac2p-3f, -0x1.ccc83cp+2f} /* 272 */
+};
+static const uint8_t s128_l322_piece_tris[] = {11, 10, 23, 1, 18};
+static const uint16_t s128_l322_piece_ids[] = {1, 6, 11, 12, 15};
+
+/* The body runs at 28 m/s (60 Hz) off the east tile across the crack towards the west one.
+ * In the replay's second step the foot went into the crack (59 mm from the east tile's edge,
+ * 83 mm from the west one's, 0.25 m from the crack's end); the crack rule's ball, dropped from
+ * the sweep capsule, met the V valley block's top edge first (38 degrees off up: steep), slid
+ * down its tangent 0.46 m across up onto the east tile's outer edge, and the move off that
+ * edge dropped onto the room floor: the rule gave up and the foot stood on the room floor in
+ * the crack, 137 mm under the ball resting on both tiles' edges (soak s128 l322 frame 1). The
+ * body's own ball at the foot rests on those edges: it stands there (between the checker's
+ * least rest and the tiles' tops), grounded, and then walks back across the crack onto the
+ * east tile as asked. */
+static void test_tile_crack_beside_valley_block_edge(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s128_l322_piece_tris; p++) {
+        geo_tris(s128_l322_tris + first, s128_l322_piece_tris[p]);
+        first += s128_l322_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s128_l322_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s128_l322_tris / sizeof s128_l322_tris[0], first);
+    static const soak_shape_t shape = {0x1.dbce92p-1f, 0x1.921baap+1f, 0x1.0205p-1f, 0x1.f9f52ep-1f,
+                                        0x1.9321acp-2f, 0x1.ad0708p+4f, 0x1.857bcp+5f, 7, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(-0x1.321886p+1f, 0x1.1f3082p-3f, -0x1.466952p+3f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t in = cb_vec(-0x1.1c676cp+4f, 0.0f, 0x1.5f633ep+4f);
+    char_body_set_velocity(&body, in);
+    body.input_velocity = in;
+    const float dt = 0x1.111112p-6f, r = shape.radius;
+    for (int f = 0; f < 2; f++) CB_STEP(&body, dt);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float top = s128_l322_tris[28][1]; /* 218 and 229: the tiles' tops, 0.14023 */
+    const float least = f_min_t(s113_l98_edge_rest(s128_l322_tris[28], 1, 2, foot, r),
+                                s113_l98_edge_rest(s128_l322_tris[38], 0, 1, foot, r));
+    cb_report("tile crack beside a V valley block's edge (s128 l322): grounded foot", foot.y, "m");
+    cb_report("tile crack beside a V valley block's edge (s128 l322): the checker's least rest", least, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= least - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= top + 0.001f);
+    /* back across the crack onto the east tile at 3 m/s (20 steps: 1 m; the tile reaches 3 m
+     * that way) */
+    const fm_vec3_t back = cb_vec(0x1.1c676cp+4f * (3.0f / 28.26f), 0.0f, -0x1.5f633ep+4f * (3.0f / 28.26f));
+    const float speed = sqrtf(back.x * back.x + back.z * back.z);
+    body.input_velocity = back;
+    const fm_vec3_t from = pos;
+    for (int f = 0; f < 20; f++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(char_body_foot_pos(&body).y >= least - 0.001f); /* never down into the crack */
+    }
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, top, char_body_foot_pos(&body).y);
+    const float went = ((pos.x - from.x) * back.x + (pos.z - from.z) * back.z) / speed;
+    TEST_ASSERT_TRUE(went >= 0.9f * speed * 20.0f * dt);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5582,5 +5719,6 @@ int main(void)
     RUN_TEST(test_teleported_into_soup_pocket_under_leaning_faces);
     RUN_TEST(test_ball_on_slab_edge_push_blocked_snap0_stays_grounded);
     RUN_TEST(test_valley_slot_walked_across_under_overhang_edge);
+    RUN_TEST(test_tile_crack_beside_valley_block_edge);
     return UNITY_END();
 }

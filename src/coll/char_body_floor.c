@@ -639,11 +639,13 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
      * CB_MARGIN across it) */
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
                                       d1 * n1u <= cb_len_tol(c, CB_MARGIN) && steep_face(c, &h1));
+    bool slid_past_steep = false; /* the loop slid the ball past a steep first contact (below) */
     for (int k = 0; k < (over_floor ? 2 : 1) && slide && n1u < b->cos_floor_max_angle; k++) {
         const coll_sweep_hit_t h0 = h1;
         const float d0 = d1, n0u = n1u;
         const fm_vec3_t b0_0 = b0;
         if (!drop_past_side(c, &b0, len, &h1, &d1)) break;
+        slid_past_steep = true;
         n1u = v3_dot(h1.normal, up);
         /* Over a floor, the second slide, off a steep edge (not a face) the first slide down
          * a wall met, went straight back into a wall's face, no lower: the slid ball sits in
@@ -745,6 +747,9 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
             }
         }
     }
+    /* the walkable contact that slide ended on, for the look at the give-up (below) */
+    const bool slid_onto = over_floor && slid_past_steep && n1u >= b->cos_floor_max_angle;
+    const coll_sweep_hit_t landed = h1;
     int past = 0; /* drops past a first contact beside the sweep capsule (below) */
     bool rolled_off = false; /* dropped on past the first contact its roll fell off (below) */
     bool slid_far = false; /* that drop went out of the foot's column (below) */
@@ -1134,6 +1139,30 @@ again:;
             edges_over_foot(c, pos, true, out);
             if (out->found && far_out) *far_out = out->point;
             return out->found;
+        }
+        /* Over a floor, the slide past a steep first contact (a taller piece's top edge
+         * beside the foot, above) ended on a walkable contact outside the foot's gap, and
+         * the rule gave up from there: the slid ball says nothing about the foot. The body's
+         * own ball at the foot decides (rest_at_foot, around), at the level of the contact
+         * the slide ended on: at the steep contact's level that taller edge, 0.52 m across
+         * up, would count as a point the ball rests on (a lift of 0.34 m). Running at 28 m/s
+         * (r 0.93, step 0.50) across a 0.14 m crack between two tiles 0.14 m high, a V
+         * valley's block 0.51 m beside the foot: the drop met the block's top edge (38
+         * degrees off up), the slide down its tangent went 0.46 m across up onto the near
+         * tile's outer edge, the move off that edge dropped onto the room floor, the rule
+         * gave up and the foot stood on the floor in the crack, 137 mm under the ball resting
+         * on both tiles' edges (soak s128 l322). Only a contact no higher than the foot was
+         * before the step (as edges_over_foot: the rule does not lift the body over where it
+         * was): walking across a staircase's tread under a tilted up, 49 mm before the next
+         * riser, the slide ended on that riser's nosing 0.26 m up, and the nosing, the
+         * block's corner and, under the tilted up, the tread's own face surrounded the ball:
+         * the body was lifted onto the next tread early (soak s128 l44, in this branch's
+         * soak). */
+        if (slid_onto && v3_dot(v3_sub(landed.point, foot), up) <=
+                             v3_dot(v3_sub(owner_position(b), pos), up) + cb_len_tol(c, CB_STEP_EPS)) {
+            float rest = 0.0f;
+            if (surrounded_at_foot(c, foot, floor_gap, &landed, &rest))
+                return held_at(rest, reach, -rest, up, landed.point, &landed, out, far_out);
         }
         return false;
     }
