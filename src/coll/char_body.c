@@ -394,6 +394,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     mem.ray_valid = false;
     mem.pairs.g = NULL;
     mem.crack_no_floor = false;
+    mem.pushed = false;
     c.mem = &mem;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */
@@ -438,15 +439,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     else body->flags &= (uint8_t)~CB_FLAG_CARRIED;
 
     /* 2. recover */
-    const fm_vec3_t unrecovered = pos;
     coll_cb_recover(&c, &pos, &body->velocity);
-    /* Its push across up, beyond the skin (no slide's own overshoot), is motion the body
-     * made: reported below. A body the game teleported 0.64 m into a thin slab, walkable under
-     * its tilted up, beside a room wall leaning over it: each step's push out of the slab went
-     * into the wall and back out, 67 mm along the crease, at 8 m/s with velocity 0 (soak s134
-     * l270). Along up it stays a correction: a push-out never launches the body. */
-    const fm_vec3_t pushed = v3_reject(v3_sub(pos, unrecovered), up);
-    const bool push_moved = v3_len(pushed) > c.skin;
 
     /* 3. velocity: input across up, the along-up part from the resolved velocity */
     fm_vec3_t in_h = v3_reject(input, up);
@@ -588,7 +581,15 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
         }
     }
 
-    if (push_moved) body->velocity = v3_madd(body->velocity, pushed, 1.0f / dt); /* the recover's push (above) */
+    /* The recover's push across up, beyond the skin (no slide's own overshoot), is motion the
+     * body made. A body the game teleported 0.64 m into a thin slab, walkable under its tilted
+     * up, beside a room wall leaning over it: each step's push out of the slab went into the
+     * wall and back out, 67 mm along the crease, at 8 m/s with velocity 0 (soak s134 l270).
+     * Along up it stays a correction: a push-out never launches the body. */
+    if (mem.pushed) {
+        const fm_vec3_t pushed = v3_reject(mem.push, up);
+        if (v3_len2(pushed) > c.skin * c.skin) body->velocity = v3_madd(body->velocity, pushed, 1.0f / dt);
+    }
 
     /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as
      * settings.leave_velocity says; on a floor, ground_velocity is its velocity. */
