@@ -5641,6 +5641,80 @@ static void test_tile_crack_beside_valley_block_edge(void)
     TEST_ASSERT_TRUE(went >= 0.9f * speed * 20.0f * dt);
 }
 
+/* Soak s134 l270 (generator 2), the pieces within 2.5 m of the spot that the body touches
+ * (the checker's triangle numbers): the room's floor and its wall z = -24, and a thin slab
+ * standing on the floor (390-399: 30 mm thick, 3.05 m high, its faces 20 degrees off the
+ * wall, its end 1.06 m from it). r 0.974, height 1.975, step 0.0071, snap 0.094, walkable to
+ * 64.2 degrees, 3 slides, the owner point the capsule's centre, up tilted (0.684 -0.103
+ * -0.722): the slab's face towards the wall is a floor 63.6 degrees off up, the wall leans
+ * over the body (136 degrees). The game teleported the body 0.64 m into the slab; the
+ * recover's push out of the slab went into the wall and back out, and the body left along
+ * the crease, 67 mm a step at first, with velocity 0. */
+static const float s134_l270_tris[][9] = {
+    {0x0p+0f, 0x0p+0f, -0x1.8p+4f, 0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+3f, 0x0p+0f, -0x1.8p+4f}, /* 6 closed 0 */
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1.8p+4f}, /* 8 closed 0 */
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 9 closed 0 */
+    {0x1p+4f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f}, /* 11 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 closed 0 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d96f7cp+3f, 0x1.85d2fap+1f, -0x1.6e8836p+4f, 0x1.d3fdf2p+2f, 0x1.85d2fap+1f, -0x1.430b82p+4f}, /* 390 closed 1 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d3fdf2p+2f, 0x1.85d2fap+1f, -0x1.430b82p+4f, 0x1.d3fdf2p+2f, 0x0p+0f, -0x1.430b82p+4f}, /* 391 closed 1 */
+    {0x1.d91c4ap+3f, 0x0p+0f, -0x1.6efabap+4f, 0x1.d3579p+2f, 0x0p+0f, -0x1.437e06p+4f, 0x1.d3579p+2f, 0x1.85d2fap+1f, -0x1.437e06p+4f}, /* 392 closed 1 */
+    {0x1.d91c4ap+3f, 0x0p+0f, -0x1.6efabap+4f, 0x1.d3579p+2f, 0x1.85d2fap+1f, -0x1.437e06p+4f, 0x1.d91c4ap+3f, 0x1.85d2fap+1f, -0x1.6efabap+4f}, /* 393 closed 1 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d3fdf2p+2f, 0x0p+0f, -0x1.430b82p+4f, 0x1.d3579p+2f, 0x0p+0f, -0x1.437e06p+4f}, /* 394 closed 1 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d3579p+2f, 0x0p+0f, -0x1.437e06p+4f, 0x1.d91c4ap+3f, 0x0p+0f, -0x1.6efabap+4f}, /* 395 closed 1 */
+    {0x1.d96f7cp+3f, 0x1.85d2fap+1f, -0x1.6e8836p+4f, 0x1.d91c4ap+3f, 0x1.85d2fap+1f, -0x1.6efabap+4f, 0x1.d3579p+2f, 0x1.85d2fap+1f, -0x1.437e06p+4f}, /* 396 closed 1 */
+    {0x1.d96f7cp+3f, 0x1.85d2fap+1f, -0x1.6e8836p+4f, 0x1.d3579p+2f, 0x1.85d2fap+1f, -0x1.437e06p+4f, 0x1.d3fdf2p+2f, 0x1.85d2fap+1f, -0x1.430b82p+4f}, /* 397 closed 1 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d91c4ap+3f, 0x0p+0f, -0x1.6efabap+4f, 0x1.d91c4ap+3f, 0x1.85d2fap+1f, -0x1.6efabap+4f}, /* 398 closed 1 */
+    {0x1.d96f7cp+3f, 0x0p+0f, -0x1.6e8836p+4f, 0x1.d91c4ap+3f, 0x1.85d2fap+1f, -0x1.6efabap+4f, 0x1.d96f7cp+3f, 0x1.85d2fap+1f, -0x1.6e8836p+4f}, /* 399 closed 1 */
+};
+
+static void test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_out(void)
+{
+    cb_world_reset();
+    geo_tris(s134_l270_tris, sizeof s134_l270_tris / sizeof s134_l270_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.f2cfaep-1f, 0x1.f98f7cp+0f, 0x1.d17ec2p-8f, 0x1.7f3d5ap-4f,
+                                        0x1.1eb4dap+0f, 0x1.226b14p+4f, 0x1.69f80ap+4f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.up = cb_vec(0x1.5e25f6p-1f, -0x1.a7a6bp-4f, -0x1.71c72cp-1f);
+    s.follow_floor = false;
+    const fm_vec3_t up = s.up, start = cb_vec(0x1.9dc632p+3f, 0x1.166158p+0f, -0x1.69f824p+4f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    body.input_velocity = cb_vec(-0x1.78d44ap-1f, 0.0f, -0x1.627a5cp+2f);
+    const float dt = 0x1.111112p-7f;
+    CB_STEP(&body, dt); /* the teleport's step: the game's overlap, pushed out as far as it goes */
+    int dishonest = 0;
+    float worst = 0.0f, fastest = 0.0f;
+    for (int f = 0; f < 60; f++) {
+        const fm_vec3_t before = pos;
+        CB_STEP(&body, dt);
+        /* the velocity oracle's rule across up: displacement / dt within max(1 mm / dt, 2 %) */
+        fm_vec3_t d = cb_vec((pos.x - before.x) / dt, (pos.y - before.y) / dt, (pos.z - before.z) / dt);
+        fm_vec3_t v = char_body_get_velocity(&body);
+        fm_vec3_t e = cb_vec(v.x - d.x, v.y - d.y, v.z - d.z);
+        float eu = e.x * up.x + e.y * up.y + e.z * up.z, du = d.x * up.x + d.y * up.y + d.z * up.z;
+        float err = sqrtf(fmaxf(e.x * e.x + e.y * e.y + e.z * e.z - eu * eu, 0.0f));
+        float speed = sqrtf(fmaxf(d.x * d.x + d.y * d.y + d.z * d.z - du * du, 0.0f));
+        float tol = fmaxf(1e-3f / dt, 0.02f * speed);
+        if (err > tol) dishonest++;
+        if (err > worst) worst = err;
+        if (speed > fastest) fastest = speed;
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    cb_report("teleported into a thin slab beside a leaning wall (s134 l270): steps whose velocity is not the motion",
+              (float)dishonest, "");
+    cb_report("teleported into a thin slab beside a leaning wall (s134 l270): worst velocity error across up", worst,
+              "m/s");
+    TEST_ASSERT_EQUAL_INT(0, dishonest);
+    /* it did leave along the crease (fast at first), out of the slab towards open floor */
+    TEST_ASSERT_TRUE(fastest > 4.0f);
+    TEST_ASSERT_TRUE(pos.x < start.x - 0.6f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5720,5 +5794,6 @@ int main(void)
     RUN_TEST(test_ball_on_slab_edge_push_blocked_snap0_stays_grounded);
     RUN_TEST(test_valley_slot_walked_across_under_overhang_edge);
     RUN_TEST(test_tile_crack_beside_valley_block_edge);
+    RUN_TEST(test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_out);
     return UNITY_END();
 }

@@ -34,11 +34,14 @@
  *   room above (under a low ledge or an overhang) is not taken.
  * - char_body_get_velocity() is the velocity the body moved with (a stop by a wall, wedge
  *   or crack shows), not a fall speed accumulating while it rests; carry is not included.
- *   Across up it is the step's displacement / dt, sliding off an edge or a nosing included;
- *   not motion, so not in it: the push out of an overlap at the start of the step, and on a
- *   walkable floor the snap and stair lift along up (there the velocity along up is 0). No
- *   motion across up is faster than the speed limit (200 m/s): a degenerate step (dt of a
- *   nanosecond) does not slide off a nosing or an edge, it waits for the next step.
+ *   Across up it is the step's displacement / dt, sliding off an edge or a nosing included,
+ *   and the push out of an overlap at the start of the step where it moves the body more
+ *   than the skin (1 % of the radius, at most 1 mm: out of an overlap the game made, or
+ *   along a crease); not motion, so not in it: a push within the skin (a slide's own
+ *   overshoot), any push along up, and on a walkable floor the snap and stair lift along up
+ *   (there the velocity along up is 0). No motion across up is faster than the speed limit
+ *   (200 m/s): a degenerate step (dt of a nanosecond) does not slide off a nosing or an
+ *   edge, it waits for the next step.
  */
 #ifndef COLL_CHAR_BODY_H
 #define COLL_CHAR_BODY_H

@@ -394,6 +394,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     mem.ray_valid = false;
     mem.pairs.g = NULL;
     mem.crack_no_floor = false;
+    mem.pushed = false;
     c.mem = &mem;
     body->events = (char_body_events_t){0};
     /* Never collide with the own collider: off every layer while this body steps. */
@@ -578,6 +579,16 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
              * (char_body_slide.c); wedged where it is, with a way out, it is not standing. */
             if (coll_cb_unwedge(&c, &pos, start, in_h, was_grounded, rising)) clear_floor(body);
         }
+    }
+
+    /* The recover's push across up, beyond the skin (no slide's own overshoot), is motion the
+     * body made. A body the game teleported 0.64 m into a thin slab, walkable under its tilted
+     * up, beside a room wall leaning over it: each step's push out of the slab went into the
+     * wall and back out, 67 mm along the crease, at 8 m/s with velocity 0 (soak s134 l270).
+     * Along up it stays a correction: a push-out never launches the body. */
+    if (mem.pushed) {
+        const fm_vec3_t pushed = v3_reject(mem.push, up);
+        if (v3_len2(pushed) > c.skin * c.skin) body->velocity = v3_madd(body->velocity, pushed, 1.0f / dt);
     }
 
     /* Leaving the floor (a jump, walking off an edge) keeps the floor's velocity, as

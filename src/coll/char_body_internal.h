@@ -112,6 +112,10 @@ typedef struct {
      *  then slides (and is not kept where that slide stopped dead: soak s44 l175), and
      *  coll_cb_unwedge treats an airborne start as wedged (soak s30 l14). */
     bool crack_no_floor;
+    /** Set when coll_cb_recover moved the body (cleared once per step); `push` is then how far
+     *  (the step reports its part across up beyond the skin as motion: soak s134 l270). */
+    bool pushed;
+    fm_vec3_t push;
 } cb_mem_t;
 
 /** What one step works with: the scene, the body's cached geometry and the current up. */
@@ -310,7 +314,8 @@ bool coll_cb_push_verified(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t delta);
  *  normal on the contact's side. */
 bool coll_cb_face_normal(const coll_sweep_hit_t *hit, fm_vec3_t *face);
 /** Pushes the sweep capsule out of whatever it overlaps (Gauss-Seidel over the contacts),
- *  keeping the result only when it overlaps nothing new or deeper than the start did. */
+ *  keeping the result only when it overlaps nothing new or deeper than the start did; the
+ *  move made is noted in the step's memory (cb_mem_t.push). */
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel);
 /** For a body whose full capsule has no room to stand where it is (its foot in a floor
  *  under an overhang, where the game teleported it): the nearest place across up, swept

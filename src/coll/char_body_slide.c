@@ -960,6 +960,15 @@ bool coll_cb_unwedge(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t start, fm_vec3
     return false;
 }
 
+/** Notes the recover's move from `from` to `to` in the step's memory (cb_mem_t.push). */
+static void note_push(const cb_ctx_t *c, fm_vec3_t from, fm_vec3_t to)
+{
+    cb_mem_t *m = c->mem;
+    if (!m->pushed) m->push = v3(0.0f, 0.0f, 0.0f);
+    m->pushed = true;
+    m->push = v3_add(m->push, v3_sub(to, from));
+}
+
 void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
 {
     coll_contact_t ct0[CB_MAX_CONTACTS], ct[CB_MAX_CONTACTS];
@@ -1010,12 +1019,17 @@ void coll_cb_recover(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t *vel)
          * game put deep into geometry may therefore stay there until it moves out. */
         if (no_worse(ct, n, ct0, n0, c->min_depth) && reachable(c, *pos, p, deeper_than(ct0, n0, 0.5f * c->radius)) &&
             !sinks_foot(c, *pos, p)) {
+            note_push(c, *pos, p);
             *pos = p;
             if (vel) *vel = v;
             stuck = deeper_than(ct, n, c->skin);
         }
     }
-    if (stuck) unstick(c, pos, vel);
+    if (stuck) {
+        const fm_vec3_t was = *pos;
+        unstick(c, pos, vel);
+        note_push(c, was, *pos);
+    }
 }
 
 /**
