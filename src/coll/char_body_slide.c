@@ -505,13 +505,14 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
          * edge, a body hung at rest 1.8 m over the floor for ever, its fall clipped to the
          * vertical crease and never swept (soak s136 l236). (A walkable contact holds it: the
          * floor probe's edge rules stand it there, soak s89 l214.) */
-        const bool at_once = !grounded && len * t <= 2.0f * c->skin;
-        const bool holds = v3_dot(hit.normal, c->up) >= b->cos_floor_max_angle;
-        if (it == 0 && at_once) {
-            slides++;
-            wall_at_once = !holds;
-        } else if (it == 1 && at_once && wall_at_once && !holds && it + 1 >= slides) {
-            slides++;
+        if (!grounded && len * t <= 2.0f * c->skin) {
+            const bool holds = v3_dot(hit.normal, c->up) >= b->cos_floor_max_angle;
+            if (it == 0) {
+                slides++;
+                wall_at_once = !holds;
+            } else if (it == 1 && wall_at_once && !holds && it + 1 >= slides) {
+                slides++;
+            }
         }
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
         fm_vec3_t left = v3_scale(rem, 1.0f - done);
