@@ -5715,6 +5715,99 @@ static void test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_o
     TEST_ASSERT_TRUE(pos.x < start.x - 0.6f);
 }
 
+/* ---- a one-slide body pressed into a corner in the air ---- */
+
+/* Soak s136 l236 (generator 2): the 29 static triangles within 0.5 m of the body's way
+ * (floats of the checker's doubles; comments: the checker's triangle numbers): the room floor
+ * (y 0: 0-3) and wall (z -24: 80-81), and the faces near the body of a staircase's boxes (one
+ * box per step, 0.754 m rises, treads 0.395 m deep, turned 27.6 degrees about y, its side
+ * running into the room wall; boxes 2-7, 1.507-5.275 m high: 1268-1334). r 0.957, height
+ * 3.999, step 0.937, snap 1.230, walkable to 54.6 degrees, one slide, the owner point the
+ * foot. */
+static const float s136_l236_tris[][9] = {
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1.8p+4f}, /* 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 1 */
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1.8p+4f}, /* 2 */
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 3 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.00dd0ep+4f, 0x0p+0f, -0x1.652666p+4f, -0x1.1e1bp+4f, 0x1.81d684p+0f, -0x1.9d15e2p+4f, -0x1.00dd0ep+4f, 0x1.81d684p+0f, -0x1.652666p+4f}, /* 1268 */
+    {-0x1.19360ep+4f, 0x1.81d684p+0f, -0x1.586beap+4f, -0x1.00dd0ep+4f, 0x1.81d684p+0f, -0x1.652666p+4f, -0x1.1e1bp+4f, 0x1.81d684p+0f, -0x1.9d15e2p+4f}, /* 1271 */
+    {-0x1.19360ep+4f, 0x0p+0f, -0x1.586beap+4f, -0x1.00dd0ep+4f, 0x0p+0f, -0x1.652666p+4f, -0x1.00dd0ep+4f, 0x1.81d684p+0f, -0x1.652666p+4f}, /* 1273 */
+    {-0x1.19360ep+4f, 0x0p+0f, -0x1.586beap+4f, -0x1.00dd0ep+4f, 0x1.81d684p+0f, -0x1.652666p+4f, -0x1.19360ep+4f, 0x1.81d684p+0f, -0x1.586beap+4f}, /* 1274 */
+    {-0x1.03c9a6p+4f, 0x0p+0f, -0x1.6abe5ap+4f, -0x1.1e1bp+4f, 0x1.2160e4p+1f, -0x1.9d15e2p+4f, -0x1.03c9a6p+4f, 0x1.2160e4p+1f, -0x1.6abe5ap+4f}, /* 1280 */
+    {-0x1.1c22a6p+4f, 0x1.2160e4p+1f, -0x1.5e03dep+4f, -0x1.03c9a6p+4f, 0x1.2160e4p+1f, -0x1.6abe5ap+4f, -0x1.1e1bp+4f, 0x1.2160e4p+1f, -0x1.9d15e2p+4f}, /* 1283 */
+    {-0x1.1c22a6p+4f, 0x0p+0f, -0x1.5e03dep+4f, -0x1.03c9a6p+4f, 0x0p+0f, -0x1.6abe5ap+4f, -0x1.03c9a6p+4f, 0x1.2160e4p+1f, -0x1.6abe5ap+4f}, /* 1285 */
+    {-0x1.1c22a6p+4f, 0x0p+0f, -0x1.5e03dep+4f, -0x1.03c9a6p+4f, 0x1.2160e4p+1f, -0x1.6abe5ap+4f, -0x1.1c22a6p+4f, 0x1.2160e4p+1f, -0x1.5e03dep+4f}, /* 1286 */
+    {-0x1.06b63ep+4f, 0x0p+0f, -0x1.70564cp+4f, -0x1.1e1bp+4f, 0x1.81d684p+1f, -0x1.9d15e2p+4f, -0x1.06b63ep+4f, 0x1.81d684p+1f, -0x1.70564cp+4f}, /* 1292 */
+    {-0x1.1f0f3ep+4f, 0x1.81d684p+1f, -0x1.639bdp+4f, -0x1.06b63ep+4f, 0x1.81d684p+1f, -0x1.70564cp+4f, -0x1.1e1bp+4f, 0x1.81d684p+1f, -0x1.9d15e2p+4f}, /* 1295 */
+    {-0x1.1f0f3ep+4f, 0x0p+0f, -0x1.639bdp+4f, -0x1.06b63ep+4f, 0x0p+0f, -0x1.70564cp+4f, -0x1.06b63ep+4f, 0x1.81d684p+1f, -0x1.70564cp+4f}, /* 1297 */
+    {-0x1.1f0f3ep+4f, 0x0p+0f, -0x1.639bdp+4f, -0x1.06b63ep+4f, 0x1.81d684p+1f, -0x1.70564cp+4f, -0x1.1f0f3ep+4f, 0x1.81d684p+1f, -0x1.639bdp+4f}, /* 1298 */
+    {-0x1.09a2d6p+4f, 0x0p+0f, -0x1.75ee3ep+4f, -0x1.1e1bp+4f, 0x1.e24c26p+1f, -0x1.9d15e2p+4f, -0x1.09a2d6p+4f, 0x1.e24c26p+1f, -0x1.75ee3ep+4f}, /* 1304 */
+    {-0x1.21fbd6p+4f, 0x1.e24c26p+1f, -0x1.6933c2p+4f, -0x1.09a2d6p+4f, 0x1.e24c26p+1f, -0x1.75ee3ep+4f, -0x1.1e1bp+4f, 0x1.e24c26p+1f, -0x1.9d15e2p+4f}, /* 1307 */
+    {-0x1.21fbd6p+4f, 0x0p+0f, -0x1.6933c2p+4f, -0x1.09a2d6p+4f, 0x0p+0f, -0x1.75ee3ep+4f, -0x1.09a2d6p+4f, 0x1.e24c26p+1f, -0x1.75ee3ep+4f}, /* 1309 */
+    {-0x1.21fbd6p+4f, 0x0p+0f, -0x1.6933c2p+4f, -0x1.09a2d6p+4f, 0x1.e24c26p+1f, -0x1.75ee3ep+4f, -0x1.21fbd6p+4f, 0x1.e24c26p+1f, -0x1.6933c2p+4f}, /* 1310 */
+    {-0x1.0c8f6ep+4f, 0x0p+0f, -0x1.7b8632p+4f, -0x1.1e1bp+4f, 0x1.2160e4p+2f, -0x1.9d15e2p+4f, -0x1.0c8f6ep+4f, 0x1.2160e4p+2f, -0x1.7b8632p+4f}, /* 1316 */
+    {-0x1.24e86ep+4f, 0x1.2160e4p+2f, -0x1.6ecbb6p+4f, -0x1.0c8f6ep+4f, 0x1.2160e4p+2f, -0x1.7b8632p+4f, -0x1.1e1bp+4f, 0x1.2160e4p+2f, -0x1.9d15e2p+4f}, /* 1319 */
+    {-0x1.24e86ep+4f, 0x0p+0f, -0x1.6ecbb6p+4f, -0x1.0c8f6ep+4f, 0x0p+0f, -0x1.7b8632p+4f, -0x1.0c8f6ep+4f, 0x1.2160e4p+2f, -0x1.7b8632p+4f}, /* 1321 */
+    {-0x1.24e86ep+4f, 0x0p+0f, -0x1.6ecbb6p+4f, -0x1.0c8f6ep+4f, 0x1.2160e4p+2f, -0x1.7b8632p+4f, -0x1.24e86ep+4f, 0x1.2160e4p+2f, -0x1.6ecbb6p+4f}, /* 1322 */
+    {-0x1.0f7c06p+4f, 0x0p+0f, -0x1.811e24p+4f, -0x1.1e1bp+4f, 0x1.519bb4p+2f, -0x1.9d15e2p+4f, -0x1.0f7c06p+4f, 0x1.519bb4p+2f, -0x1.811e24p+4f}, /* 1328 */
+    {-0x1.27d506p+4f, 0x0p+0f, -0x1.7463a8p+4f, -0x1.0f7c06p+4f, 0x0p+0f, -0x1.811e24p+4f, -0x1.0f7c06p+4f, 0x1.519bb4p+2f, -0x1.811e24p+4f}, /* 1333 */
+    {-0x1.27d506p+4f, 0x0p+0f, -0x1.7463a8p+4f, -0x1.0f7c06p+4f, 0x1.519bb4p+2f, -0x1.811e24p+4f, -0x1.27d506p+4f, 0x1.519bb4p+2f, -0x1.7463a8p+4f} /* 1334 */
+};
+
+/* The body comes along the room wall at 16 m/s at the top of a jump (rising 1.4 m/s) into
+ * the corner between the wall and the staircase's side, its input (-16.2, 0, -10.1) m/s held
+ * into both (dt 0.2 s, clamped to 0.1). Its one slide's
+ * first sweep met box 5's vertical front edge at once (not counted: it rests against it),
+ * the second the wall at once, and the clip left the fall along their vertical crease,
+ * never swept: it hung at rest, its foot 1.797 m over the room floor, for ever (the support
+ * oracle: at rest 30 frames, its full capsule's bottom ball on box 3's top edge 52.6 degrees
+ * off up, not grounded). It falls along the crease onto box 4's top corner, and goes on down
+ * (pushed off that corner, its input into the corner), never at rest in the air. */
+static void test_one_slide_body_falls_along_corner_crease(void)
+{
+    cb_world_reset();
+    geo_tris(s136_l236_tris, sizeof s136_l236_tris / sizeof s136_l236_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.e9ba9ap-1f, 0x1.ffd68p+1f, 0x1.df985p-1f, 0x1.3ac608p+0f,
+                                        0x1.e80dp-1f, 0x1.5884e4p+2f, 0x1.c953dp+5f, 1, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(-0x1.970eb8p+3f, 0x1.ace2b2p+0f, -0x1.70ae12p+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.02f588p+4f, 0x1.724a44p+0f, 0.0f));
+    /* the replay's 32 frames, the same input on each */
+    static const float dts[32] = {
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.6ff55ap-4f, 0x1.99999ap-3f,
+        0x1.40719ep-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.102df2p-6f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+    };
+    int rest = 0, longest = 0;
+    fm_vec3_t at2 = pos;
+    for (int f = 0; f < 32; f++) {
+        const fm_vec3_t before = pos;
+        body.input_velocity = cb_vec(-0x1.02f588p+4f, 0.0f, -0x1.42c04p+3f);
+        CB_STEP(&body, dts[f]);
+        if (f == 1) at2 = pos;
+        const float d = sqrtf((pos.x - before.x) * (pos.x - before.x) + (pos.y - before.y) * (pos.y - before.y) +
+                              (pos.z - before.z) * (pos.z - before.z));
+        rest = !char_body_is_on_floor(&body) && d <= 1e-4f ? rest + 1 : 0; /* the oracle's 0.1 mm */
+        if (rest > longest) longest = rest;
+    }
+    cb_report("one slide pressed into a corner in the air (s136 l236): longest airborne rest", (float)longest, "frames");
+    cb_report("one slide pressed into a corner in the air (s136 l236): fell since frame 2", at2.y - pos.y, "m");
+    TEST_ASSERT_TRUE(longest < 5);         /* never at rest in the air */
+    TEST_ASSERT_TRUE(at2.y - pos.y > 0.03f); /* down the crease and on down */
+    TEST_ASSERT_TRUE(pos.z > -24.0f + 0.95f); /* beside the wall, not in it */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5795,5 +5888,6 @@ int main(void)
     RUN_TEST(test_valley_slot_walked_across_under_overhang_edge);
     RUN_TEST(test_tile_crack_beside_valley_block_edge);
     RUN_TEST(test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_out);
+    RUN_TEST(test_one_slide_body_falls_along_corner_crease);
     return UNITY_END();
 }

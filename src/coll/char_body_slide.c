@@ -419,6 +419,7 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
     fm_vec3_t corr = v3(0.0f, 0.0f, 0.0f);    /* top-up and nudges since the last swept or verified move */
     int slides = b->settings.max_slides;
     bool fell = false; /* stopped dead in the air, the fall alone slid on (below) */
+    bool wall_at_once = false; /* the first sweep met at once, in the air, what cannot hold the body up */
     bool under_edge = false, over_face = false; /* contacts met in the air (the same) */
     for (int it = 0; it < slides; it++) {
         float len = v3_len(rem);
@@ -496,8 +497,23 @@ void coll_cb_slide(const cb_ctx_t *c, fm_vec3_t *pos, fm_vec3_t disp, fm_vec3_t 
         /* In the air, a first sweep that met at once what the body already rests against
          * (it travelled no more than the skin) is not a slide: the clipped motion still gets its sweep.
          * Else with max_slides 1 a body touching a wall, a steep face or an edge never
-         * moves again, not even to fall along it (soak: 10 bodies hung at rest). */
-        if (it == 0 && !grounded && len * t <= 2.0f * c->skin) slides++;
+         * moves again, not even to fall along it (soak: 10 bodies hung at rest). Nor is a
+         * second one right after it where the slides would end there, when neither contact
+         * can hold the body up (walls, steep faces, ceilings: not walkable): pressed into a
+         * corner, the crease between them, the fall along it, still gets its sweep. With one
+         * slide, pushed by its input into the room wall and a staircase block's vertical
+         * edge, a body hung at rest 1.8 m over the floor for ever, its fall clipped to the
+         * vertical crease and never swept (soak s136 l236). (A walkable contact holds it: the
+         * floor probe's edge rules stand it there, soak s89 l214.) */
+        if (!grounded && len * t <= 2.0f * c->skin) {
+            const bool holds = v3_dot(hit.normal, c->up) >= b->cos_floor_max_angle;
+            if (it == 0) {
+                slides++;
+                wall_at_once = !holds;
+            } else if (it == 1 && wall_at_once && !holds && it + 1 >= slides) {
+                slides++;
+            }
+        }
         /* The untravelled rest, skin included, slides on: no speed lost to the skin. */
         fm_vec3_t left = v3_scale(rem, 1.0f - done);
         time_left *= 1.0f - done;
