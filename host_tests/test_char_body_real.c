@@ -5808,6 +5808,170 @@ static void test_one_slide_body_falls_along_corner_crease(void)
     TEST_ASSERT_TRUE(pos.z > -24.0f + 0.95f); /* beside the wall, not in it */
 }
 
+/* ---- a crack between tiles beside a block's top edge in the step zone ---- */
+
+/* Soak s133 l423 (generator 2): the 111 static triangles within 1 m of the failing foot
+ * (floats of the checker's doubles; comments: the checker's triangle numbers): the room (floor
+ * y 0), a field of floor tiles (0.62 m squares turned 1.2 degrees about y, 18 mm cracks, tops
+ * 0.2177, one 0.2284, one 0.2122), a block turned 43 degrees about y, 0.6224 high (88-97),
+ * and taller blocks behind it (100-133). r 0.801, height 3.351, step
+ * 0.523, snap 0.756, walkable to 67.3 degrees, 5 slides, the owner point the capsule's centre.
+ * Walking off a tile's top into the 18 mm crack beside it, 0.27 m across up from the block's
+ * edge (0.405 m over the tiles: in the step zone, not under the foot): the crack rule's ball,
+ * dropped from the sweep capsule's, met that edge first (20 degrees off up, walkable, ahead),
+ * rolled off it into nothing and slid down its tangent 1.58 m across up, past the end of the
+ * field, onto the room floor; held there (the foot ray's floor: no crack), the snap to the
+ * room floor stopped on the block's edge, and the foot stood 165 mm under the tiles' tops. */
+static const float s133_l423_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1.8p+4f}, /* 8 */
+    {0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 9 */
+    {0x1p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f}, /* 10 */
+    {0x1p+4f, 0x0p+0f, -0x1.8p+4f, 0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f}, /* 11 */
+    {0x1p+3f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1p+3f, 0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 20 */
+    {0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1.8p+4f, 0x0p+0f, -0x1p+3f, 0x1.8p+4f, 0x0p+0f, -0x1p+4f}, /* 22 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.24b322p+4f, 0x0p+0f, -0x1.36a064p+4f, 0x1.24b322p+4f, 0x1.3eadcap-1f, -0x1.36a064p+4f, 0x1.5caf56p+4f, 0x1.3eadcap-1f, -0x1.f60036p+3f}, /* 88 */
+    {0x1.f0ce64p+3f, 0x0p+0f, -0x1.0d08e8p+4f, 0x1.306366p+4f, 0x0p+0f, -0x1.a2d13cp+3f, 0x1.306366p+4f, 0x1.3eadcap-1f, -0x1.a2d13cp+3f}, /* 90 */
+    {0x1.f0ce64p+3f, 0x0p+0f, -0x1.0d08e8p+4f, 0x1.306366p+4f, 0x1.3eadcap-1f, -0x1.a2d13cp+3f, 0x1.f0ce64p+3f, 0x1.3eadcap-1f, -0x1.0d08e8p+4f}, /* 91 */
+    {0x1.24b322p+4f, 0x0p+0f, -0x1.36a064p+4f, 0x1.5caf56p+4f, 0x0p+0f, -0x1.f60036p+3f, 0x1.306366p+4f, 0x0p+0f, -0x1.a2d13cp+3f}, /* 92 */
+    {0x1.24b322p+4f, 0x0p+0f, -0x1.36a064p+4f, 0x1.306366p+4f, 0x0p+0f, -0x1.a2d13cp+3f, 0x1.f0ce64p+3f, 0x0p+0f, -0x1.0d08e8p+4f}, /* 93 */
+    {0x1.24b322p+4f, 0x1.3eadcap-1f, -0x1.36a064p+4f, 0x1.f0ce64p+3f, 0x1.3eadcap-1f, -0x1.0d08e8p+4f, 0x1.306366p+4f, 0x1.3eadcap-1f, -0x1.a2d13cp+3f}, /* 94 */
+    {0x1.24b322p+4f, 0x1.3eadcap-1f, -0x1.36a064p+4f, 0x1.306366p+4f, 0x1.3eadcap-1f, -0x1.a2d13cp+3f, 0x1.5caf56p+4f, 0x1.3eadcap-1f, -0x1.f60036p+3f}, /* 95 */
+    {0x1.24b322p+4f, 0x0p+0f, -0x1.36a064p+4f, 0x1.f0ce64p+3f, 0x0p+0f, -0x1.0d08e8p+4f, 0x1.f0ce64p+3f, 0x1.3eadcap-1f, -0x1.0d08e8p+4f}, /* 96 */
+    {0x1.24b322p+4f, 0x0p+0f, -0x1.36a064p+4f, 0x1.f0ce64p+3f, 0x1.3eadcap-1f, -0x1.0d08e8p+4f, 0x1.24b322p+4f, 0x1.3eadcap-1f, -0x1.36a064p+4f}, /* 97 */
+    {0x1.2fe594p+4f, 0x0p+0f, -0x1.2ab388p+4f, 0x1.2fe594p+4f, 0x1.0c0186p+0f, -0x1.2ab388p+4f, 0x1.5caf56p+4f, 0x1.0c0186p+0f, -0x1.f60036p+3f}, /* 100 */
+    {0x1.0399a2p+4f, 0x0p+0f, -0x1.011c0cp+4f, 0x1.306366p+4f, 0x1.0c0186p+0f, -0x1.a2d13cp+3f, 0x1.0399a2p+4f, 0x1.0c0186p+0f, -0x1.011c0cp+4f}, /* 103 */
+    {0x1.2fe594p+4f, 0x0p+0f, -0x1.2ab388p+4f, 0x1.306366p+4f, 0x0p+0f, -0x1.a2d13cp+3f, 0x1.0399a2p+4f, 0x0p+0f, -0x1.011c0cp+4f}, /* 105 */
+    {0x1.2fe594p+4f, 0x1.0c0186p+0f, -0x1.2ab388p+4f, 0x1.0399a2p+4f, 0x1.0c0186p+0f, -0x1.011c0cp+4f, 0x1.306366p+4f, 0x1.0c0186p+0f, -0x1.a2d13cp+3f}, /* 106 */
+    {0x1.2fe594p+4f, 0x0p+0f, -0x1.2ab388p+4f, 0x1.0399a2p+4f, 0x0p+0f, -0x1.011c0cp+4f, 0x1.0399a2p+4f, 0x1.0c0186p+0f, -0x1.011c0cp+4f}, /* 108 */
+    {0x1.2fe594p+4f, 0x0p+0f, -0x1.2ab388p+4f, 0x1.0399a2p+4f, 0x1.0c0186p+0f, -0x1.011c0cp+4f, 0x1.2fe594p+4f, 0x1.0c0186p+0f, -0x1.2ab388p+4f}, /* 109 */
+    {0x1.3b1804p+4f, 0x0p+0f, -0x1.1ec6aep+4f, 0x1.306366p+4f, 0x0p+0f, -0x1.a2d13cp+3f, 0x1.0ecc14p+4f, 0x0p+0f, -0x1.ea5e62p+3f}, /* 117 */
+    {0x1.3b1804p+4f, 0x1.3d6d6cp+0f, -0x1.1ec6aep+4f, 0x1.0ecc14p+4f, 0x1.3d6d6cp+0f, -0x1.ea5e62p+3f, 0x1.306366p+4f, 0x1.3d6d6cp+0f, -0x1.a2d13cp+3f}, /* 118 */
+    {0x1.3b1804p+4f, 0x0p+0f, -0x1.1ec6aep+4f, 0x1.0ecc14p+4f, 0x0p+0f, -0x1.ea5e62p+3f, 0x1.0ecc14p+4f, 0x1.3d6d6cp+0f, -0x1.ea5e62p+3f}, /* 120 */
+    {0x1.3b1804p+4f, 0x0p+0f, -0x1.1ec6aep+4f, 0x1.0ecc14p+4f, 0x1.3d6d6cp+0f, -0x1.ea5e62p+3f, 0x1.3b1804p+4f, 0x1.3d6d6cp+0f, -0x1.1ec6aep+4f}, /* 121 */
+    {0x1.464a74p+4f, 0x0p+0f, -0x1.12d9d2p+4f, 0x1.19fe84p+4f, 0x0p+0f, -0x1.d284aap+3f, 0x1.19fe84p+4f, 0x1.e3d0dp+0f, -0x1.d284aap+3f}, /* 132 */
+    {0x1.0e6632p+4f, 0x0p+0f, -0x1.0cdb1cp+4f, 0x1.04774cp+4f, 0x0p+0f, -0x1.0d10dcp+4f, 0x1.04774cp+4f, 0x1.bddde8p-3f, -0x1.0d10dcp+4f}, /* 482 */
+    {0x1.0e6632p+4f, 0x0p+0f, -0x1.0cdb1cp+4f, 0x1.04774cp+4f, 0x1.bddde8p-3f, -0x1.0d10dcp+4f, 0x1.0e6632p+4f, 0x1.bddde8p-3f, -0x1.0cdb1cp+4f}, /* 483 */
+    {0x1.0e3072p+4f, 0x0p+0f, -0x1.02ec38p+4f, 0x1.04774cp+4f, 0x0p+0f, -0x1.0d10dcp+4f, 0x1.0e6632p+4f, 0x0p+0f, -0x1.0cdb1cp+4f}, /* 485 */
+    {0x1.0e3072p+4f, 0x1.bddde8p-3f, -0x1.02ec38p+4f, 0x1.0e6632p+4f, 0x1.bddde8p-3f, -0x1.0cdb1cp+4f, 0x1.04774cp+4f, 0x1.bddde8p-3f, -0x1.0d10dcp+4f}, /* 486 */
+    {0x1.04418cp+4f, 0x0p+0f, -0x1.0321f8p+4f, 0x1.04774cp+4f, 0x1.bddde8p-3f, -0x1.0d10dcp+4f, 0x1.04774cp+4f, 0x0p+0f, -0x1.0d10dcp+4f}, /* 491 */
+    {0x1.042daep+4f, 0x0p+0f, -0x1.0d126ap+4f, 0x1.f47d92p+3f, 0x0p+0f, -0x1.0d482ap+4f, 0x1.f47d92p+3f, 0x1.b2a6ap-3f, -0x1.0d482ap+4f}, /* 494 */
+    {0x1.042daep+4f, 0x0p+0f, -0x1.0d126ap+4f, 0x1.f47d92p+3f, 0x1.b2a6ap-3f, -0x1.0d482ap+4f, 0x1.042daep+4f, 0x1.b2a6ap-3f, -0x1.0d126ap+4f}, /* 495 */
+    {0x1.03f7fp+4f, 0x0p+0f, -0x1.032386p+4f, 0x1.f47d92p+3f, 0x0p+0f, -0x1.0d482ap+4f, 0x1.042daep+4f, 0x0p+0f, -0x1.0d126ap+4f}, /* 497 */
+    {0x1.03f7fp+4f, 0x1.b2a6ap-3f, -0x1.032386p+4f, 0x1.042daep+4f, 0x1.b2a6ap-3f, -0x1.0d126ap+4f, 0x1.f47d92p+3f, 0x1.b2a6ap-3f, -0x1.0d482ap+4f}, /* 498 */
+    {0x1.03f7fp+4f, 0x0p+0f, -0x1.032386p+4f, 0x1.042daep+4f, 0x0p+0f, -0x1.0d126ap+4f, 0x1.042daep+4f, 0x1.b2a6ap-3f, -0x1.0d126ap+4f}, /* 500 */
+    {0x1.18a042p+4f, 0x0p+0f, -0x1.0ced6cp+4f, 0x1.0eb15ep+4f, 0x1.bddde8p-3f, -0x1.0d232cp+4f, 0x1.0eb15ep+4f, 0x0p+0f, -0x1.0d232cp+4f}, /* 517 */
+    {0x1.18d602p+4f, 0x0p+0f, -0x1.16dc52p+4f, 0x1.0ee71cp+4f, 0x0p+0f, -0x1.171212p+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f}, /* 518 */
+    {0x1.18d602p+4f, 0x0p+0f, -0x1.16dc52p+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f, 0x1.18d602p+4f, 0x1.bddde8p-3f, -0x1.16dc52p+4f}, /* 519 */
+    {0x1.18a042p+4f, 0x0p+0f, -0x1.0ced6cp+4f, 0x1.0eb15ep+4f, 0x0p+0f, -0x1.0d232cp+4f, 0x1.0ee71cp+4f, 0x0p+0f, -0x1.171212p+4f}, /* 520 */
+    {0x1.18a042p+4f, 0x0p+0f, -0x1.0ced6cp+4f, 0x1.0ee71cp+4f, 0x0p+0f, -0x1.171212p+4f, 0x1.18d602p+4f, 0x0p+0f, -0x1.16dc52p+4f}, /* 521 */
+    {0x1.18a042p+4f, 0x1.bddde8p-3f, -0x1.0ced6cp+4f, 0x1.18d602p+4f, 0x1.bddde8p-3f, -0x1.16dc52p+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f}, /* 522 */
+    {0x1.18a042p+4f, 0x1.bddde8p-3f, -0x1.0ced6cp+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f, 0x1.0eb15ep+4f, 0x1.bddde8p-3f, -0x1.0d232cp+4f}, /* 523 */
+    {0x1.0eb15ep+4f, 0x0p+0f, -0x1.0d232cp+4f, 0x1.0eb15ep+4f, 0x1.bddde8p-3f, -0x1.0d232cp+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f}, /* 526 */
+    {0x1.0eb15ep+4f, 0x0p+0f, -0x1.0d232cp+4f, 0x1.0ee71cp+4f, 0x1.bddde8p-3f, -0x1.171212p+4f, 0x1.0ee71cp+4f, 0x0p+0f, -0x1.171212p+4f}, /* 527 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.0e67cp+4f, 0x1.d3d816p-3f, -0x1.0d24bap+4f, 0x1.0478dap+4f, 0x1.d3d816p-3f, -0x1.0d5a7ap+4f}, /* 528 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.0478dap+4f, 0x1.d3d816p-3f, -0x1.0d5a7ap+4f, 0x1.0478dap+4f, 0x0p+0f, -0x1.0d5a7ap+4f}, /* 529 */
+    {0x1.0e9d7ep+4f, 0x0p+0f, -0x1.1713ap+4f, 0x1.04ae9ap+4f, 0x0p+0f, -0x1.17495ep+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f}, /* 530 */
+    {0x1.0e9d7ep+4f, 0x0p+0f, -0x1.1713ap+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f, 0x1.0e9d7ep+4f, 0x1.d3d816p-3f, -0x1.1713ap+4f}, /* 531 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.0478dap+4f, 0x0p+0f, -0x1.0d5a7ap+4f, 0x1.04ae9ap+4f, 0x0p+0f, -0x1.17495ep+4f}, /* 532 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.04ae9ap+4f, 0x0p+0f, -0x1.17495ep+4f, 0x1.0e9d7ep+4f, 0x0p+0f, -0x1.1713ap+4f}, /* 533 */
+    {0x1.0e67cp+4f, 0x1.d3d816p-3f, -0x1.0d24bap+4f, 0x1.0e9d7ep+4f, 0x1.d3d816p-3f, -0x1.1713ap+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f}, /* 534 */
+    {0x1.0e67cp+4f, 0x1.d3d816p-3f, -0x1.0d24bap+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f, 0x1.0478dap+4f, 0x1.d3d816p-3f, -0x1.0d5a7ap+4f}, /* 535 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.0e9d7ep+4f, 0x0p+0f, -0x1.1713ap+4f, 0x1.0e9d7ep+4f, 0x1.d3d816p-3f, -0x1.1713ap+4f}, /* 536 */
+    {0x1.0e67cp+4f, 0x0p+0f, -0x1.0d24bap+4f, 0x1.0e9d7ep+4f, 0x1.d3d816p-3f, -0x1.1713ap+4f, 0x1.0e67cp+4f, 0x1.d3d816p-3f, -0x1.0d24bap+4f}, /* 537 */
+    {0x1.0478dap+4f, 0x0p+0f, -0x1.0d5a7ap+4f, 0x1.0478dap+4f, 0x1.d3d816p-3f, -0x1.0d5a7ap+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f}, /* 538 */
+    {0x1.0478dap+4f, 0x0p+0f, -0x1.0d5a7ap+4f, 0x1.04ae9ap+4f, 0x1.d3d816p-3f, -0x1.17495ep+4f, 0x1.04ae9ap+4f, 0x0p+0f, -0x1.17495ep+4f}, /* 539 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.042f3cp+4f, 0x1.bddde8p-3f, -0x1.0d5c08p+4f, 0x1.f480bp+3f, 0x1.bddde8p-3f, -0x1.0d91c8p+4f}, /* 540 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.f480bp+3f, 0x1.bddde8p-3f, -0x1.0d91c8p+4f, 0x1.f480bp+3f, 0x0p+0f, -0x1.0d91c8p+4f}, /* 541 */
+    {0x1.0464fcp+4f, 0x0p+0f, -0x1.174aeep+4f, 0x1.f4ec2ep+3f, 0x0p+0f, -0x1.1780acp+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f}, /* 542 */
+    {0x1.0464fcp+4f, 0x0p+0f, -0x1.174aeep+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f, 0x1.0464fcp+4f, 0x1.bddde8p-3f, -0x1.174aeep+4f}, /* 543 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.f480bp+3f, 0x0p+0f, -0x1.0d91c8p+4f, 0x1.f4ec2ep+3f, 0x0p+0f, -0x1.1780acp+4f}, /* 544 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.f4ec2ep+3f, 0x0p+0f, -0x1.1780acp+4f, 0x1.0464fcp+4f, 0x0p+0f, -0x1.174aeep+4f}, /* 545 */
+    {0x1.042f3cp+4f, 0x1.bddde8p-3f, -0x1.0d5c08p+4f, 0x1.0464fcp+4f, 0x1.bddde8p-3f, -0x1.174aeep+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f}, /* 546 */
+    {0x1.042f3cp+4f, 0x1.bddde8p-3f, -0x1.0d5c08p+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f, 0x1.f480bp+3f, 0x1.bddde8p-3f, -0x1.0d91c8p+4f}, /* 547 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.0464fcp+4f, 0x0p+0f, -0x1.174aeep+4f, 0x1.0464fcp+4f, 0x1.bddde8p-3f, -0x1.174aeep+4f}, /* 548 */
+    {0x1.042f3cp+4f, 0x0p+0f, -0x1.0d5c08p+4f, 0x1.0464fcp+4f, 0x1.bddde8p-3f, -0x1.174aeep+4f, 0x1.042f3cp+4f, 0x1.bddde8p-3f, -0x1.0d5c08p+4f}, /* 549 */
+    {0x1.f480bp+3f, 0x0p+0f, -0x1.0d91c8p+4f, 0x1.f480bp+3f, 0x1.bddde8p-3f, -0x1.0d91c8p+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f}, /* 550 */
+    {0x1.f480bp+3f, 0x0p+0f, -0x1.0d91c8p+4f, 0x1.f4ec2ep+3f, 0x1.bddde8p-3f, -0x1.1780acp+4f, 0x1.f4ec2ep+3f, 0x0p+0f, -0x1.1780acp+4f}, /* 551 */
+    {0x1.19212ep+4f, 0x0p+0f, -0x1.172462p+4f, 0x1.19212ep+4f, 0x1.e33a86p-3f, -0x1.172462p+4f, 0x1.1956eep+4f, 0x1.e33a86p-3f, -0x1.211346p+4f}, /* 562 */
+    {0x1.19212ep+4f, 0x0p+0f, -0x1.172462p+4f, 0x1.1956eep+4f, 0x1.e33a86p-3f, -0x1.211346p+4f, 0x1.1956eep+4f, 0x0p+0f, -0x1.211346p+4f}, /* 563 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.18d79p+4f, 0x1.bddde8p-3f, -0x1.1725fp+4f, 0x1.0ee8aap+4f, 0x1.bddde8p-3f, -0x1.175bbp+4f}, /* 564 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.0ee8aap+4f, 0x1.bddde8p-3f, -0x1.175bbp+4f, 0x1.0ee8aap+4f, 0x0p+0f, -0x1.175bbp+4f}, /* 565 */
+    {0x1.190d5p+4f, 0x0p+0f, -0x1.2114d4p+4f, 0x1.0f1e6ap+4f, 0x0p+0f, -0x1.214a94p+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f}, /* 566 */
+    {0x1.190d5p+4f, 0x0p+0f, -0x1.2114d4p+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f, 0x1.190d5p+4f, 0x1.bddde8p-3f, -0x1.2114d4p+4f}, /* 567 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.0ee8aap+4f, 0x0p+0f, -0x1.175bbp+4f, 0x1.0f1e6ap+4f, 0x0p+0f, -0x1.214a94p+4f}, /* 568 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.0f1e6ap+4f, 0x0p+0f, -0x1.214a94p+4f, 0x1.190d5p+4f, 0x0p+0f, -0x1.2114d4p+4f}, /* 569 */
+    {0x1.18d79p+4f, 0x1.bddde8p-3f, -0x1.1725fp+4f, 0x1.190d5p+4f, 0x1.bddde8p-3f, -0x1.2114d4p+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f}, /* 570 */
+    {0x1.18d79p+4f, 0x1.bddde8p-3f, -0x1.1725fp+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f, 0x1.0ee8aap+4f, 0x1.bddde8p-3f, -0x1.175bbp+4f}, /* 571 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.190d5p+4f, 0x0p+0f, -0x1.2114d4p+4f, 0x1.190d5p+4f, 0x1.bddde8p-3f, -0x1.2114d4p+4f}, /* 572 */
+    {0x1.18d79p+4f, 0x0p+0f, -0x1.1725fp+4f, 0x1.190d5p+4f, 0x1.bddde8p-3f, -0x1.2114d4p+4f, 0x1.18d79p+4f, 0x1.bddde8p-3f, -0x1.1725fp+4f}, /* 573 */
+    {0x1.0ee8aap+4f, 0x0p+0f, -0x1.175bbp+4f, 0x1.0ee8aap+4f, 0x1.bddde8p-3f, -0x1.175bbp+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f}, /* 574 */
+    {0x1.0ee8aap+4f, 0x0p+0f, -0x1.175bbp+4f, 0x1.0f1e6ap+4f, 0x1.bddde8p-3f, -0x1.214a94p+4f, 0x1.0f1e6ap+4f, 0x0p+0f, -0x1.214a94p+4f}, /* 575 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.0e9f0ep+4f, 0x1.bddde8p-3f, -0x1.175d3ep+4f, 0x1.04b028p+4f, 0x1.bddde8p-3f, -0x1.1792fcp+4f}, /* 576 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.04b028p+4f, 0x1.bddde8p-3f, -0x1.1792fcp+4f, 0x1.04b028p+4f, 0x0p+0f, -0x1.1792fcp+4f}, /* 577 */
+    {0x1.0ed4ccp+4f, 0x0p+0f, -0x1.214c22p+4f, 0x1.04e5e8p+4f, 0x0p+0f, -0x1.2181e2p+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f}, /* 578 */
+    {0x1.0ed4ccp+4f, 0x0p+0f, -0x1.214c22p+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f, 0x1.0ed4ccp+4f, 0x1.bddde8p-3f, -0x1.214c22p+4f}, /* 579 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.04b028p+4f, 0x0p+0f, -0x1.1792fcp+4f, 0x1.04e5e8p+4f, 0x0p+0f, -0x1.2181e2p+4f}, /* 580 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.04e5e8p+4f, 0x0p+0f, -0x1.2181e2p+4f, 0x1.0ed4ccp+4f, 0x0p+0f, -0x1.214c22p+4f}, /* 581 */
+    {0x1.0e9f0ep+4f, 0x1.bddde8p-3f, -0x1.175d3ep+4f, 0x1.0ed4ccp+4f, 0x1.bddde8p-3f, -0x1.214c22p+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f}, /* 582 */
+    {0x1.0e9f0ep+4f, 0x1.bddde8p-3f, -0x1.175d3ep+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f, 0x1.04b028p+4f, 0x1.bddde8p-3f, -0x1.1792fcp+4f}, /* 583 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.0ed4ccp+4f, 0x0p+0f, -0x1.214c22p+4f, 0x1.0ed4ccp+4f, 0x1.bddde8p-3f, -0x1.214c22p+4f}, /* 584 */
+    {0x1.0e9f0ep+4f, 0x0p+0f, -0x1.175d3ep+4f, 0x1.0ed4ccp+4f, 0x1.bddde8p-3f, -0x1.214c22p+4f, 0x1.0e9f0ep+4f, 0x1.bddde8p-3f, -0x1.175d3ep+4f}, /* 585 */
+    {0x1.04b028p+4f, 0x0p+0f, -0x1.1792fcp+4f, 0x1.04b028p+4f, 0x1.bddde8p-3f, -0x1.1792fcp+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f}, /* 586 */
+    {0x1.04b028p+4f, 0x0p+0f, -0x1.1792fcp+4f, 0x1.04e5e8p+4f, 0x1.bddde8p-3f, -0x1.2181e2p+4f, 0x1.04e5e8p+4f, 0x0p+0f, -0x1.2181e2p+4f}, /* 587 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.04668ap+4f, 0x1.bddde8p-3f, -0x1.17948cp+4f, 0x1.f4ef4ap+3f, 0x1.bddde8p-3f, -0x1.17ca4ap+4f}, /* 588 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.f4ef4ap+3f, 0x1.bddde8p-3f, -0x1.17ca4ap+4f, 0x1.f4ef4ap+3f, 0x0p+0f, -0x1.17ca4ap+4f}, /* 589 */
+    {0x1.049c4ap+4f, 0x0p+0f, -0x1.21837p+4f, 0x1.f55acap+3f, 0x0p+0f, -0x1.21b93p+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f}, /* 590 */
+    {0x1.049c4ap+4f, 0x0p+0f, -0x1.21837p+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f, 0x1.049c4ap+4f, 0x1.bddde8p-3f, -0x1.21837p+4f}, /* 591 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.f4ef4ap+3f, 0x0p+0f, -0x1.17ca4ap+4f, 0x1.f55acap+3f, 0x0p+0f, -0x1.21b93p+4f}, /* 592 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.f55acap+3f, 0x0p+0f, -0x1.21b93p+4f, 0x1.049c4ap+4f, 0x0p+0f, -0x1.21837p+4f}, /* 593 */
+    {0x1.04668ap+4f, 0x1.bddde8p-3f, -0x1.17948cp+4f, 0x1.049c4ap+4f, 0x1.bddde8p-3f, -0x1.21837p+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f}, /* 594 */
+    {0x1.04668ap+4f, 0x1.bddde8p-3f, -0x1.17948cp+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f, 0x1.f4ef4ap+3f, 0x1.bddde8p-3f, -0x1.17ca4ap+4f}, /* 595 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.049c4ap+4f, 0x0p+0f, -0x1.21837p+4f, 0x1.049c4ap+4f, 0x1.bddde8p-3f, -0x1.21837p+4f}, /* 596 */
+    {0x1.04668ap+4f, 0x0p+0f, -0x1.17948cp+4f, 0x1.049c4ap+4f, 0x1.bddde8p-3f, -0x1.21837p+4f, 0x1.04668ap+4f, 0x1.bddde8p-3f, -0x1.17948cp+4f}, /* 597 */
+    {0x1.f4ef4ap+3f, 0x0p+0f, -0x1.17ca4ap+4f, 0x1.f4ef4ap+3f, 0x1.bddde8p-3f, -0x1.17ca4ap+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f}, /* 598 */
+    {0x1.f4ef4ap+3f, 0x0p+0f, -0x1.17ca4ap+4f, 0x1.f55acap+3f, 0x1.bddde8p-3f, -0x1.21b93p+4f, 0x1.f55acap+3f, 0x0p+0f, -0x1.21b93p+4f}, /* 599 */
+};
+
+static void test_crack_beside_block_edge_in_step_zone(void)
+{
+    cb_world_reset();
+    geo_tris(s133_l423_tris, sizeof s133_l423_tris / sizeof s133_l423_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.99fd8ep-1f, 0x1.acfaacp+1f, 0x1.0bb624p-1f, 0x1.82e80ap-1f,
+                                        0x1.2caf3ap+0f, 0x1.551c6cp+4f, 0x1.54317ap+4f, 5, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(0x1.06ae58p+4f, 0x1.e4b668p+0f, -0x1.213a98p+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.efd97ep+0f, 0.0f, 0x1.44929ep+1f));
+    const fm_vec3_t in = cb_vec(-0x1.eddbe4p+0f, 0.0f, 0x1.45a08p+1f);
+    const float speed = sqrtf(in.x * in.x + in.z * in.z), dt = 0x1.111112p-5f;
+    const float top = s133_l423_tris[93][1]; /* 583: the tile's top, 0.2177 */
+    body.input_velocity = in;
+    /* the replay's two steps: onto the tile, then into the crack */
+    CB_STEP(&body, dt);
+    CB_STEP(&body, dt);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("crack beside a block's edge in the step zone (s133 l423): grounded foot", foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, top, foot.y); /* on the crack's edges (sag 0.05 mm), not under them */
+    /* on across the field, away from the block (6 steps: 0.64 m, within the rebuilt 1 m) */
+    const fm_vec3_t from = pos;
+    for (int f = 0; f < 6; f++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(char_body_foot_pos(&body).y >= top - 0.001f); /* never down into a crack */
+    }
+    const float went = ((pos.x - from.x) * in.x + (pos.z - from.z) * in.z) / speed;
+    TEST_ASSERT_TRUE(went >= 0.9f * speed * 6.0f * dt);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -5889,5 +6053,6 @@ int main(void)
     RUN_TEST(test_tile_crack_beside_valley_block_edge);
     RUN_TEST(test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_out);
     RUN_TEST(test_one_slide_body_falls_along_corner_crease);
+    RUN_TEST(test_crack_beside_block_edge_in_step_zone);
     return UNITY_END();
 }

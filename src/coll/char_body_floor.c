@@ -361,8 +361,11 @@ static inline bool dirs_around(const cb_ctx_t *c, const fm_vec3_t *dir, uint32_t
  * false when the ball there touches none of them (it rests on the floor). around (when
  * asked): those contacts hold the ball from all sides, two or more whose directions across
  * up (their normals') leave no gap of 180 degrees or more (dirs_around): it cannot roll off
- * them down onto the floor. */
-static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float level, float *rest, bool *around)
+ * them down onto the floor. under (when given): the floor's plane is no side either (as in
+ * hole_around): under a tilted up the ball lowered onto it touches it off the foot's column,
+ * a contact above the foot's floor level, leaning across up (soak s30 l188, below). */
+static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, float level, const coll_ray_hit_t *under,
+                         float *rest, bool *around)
 {
     const fm_vec3_t up = c->up;
     const float r = c->radius, tol = cb_len_tol(c, CB_STEP_EPS);
@@ -376,7 +379,8 @@ static bool rest_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_gap, flo
         const fm_vec3_t d = v3_sub(ct[i].point, foot);
         const float h = v3_dot(d, up), l2 = v3_len2(v3_reject(d, up));
         if (!v3_finite(ct[i].normal) || !(v3_dot(ct[i].normal, up) > 0.02f) || !(h <= level + tol) ||
-            !(h + floor_gap > tol) || !(l2 < r * r))
+            !(h + floor_gap > tol) || !(l2 < r * r) ||
+            (under && fabsf(v3_dot(v3_sub(ct[i].point, under->point), under->normal)) <= c->contact_eps))
             continue;
         const float hr = h - (r - sqrtf(r * r - l2));
         if (!found || hr > *rest) *rest = hr;
@@ -395,7 +399,7 @@ static bool surrounded_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_ga
                                float *rest)
 {
     bool around = false;
-    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h->point, foot), c->up), rest, &around) && around;
+    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h->point, foot), c->up), NULL, rest, &around) && around;
 }
 
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
@@ -586,6 +590,15 @@ static bool steep_edge_beside(const cb_ctx_t *c, const coll_sweep_hit_t *h, fm_v
 
 static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, support_t *s); /* (below) */
 
+/* The contact h lies on the plane of the floor the foot ray found under the foot (under; none:
+ * false): its normal within 2.6 degrees of that floor's, its point within half the step
+ * tolerance of its plane (ball_held: soak s45 l366, s61 l294, s133 l423). */
+static inline bool on_floor_plane(const cb_ctx_t *c, const coll_ray_hit_t *under, const coll_sweep_hit_t *h)
+{
+    return under && v3_dot(under->normal, h->normal) > 0.999f &&
+           fabsf(v3_dot(v3_sub(under->point, h->point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS);
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -632,9 +645,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
      * ball in a 19 mm crack between two such tiles rests on their edges; taken for the
      * floor's plane (r 0.72: 1.72 mm), the foot stood on the floor in the crack, 1.09 mm
      * under the ball resting on both (soak s45 l366). */
-    if (under && v3_dot(under->normal, h1.normal) > 0.999f &&
-        fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS))
-        return false;
+    if (on_floor_plane(c, under, &h1)) return false;
     /* (past_side: once, off a wall face the ball leans on at the drop's start, within
      * CB_MARGIN across it) */
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
@@ -677,8 +688,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
          * open end of a V valley's 0.13 m slot between two 18-degree ramps the foot was in,
          * onto the room floor: the rule gave up, the snap to that floor stopped on the edge,
          * and the foot stood 25 mm under the ball resting on both ramps (soak s61 l294). */
-        if (over_floor && k == 0 && under && v3_dot(under->normal, h1.normal) > 0.999f &&
-            fabsf(v3_dot(v3_sub(under->point, h1.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
+        if (over_floor && k == 0 && on_floor_plane(c, under, &h1) &&
             v3_len2(v3_reject(v3_sub(b0, b0_0), up)) > r * r) {
             float rest = 0.0f;
             if (surrounded_at_foot(c, foot, floor_gap, &h0, &rest))
@@ -937,7 +947,8 @@ again:;
                 const bool off_ahead = moved_off && ahead;
                 if (off_ahead) {
                     float rest = 0.0f;
-                    if (!rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), &rest, NULL)) goto hole;
+                    if (!rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h1p.point, foot), up), NULL, &rest, NULL))
+                        goto hole;
                     d1p = c->step - rest;
                 }
                 /* A nearly level edge counts as the face it bounds: the foot stands at its
@@ -956,6 +967,34 @@ again:;
                  * ball's rest by at most r (1 - sqrt 0.9), 5 % of a radius. */
                 if (level && !off_ahead) d1p -= r * (1.0f - v3_dot(h1p.normal, up)); /* (off_ahead: exact, above) */
                 slid_far = v3_len2(v3_reject(v3_sub(b0p, foot), up)) > r * r;
+                /* Slid down past the first contact out of the foot's column (more than a radius
+                 * across up) onto the very floor the foot ray found under the foot: the slid ball
+                 * says nothing about the foot (held on that floor it holds the body nowhere above
+                 * it, and the snap down to it stops on the first contact). The body's own ball at
+                 * the foot decides, as after the slide past a steep contact (above, soak s61 l294),
+                 * on the contacts no higher than the foot was at the step's start (as
+                 * edges_over_foot: the rule never lifts the body over where it was), the floor's
+                 * own plane not counted: held from all sides by them (a crack's two edges), it
+                 * rests there. An edge in the step zone beside the foot is what the sweep capsule
+                 * passes over, not what holds the ball at the foot. Walking (r 0.80, step 0.52) off
+                 * a tile's top into an 18 mm crack beside it, a block 0.27 m across up (its top
+                 * edge 0.405 m over the tiles, ahead), the drop met that edge (20 degrees off up),
+                 * the roll off it met nothing, and the slide down its tangent went 1.58 m across up
+                 * past the tile field's end onto the room floor; the snap to that floor stopped on
+                 * the block's edge, and the foot stood 165 mm under the tiles' tops (soak s133
+                 * l423). With the floor's plane counted, a body falling (r 0.23, step 1.02, up 4.9
+                 * degrees off y) beside a block's vertical corner, its foot in the step zone 0.2 mm
+                 * inside the block, stood 97 mm over the floor: the floor's contact, off the foot's
+                 * column under the tilted up, and the block's sides "surrounded" the ball (soak s30
+                 * l188, a branch run). */
+                if (slid && slid_far && on_floor_plane(c, under, &h1p)) {
+                    float rest = 0.0f;
+                    bool around = false;
+                    if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(owner_position(b), pos), up), under, &rest,
+                                     &around) &&
+                        around)
+                        return held_at(rest, reach, -rest, up, h1.point, &h1, out, far_out);
+                }
                 b0 = b0p;
                 h1 = h1p;
                 d1 = d1p;
