@@ -5972,6 +5972,155 @@ static void test_crack_beside_block_edge_in_step_zone(void)
     TEST_ASSERT_TRUE(went >= 0.9f * speed * 6.0f * dt);
 }
 
+/* Soak s134 l200 (generator 2): the static triangles within 0.1 m of the full capsule along
+ * its last step (`dumptris` floats of the checker's doubles; the tiles' and blocks' bottoms,
+ * in the room floor's plane, left out): the room floor (23); a field of rotated tiles 0.25-0.26
+ * m high with 16 mm cracks between them (the two either side of the foot's crack, 0.2572
+ * high: tops 296/297 and 248/249; the one stood on before, 0.2609: 284/285); a slab 0.192 m
+ * high (558-567); a stack of three blocks 0.245, 0.491 and 0.736 m high sharing their +z face
+ * (941-974: a staircase rising towards -z), whose tallest one's corner (17.911, 0.736, -9.999)
+ * is 0.48 m over the tiles, 0.57 m across up from the foot. */
+static const float s134_l200_tris[][9] = {
+    {0x1p+4f, 0x0p+0f, -0x1p+4f, 0x1p+4f, 0x0p+0f, -0x1p+3f, 0x1.8p+4f, 0x0p+0f, -0x1p+3f}, /* 23 */
+    {0x1.2bdaeep+4f, 0x0p+0f, -0x1.2bfbb2p+3f, 0x1.218752p+4f, 0x0p+0f, -0x1.23bf1ap+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f}, /* 184 */
+    {0x1.2bdaeep+4f, 0x0p+0f, -0x1.2bfbb2p+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f, 0x1.2bdaeep+4f, 0x1.091386p-2f, -0x1.2bfbb2p+3f}, /* 185 */
+    {0x1.2ff93ap+4f, 0x1.091386p-2f, -0x1.17547ap+3f, 0x1.2bdaeep+4f, 0x1.091386p-2f, -0x1.2bfbb2p+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f}, /* 188 */
+    {0x1.2ff93ap+4f, 0x1.091386p-2f, -0x1.17547ap+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f, 0x1.25a59ep+4f, 0x1.091386p-2f, -0x1.0f17e2p+3f}, /* 189 */
+    {0x1.25a59ep+4f, 0x0p+0f, -0x1.0f17e2p+3f, 0x1.25a59ep+4f, 0x1.091386p-2f, -0x1.0f17e2p+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f}, /* 192 */
+    {0x1.25a59ep+4f, 0x0p+0f, -0x1.0f17e2p+3f, 0x1.218752p+4f, 0x1.091386p-2f, -0x1.23bf1ap+3f, 0x1.218752p+4f, 0x0p+0f, -0x1.23bf1ap+3f}, /* 193 */
+    {0x1.214af6p+4f, 0x0p+0f, -0x1.238ef6p+3f, 0x1.16f75ap+4f, 0x1.f5c07ap-3f, -0x1.1b525ep+3f, 0x1.214af6p+4f, 0x1.f5c07ap-3f, -0x1.238ef6p+3f}, /* 197 */
+    {0x1.25694p+4f, 0x1.f5c07ap-3f, -0x1.0ee7bep+3f, 0x1.214af6p+4f, 0x1.f5c07ap-3f, -0x1.238ef6p+3f, 0x1.16f75ap+4f, 0x1.f5c07ap-3f, -0x1.1b525ep+3f}, /* 200 */
+    {0x1.25694p+4f, 0x0p+0f, -0x1.0ee7bep+3f, 0x1.214af6p+4f, 0x0p+0f, -0x1.238ef6p+3f, 0x1.214af6p+4f, 0x1.f5c07ap-3f, -0x1.238ef6p+3f}, /* 202 */
+    {0x1.25694p+4f, 0x0p+0f, -0x1.0ee7bep+3f, 0x1.214af6p+4f, 0x1.f5c07ap-3f, -0x1.238ef6p+3f, 0x1.25694p+4f, 0x1.f5c07ap-3f, -0x1.0ee7bep+3f}, /* 203 */
+    {0x1.323488p+4f, 0x0p+0f, -0x1.49885ep+3f, 0x1.27e0ecp+4f, 0x0p+0f, -0x1.414bc8p+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f}, /* 220 */
+    {0x1.323488p+4f, 0x0p+0f, -0x1.49885ep+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f, 0x1.323488p+4f, 0x1.07686cp-2f, -0x1.49885ep+3f}, /* 221 */
+    {0x1.3652d4p+4f, 0x1.07686cp-2f, -0x1.34e126p+3f, 0x1.323488p+4f, 0x1.07686cp-2f, -0x1.49885ep+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f}, /* 224 */
+    {0x1.3652d4p+4f, 0x1.07686cp-2f, -0x1.34e126p+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f, 0x1.2bff38p+4f, 0x1.07686cp-2f, -0x1.2ca49p+3f}, /* 225 */
+    {0x1.2bff38p+4f, 0x0p+0f, -0x1.2ca49p+3f, 0x1.2bff38p+4f, 0x1.07686cp-2f, -0x1.2ca49p+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f}, /* 228 */
+    {0x1.2bff38p+4f, 0x0p+0f, -0x1.2ca49p+3f, 0x1.27e0ecp+4f, 0x1.07686cp-2f, -0x1.414bc8p+3f, 0x1.27e0ecp+4f, 0x0p+0f, -0x1.414bc8p+3f}, /* 229 */
+    {0x1.2bc2dcp+4f, 0x0p+0f, -0x1.2c746ap+3f, 0x1.2bc2dcp+4f, 0x1.fef316p-3f, -0x1.2c746ap+3f, 0x1.216f3ep+4f, 0x1.fef316p-3f, -0x1.2437d2p+3f}, /* 230 */
+    {0x1.2bc2dcp+4f, 0x0p+0f, -0x1.2c746ap+3f, 0x1.216f3ep+4f, 0x1.fef316p-3f, -0x1.2437d2p+3f, 0x1.216f3ep+4f, 0x0p+0f, -0x1.2437d2p+3f}, /* 231 */
+    {0x1.27a49p+4f, 0x0p+0f, -0x1.411ba2p+3f, 0x1.1d50f4p+4f, 0x0p+0f, -0x1.38df0cp+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f}, /* 232 */
+    {0x1.27a49p+4f, 0x0p+0f, -0x1.411ba2p+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f, 0x1.27a49p+4f, 0x1.fef316p-3f, -0x1.411ba2p+3f}, /* 233 */
+    {0x1.2bc2dcp+4f, 0x1.fef316p-3f, -0x1.2c746ap+3f, 0x1.27a49p+4f, 0x1.fef316p-3f, -0x1.411ba2p+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f}, /* 236 */
+    {0x1.2bc2dcp+4f, 0x1.fef316p-3f, -0x1.2c746ap+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f, 0x1.216f3ep+4f, 0x1.fef316p-3f, -0x1.2437d2p+3f}, /* 237 */
+    {0x1.2bc2dcp+4f, 0x0p+0f, -0x1.2c746ap+3f, 0x1.27a49p+4f, 0x0p+0f, -0x1.411ba2p+3f, 0x1.27a49p+4f, 0x1.fef316p-3f, -0x1.411ba2p+3f}, /* 238 */
+    {0x1.2bc2dcp+4f, 0x0p+0f, -0x1.2c746ap+3f, 0x1.27a49p+4f, 0x1.fef316p-3f, -0x1.411ba2p+3f, 0x1.2bc2dcp+4f, 0x1.fef316p-3f, -0x1.2c746ap+3f}, /* 239 */
+    {0x1.216f3ep+4f, 0x0p+0f, -0x1.2437d2p+3f, 0x1.216f3ep+4f, 0x1.fef316p-3f, -0x1.2437d2p+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f}, /* 240 */
+    {0x1.216f3ep+4f, 0x0p+0f, -0x1.2437d2p+3f, 0x1.1d50f4p+4f, 0x1.fef316p-3f, -0x1.38df0cp+3f, 0x1.1d50f4p+4f, 0x0p+0f, -0x1.38df0cp+3f}, /* 241 */
+    {0x1.2132e2p+4f, 0x0p+0f, -0x1.2407aep+3f, 0x1.2132e2p+4f, 0x1.07686cp-2f, -0x1.2407aep+3f, 0x1.16df46p+4f, 0x1.07686cp-2f, -0x1.1bcb16p+3f}, /* 242 */
+    {0x1.1d1498p+4f, 0x0p+0f, -0x1.38aee6p+3f, 0x1.12c0fap+4f, 0x0p+0f, -0x1.30724ep+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f}, /* 244 */
+    {0x1.1d1498p+4f, 0x0p+0f, -0x1.38aee6p+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f, 0x1.1d1498p+4f, 0x1.07686cp-2f, -0x1.38aee6p+3f}, /* 245 */
+    {0x1.2132e2p+4f, 0x1.07686cp-2f, -0x1.2407aep+3f, 0x1.1d1498p+4f, 0x1.07686cp-2f, -0x1.38aee6p+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f}, /* 248 */
+    {0x1.2132e2p+4f, 0x1.07686cp-2f, -0x1.2407aep+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f, 0x1.16df46p+4f, 0x1.07686cp-2f, -0x1.1bcb16p+3f}, /* 249 */
+    {0x1.2132e2p+4f, 0x0p+0f, -0x1.2407aep+3f, 0x1.1d1498p+4f, 0x0p+0f, -0x1.38aee6p+3f, 0x1.1d1498p+4f, 0x1.07686cp-2f, -0x1.38aee6p+3f}, /* 250 */
+    {0x1.2132e2p+4f, 0x0p+0f, -0x1.2407aep+3f, 0x1.1d1498p+4f, 0x1.07686cp-2f, -0x1.38aee6p+3f, 0x1.2132e2p+4f, 0x1.07686cp-2f, -0x1.2407aep+3f}, /* 251 */
+    {0x1.16df46p+4f, 0x0p+0f, -0x1.1bcb16p+3f, 0x1.16df46p+4f, 0x1.07686cp-2f, -0x1.1bcb16p+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f}, /* 252 */
+    {0x1.16df46p+4f, 0x0p+0f, -0x1.1bcb16p+3f, 0x1.12c0fap+4f, 0x1.07686cp-2f, -0x1.30724ep+3f, 0x1.12c0fap+4f, 0x0p+0f, -0x1.30724ep+3f}, /* 253 */
+    {0x1.321c76p+4f, 0x0p+0f, -0x1.4a0118p+3f, 0x1.321c76p+4f, 0x1.1901dap-2f, -0x1.4a0118p+3f, 0x1.27c8dap+4f, 0x1.1901dap-2f, -0x1.41c48p+3f}, /* 266 */
+    {0x1.321c76p+4f, 0x0p+0f, -0x1.4a0118p+3f, 0x1.27c8dap+4f, 0x1.1901dap-2f, -0x1.41c48p+3f, 0x1.27c8dap+4f, 0x0p+0f, -0x1.41c48p+3f}, /* 267 */
+    {0x1.321c76p+4f, 0x1.1901dap-2f, -0x1.4a0118p+3f, 0x1.23aa8ep+4f, 0x1.1901dap-2f, -0x1.566bb8p+3f, 0x1.27c8dap+4f, 0x1.1901dap-2f, -0x1.41c48p+3f}, /* 273 */
+    {0x1.27c8dap+4f, 0x0p+0f, -0x1.41c48p+3f, 0x1.27c8dap+4f, 0x1.1901dap-2f, -0x1.41c48p+3f, 0x1.23aa8ep+4f, 0x1.1901dap-2f, -0x1.566bb8p+3f}, /* 276 */
+    {0x1.27c8dap+4f, 0x0p+0f, -0x1.41c48p+3f, 0x1.23aa8ep+4f, 0x1.1901dap-2f, -0x1.566bb8p+3f, 0x1.23aa8ep+4f, 0x0p+0f, -0x1.566bb8p+3f}, /* 277 */
+    {0x1.278c7cp+4f, 0x0p+0f, -0x1.41945ap+3f, 0x1.278c7cp+4f, 0x1.0b2af2p-2f, -0x1.41945ap+3f, 0x1.1d38ep+4f, 0x1.0b2af2p-2f, -0x1.3957c4p+3f}, /* 278 */
+    {0x1.278c7cp+4f, 0x0p+0f, -0x1.41945ap+3f, 0x1.1d38ep+4f, 0x1.0b2af2p-2f, -0x1.3957c4p+3f, 0x1.1d38ep+4f, 0x0p+0f, -0x1.3957c4p+3f}, /* 279 */
+    {0x1.236e32p+4f, 0x0p+0f, -0x1.563b94p+3f, 0x1.191a96p+4f, 0x0p+0f, -0x1.4dfefcp+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f}, /* 280 */
+    {0x1.236e32p+4f, 0x0p+0f, -0x1.563b94p+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f, 0x1.236e32p+4f, 0x1.0b2af2p-2f, -0x1.563b94p+3f}, /* 281 */
+    {0x1.278c7cp+4f, 0x1.0b2af2p-2f, -0x1.41945ap+3f, 0x1.236e32p+4f, 0x1.0b2af2p-2f, -0x1.563b94p+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f}, /* 284 */
+    {0x1.278c7cp+4f, 0x1.0b2af2p-2f, -0x1.41945ap+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f, 0x1.1d38ep+4f, 0x1.0b2af2p-2f, -0x1.3957c4p+3f}, /* 285 */
+    {0x1.278c7cp+4f, 0x0p+0f, -0x1.41945ap+3f, 0x1.236e32p+4f, 0x0p+0f, -0x1.563b94p+3f, 0x1.236e32p+4f, 0x1.0b2af2p-2f, -0x1.563b94p+3f}, /* 286 */
+    {0x1.278c7cp+4f, 0x0p+0f, -0x1.41945ap+3f, 0x1.236e32p+4f, 0x1.0b2af2p-2f, -0x1.563b94p+3f, 0x1.278c7cp+4f, 0x1.0b2af2p-2f, -0x1.41945ap+3f}, /* 287 */
+    {0x1.1d38ep+4f, 0x0p+0f, -0x1.3957c4p+3f, 0x1.1d38ep+4f, 0x1.0b2af2p-2f, -0x1.3957c4p+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f}, /* 288 */
+    {0x1.1d38ep+4f, 0x0p+0f, -0x1.3957c4p+3f, 0x1.191a96p+4f, 0x1.0b2af2p-2f, -0x1.4dfefcp+3f, 0x1.191a96p+4f, 0x0p+0f, -0x1.4dfefcp+3f}, /* 289 */
+    {0x1.1cfc84p+4f, 0x0p+0f, -0x1.39279ep+3f, 0x1.1cfc84p+4f, 0x1.07686cp-2f, -0x1.39279ep+3f, 0x1.12a8e8p+4f, 0x1.07686cp-2f, -0x1.30eb08p+3f}, /* 290 */
+    {0x1.1cfc84p+4f, 0x0p+0f, -0x1.39279ep+3f, 0x1.12a8e8p+4f, 0x1.07686cp-2f, -0x1.30eb08p+3f, 0x1.12a8e8p+4f, 0x0p+0f, -0x1.30eb08p+3f}, /* 291 */
+    {0x1.18de38p+4f, 0x0p+0f, -0x1.4dced6p+3f, 0x1.0e8a9cp+4f, 0x1.07686cp-2f, -0x1.45924p+3f, 0x1.18de38p+4f, 0x1.07686cp-2f, -0x1.4dced6p+3f}, /* 293 */
+    {0x1.1cfc84p+4f, 0x1.07686cp-2f, -0x1.39279ep+3f, 0x1.18de38p+4f, 0x1.07686cp-2f, -0x1.4dced6p+3f, 0x1.0e8a9cp+4f, 0x1.07686cp-2f, -0x1.45924p+3f}, /* 296 */
+    {0x1.1cfc84p+4f, 0x1.07686cp-2f, -0x1.39279ep+3f, 0x1.0e8a9cp+4f, 0x1.07686cp-2f, -0x1.45924p+3f, 0x1.12a8e8p+4f, 0x1.07686cp-2f, -0x1.30eb08p+3f}, /* 297 */
+    {0x1.1cfc84p+4f, 0x0p+0f, -0x1.39279ep+3f, 0x1.18de38p+4f, 0x0p+0f, -0x1.4dced6p+3f, 0x1.18de38p+4f, 0x1.07686cp-2f, -0x1.4dced6p+3f}, /* 298 */
+    {0x1.1cfc84p+4f, 0x0p+0f, -0x1.39279ep+3f, 0x1.18de38p+4f, 0x1.07686cp-2f, -0x1.4dced6p+3f, 0x1.1cfc84p+4f, 0x1.07686cp-2f, -0x1.39279ep+3f}, /* 299 */
+    {0x1.12a8e8p+4f, 0x0p+0f, -0x1.30eb08p+3f, 0x1.12a8e8p+4f, 0x1.07686cp-2f, -0x1.30eb08p+3f, 0x1.0e8a9cp+4f, 0x1.07686cp-2f, -0x1.45924p+3f}, /* 300 */
+    {0x1.12a8e8p+4f, 0x0p+0f, -0x1.30eb08p+3f, 0x1.0e8a9cp+4f, 0x1.07686cp-2f, -0x1.45924p+3f, 0x1.0e8a9cp+4f, 0x0p+0f, -0x1.45924p+3f}, /* 301 */
+    {0x1.216e9p+4f, 0x0p+0f, -0x1.3449b4p+3f, 0x1.216e9p+4f, 0x1.89c1c2p-3f, -0x1.3449b4p+3f, 0x1.dbcfc4p+3f, 0x1.89c1c2p-3f, -0x1.889012p+3f}, /* 558 */
+    {0x1.216e9p+4f, 0x0p+0f, -0x1.3449b4p+3f, 0x1.dbcfc4p+3f, 0x1.89c1c2p-3f, -0x1.889012p+3f, 0x1.dbcfc4p+3f, 0x0p+0f, -0x1.889012p+3f}, /* 559 */
+    {0x1.216e9p+4f, 0x1.89c1c2p-3f, -0x1.3449b4p+3f, 0x1.512c98p+4f, 0x1.89c1c2p-3f, -0x1.a90c24p+3f, 0x1.1da5eap+4f, 0x1.89c1c2p-3f, -0x1.fd5284p+3f}, /* 564 */
+    {0x1.216e9p+4f, 0x1.89c1c2p-3f, -0x1.3449b4p+3f, 0x1.1da5eap+4f, 0x1.89c1c2p-3f, -0x1.fd5284p+3f, 0x1.dbcfc4p+3f, 0x1.89c1c2p-3f, -0x1.889012p+3f}, /* 565 */
+    {0x1.216e9p+4f, 0x0p+0f, -0x1.3449b4p+3f, 0x1.512c98p+4f, 0x0p+0f, -0x1.a90c24p+3f, 0x1.512c98p+4f, 0x1.89c1c2p-3f, -0x1.a90c24p+3f}, /* 566 */
+    {0x1.216e9p+4f, 0x0p+0f, -0x1.3449b4p+3f, 0x1.512c98p+4f, 0x1.89c1c2p-3f, -0x1.a90c24p+3f, 0x1.216e9p+4f, 0x1.89c1c2p-3f, -0x1.3449b4p+3f}, /* 567 */
+    {0x1.1ed3d4p+4f, 0x0p+0f, -0x1.6a27b8p+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f}, /* 941 */
+    {0x1.1ed3d4p+4f, 0x0p+0f, -0x1.6a27b8p+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f, 0x1.1ed3d4p+4f, 0x1.f6867ap-3f, -0x1.6a27b8p+3f}, /* 942 */
+    {0x1.5de1fcp+4f, 0x1.f6867ap-3f, -0x1.68a65cp+3f, 0x1.1ed3d4p+4f, 0x1.f6867ap-3f, -0x1.6a27b8p+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f}, /* 945 */
+    {0x1.5de1fcp+4f, 0x1.f6867ap-3f, -0x1.68a65cp+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f, 0x1.5da188p+4f, 0x1.f6867ap-3f, -0x1.3e7738p+3f}, /* 946 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.5da188p+4f, 0x1.f6867ap-3f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f}, /* 949 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.f6867ap-3f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f}, /* 950 */
+    {0x1.1ebe58p+4f, 0x0p+0f, -0x1.5c1802p+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f}, /* 953 */
+    {0x1.1ebe58p+4f, 0x0p+0f, -0x1.5c1802p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f, 0x1.1ebe58p+4f, 0x1.f6867ap-2f, -0x1.5c1802p+3f}, /* 954 */
+    {0x1.5dcc8p+4f, 0x1.f6867ap-2f, -0x1.5a96a4p+3f, 0x1.1ebe58p+4f, 0x1.f6867ap-2f, -0x1.5c1802p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f}, /* 957 */
+    {0x1.5dcc8p+4f, 0x1.f6867ap-2f, -0x1.5a96a4p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f, 0x1.5da188p+4f, 0x1.f6867ap-2f, -0x1.3e7738p+3f}, /* 958 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.5da188p+4f, 0x1.f6867ap-2f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f}, /* 961 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.f6867ap-2f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f}, /* 962 */
+    {0x1.1ea8dcp+4f, 0x0p+0f, -0x1.4e084cp+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f}, /* 965 */
+    {0x1.1ea8dcp+4f, 0x0p+0f, -0x1.4e084cp+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f, 0x1.1ea8dcp+4f, 0x1.78e4dcp-1f, -0x1.4e084cp+3f}, /* 966 */
+    {0x1.5db704p+4f, 0x1.78e4dcp-1f, -0x1.4c86eep+3f, 0x1.1ea8dcp+4f, 0x1.78e4dcp-1f, -0x1.4e084cp+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f}, /* 969 */
+    {0x1.5db704p+4f, 0x1.78e4dcp-1f, -0x1.4c86eep+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f, 0x1.5da188p+4f, 0x1.78e4dcp-1f, -0x1.3e7738p+3f}, /* 970 */
+    {0x1.5db704p+4f, 0x0p+0f, -0x1.4c86eep+3f, 0x1.1ea8dcp+4f, 0x0p+0f, -0x1.4e084cp+3f, 0x1.1ea8dcp+4f, 0x1.78e4dcp-1f, -0x1.4e084cp+3f}, /* 971 */
+    {0x1.5db704p+4f, 0x0p+0f, -0x1.4c86eep+3f, 0x1.1ea8dcp+4f, 0x1.78e4dcp-1f, -0x1.4e084cp+3f, 0x1.5db704p+4f, 0x1.78e4dcp-1f, -0x1.4c86eep+3f}, /* 972 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.5da188p+4f, 0x1.78e4dcp-1f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f}, /* 973 */
+    {0x1.5da188p+4f, 0x0p+0f, -0x1.3e7738p+3f, 0x1.1e936p+4f, 0x1.78e4dcp-1f, -0x1.3ff896p+3f, 0x1.1e936p+4f, 0x0p+0f, -0x1.3ff896p+3f} /* 974 */
+};
+
+/* A body (r 0.94, h 3.12, step and snap 0.50, walkable to 30.9 degrees, 8 slides) that walked
+ * off the tallest block at 20 m/s onto the tile field stands on a tile (0.2609), then walks
+ * on (-18.65, 0, 7.73) m/s for one step: the foot ends over the 16 mm crack between two tiles
+ * 0.2572 high. The crack rule's drop met the tallest block's corner behind it (37.5 degrees
+ * off up: steep), the slide down that corner's tangent went 0.37 m across up onto one tile's
+ * far top edge, the move off that edge fell to the room floor: the rule gave up, and the snap
+ * to the floor through the crack slid off the block's corner, the foot 233 mm under the tiles
+ * (soak s134 l200). The body's own ball at the foot rests on the crack's two edges: it stands
+ * there, at the tiles' top, grounded, and stays there at rest. The replay's last step: its
+ * start (the owner point is the foot), its input and dt; the step before it lands the body
+ * on the tile it stood on. */
+static void test_walk_off_block_corner_onto_tile_crack(void)
+{
+    cb_world_reset();
+    geo_tris(s134_l200_tris, sizeof s134_l200_tris / sizeof s134_l200_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.df86bp-1f, 0x1.8ee3f4p+1f, 0x1.02194ap-1f, 0x1.02194ap-1f,
+                                        0x1.13dd22p-1f, 0x1.d9011ap+4f, 0x1.e76a18p+4f, 8, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(0x1.216836p+4f, 0x1.0b2af8p-2f, -0x1.3cccccp+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const float dt = 0x1.111112p-5f, tiles = 0x1.076454p-2f; /* 0.2572: the crack's two tiles */
+    CB_STEP(&body, dt); /* lands on the tile 0.2609 high */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    const fm_vec3_t input = cb_vec(-0x1.2a7806p+4f, 0.0f, 0x1.ee75b8p+2f);
+    body.input_velocity = input;
+    const fm_vec3_t before = pos;
+    CB_STEP(&body, dt);
+    fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("walked off a block's corner onto a 16 mm tile crack (s134 l200): grounded foot (tiles 0.2572)",
+              foot.y, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= tiles - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= 0x1.0b2af8p-2f + 0.001f); /* not lifted over where it walked from */
+    /* it went the way it was asked, the whole step (0.62 m across up) */
+    const float along = ((pos.x - before.x) * input.x + (pos.z - before.z) * input.z) /
+                        sqrtf(input.x * input.x + input.z * input.z);
+    TEST_ASSERT_TRUE(along > 0.6f);
+    /* and at rest there it stays standing at the tiles' top */
+    body.input_velocity = cb_vec(0.0f, 0.0f, 0.0f);
+    for (int i = 0; i < 10; i++) {
+        CB_STEP(&body, dt);
+        foot = char_body_foot_pos(&body);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(foot.y >= tiles - 0.001f);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6054,5 +6203,6 @@ int main(void)
     RUN_TEST(test_teleported_into_thin_slab_beside_leaning_wall_reports_its_way_out);
     RUN_TEST(test_one_slide_body_falls_along_corner_crease);
     RUN_TEST(test_crack_beside_block_edge_in_step_zone);
+    RUN_TEST(test_walk_off_block_corner_onto_tile_crack);
     return UNITY_END();
 }
