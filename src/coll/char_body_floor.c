@@ -588,15 +588,17 @@ static void edges_over_foot(const cb_ctx_t *c, fm_vec3_t pos, bool highest, supp
 
 /* h2 lies on the straight edge the ball touches at h1, further along it: both contact
  * normals are at right angles to that edge, so the line through h1 along their cross
- * product passes through h2 (within the contact tolerance). Such a contact is no far side
- * of a gap: a ball is not held between two points of one straight edge. Normals within
- * about half a degree of each other give no line: false (as before). */
+ * product passes through h2 (within the skin: the far side's own test, below, asks more
+ * than a skin across, so under an up square to the edges a parallel edge beyond a gap is
+ * never taken for this one). Such a contact is no far side of a gap: a ball is not held
+ * between two points of one straight edge. Normals within about half a degree of each
+ * other give no line: false (as before). */
 static inline bool on_edge_line(const cb_ctx_t *c, const coll_sweep_hit_t *h1, const coll_sweep_hit_t *h2)
 {
     const fm_vec3_t e = v3_cross(h1->normal, h2->normal);
     const float el = v3_len(e);
     if (!(el > 1e-2f)) return false;
-    return v3_len(v3_reject(v3_sub(h2->point, h1->point), v3_scale(e, 1.0f / el))) <= c->contact_eps;
+    return v3_len(v3_reject(v3_sub(h2->point, h1->point), v3_scale(e, 1.0f / el))) <= c->skin;
 }
 
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
