@@ -6121,6 +6121,103 @@ static void test_walk_off_block_corner_onto_tile_crack(void)
     }
 }
 
+/* ---- a foot on the room floor beside a low slab under a tilted up, against the room wall ---- */
+
+/* Soak s132 l377 (generator 2): the 21 static triangles within 2 m of the body's centre
+ * (floats of the checker's doubles; comments: the checker's triangle numbers): the room floor
+ * (y 0, 2-5), the room walls z = -24 (80-81) and x = -24 (84), a slab 3.41 x 3.24 m, 0.0937
+ * high, turned 25.1 degrees about y (934-945), and the side of a second piece beyond it
+ * (932-933). r 0.431, height 2.755, step 0.124, snap 0.530, floor angle 56.4 degrees, one
+ * slide, up (-0.008, 0.997, -0.074): 4.2 degrees off y, leaning towards the wall. The body
+ * walks (-5.7, 0, -0.17) m/s into the slab's long east side with its top ball on the wall, its
+ * foot on the room floor 2 cm beside the slab, whose top edge its full bottom ball overlaps
+ * (the step zone). The crack rule's half-radius drop off that edge met the same edge 0.17 m
+ * further along (the move "across" off it ran 52 degrees along it under the tilted up), took
+ * it for a crack's far side and held the ball at the slab's top; no room for that lift (the
+ * wall), and the body hung at rest 7.7 mm over the floor, airborne, for ever. */
+static const float s132_l377_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1.8p+4f}, /* 2 */
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 3 */
+    {-0x1p+3f, 0x0p+0f, -0x1.8p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1.8p+4f}, /* 4 */
+    {-0x1p+3f, 0x0p+0f, -0x1.8p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f, 0x0p+0f, 0x0p+0f, -0x1p+4f}, /* 5 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 */
+    {-0x1.77e0bep+3f, 0x0p+0f, -0x1.327714p+4f, -0x1.77e0bep+3f, 0x1.cd44b4p-4f, -0x1.327714p+4f, -0x1.14f55ep+3f, 0x1.cd44b4p-4f, -0x1.499972p+4f}, /* 932 */
+    {-0x1.77e0bep+3f, 0x0p+0f, -0x1.327714p+4f, -0x1.14f55ep+3f, 0x1.cd44b4p-4f, -0x1.499972p+4f, -0x1.14f55ep+3f, 0x0p+0f, -0x1.499972p+4f}, /* 933 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.7bb35ap+3f, 0x1.7fc3d8p-4f, -0x1.368d2ep+4f, -0x1.a78f5ep+3f, 0x1.7fc3d8p-4f, -0x1.656f9ep+4f}, /* 934 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.a78f5ep+3f, 0x1.7fc3d8p-4f, -0x1.656f9ep+4f, -0x1.a78f5ep+3f, 0x0p+0f, -0x1.656f9ep+4f}, /* 935 */
+    {-0x1.18c7fap+3f, 0x0p+0f, -0x1.4daf8cp+4f, -0x1.44a4p+3f, 0x0p+0f, -0x1.7c91fcp+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f}, /* 936 */
+    {-0x1.18c7fap+3f, 0x0p+0f, -0x1.4daf8cp+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f, -0x1.18c7fap+3f, 0x1.7fc3d8p-4f, -0x1.4daf8cp+4f}, /* 937 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.a78f5ep+3f, 0x0p+0f, -0x1.656f9ep+4f, -0x1.44a4p+3f, 0x0p+0f, -0x1.7c91fcp+4f}, /* 938 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.44a4p+3f, 0x0p+0f, -0x1.7c91fcp+4f, -0x1.18c7fap+3f, 0x0p+0f, -0x1.4daf8cp+4f}, /* 939 */
+    {-0x1.7bb35ap+3f, 0x1.7fc3d8p-4f, -0x1.368d2ep+4f, -0x1.18c7fap+3f, 0x1.7fc3d8p-4f, -0x1.4daf8cp+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f}, /* 940 */
+    {-0x1.7bb35ap+3f, 0x1.7fc3d8p-4f, -0x1.368d2ep+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f, -0x1.a78f5ep+3f, 0x1.7fc3d8p-4f, -0x1.656f9ep+4f}, /* 941 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.18c7fap+3f, 0x0p+0f, -0x1.4daf8cp+4f, -0x1.18c7fap+3f, 0x1.7fc3d8p-4f, -0x1.4daf8cp+4f}, /* 942 */
+    {-0x1.7bb35ap+3f, 0x0p+0f, -0x1.368d2ep+4f, -0x1.18c7fap+3f, 0x1.7fc3d8p-4f, -0x1.4daf8cp+4f, -0x1.7bb35ap+3f, 0x1.7fc3d8p-4f, -0x1.368d2ep+4f}, /* 943 */
+    {-0x1.a78f5ep+3f, 0x0p+0f, -0x1.656f9ep+4f, -0x1.a78f5ep+3f, 0x1.7fc3d8p-4f, -0x1.656f9ep+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f}, /* 944 */
+    {-0x1.a78f5ep+3f, 0x0p+0f, -0x1.656f9ep+4f, -0x1.44a4p+3f, 0x1.7fc3d8p-4f, -0x1.7c91fcp+4f, -0x1.44a4p+3f, 0x0p+0f, -0x1.7c91fcp+4f}, /* 945 */
+};
+
+static void test_foot_beside_low_slab_tilted_up_against_wall_stands(void)
+{
+    cb_world_reset();
+    geo_tris(s132_l377_tris, sizeof s132_l377_tris / sizeof s132_l377_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.b966fp-2f, 0x1.60a5dep+1f, 0x1.fda95ep-4f, 0x1.0f8ddp-1f,
+                                        0x1.f80f2ep-1f, 0x1.25403p+3f, 0x1.e58e2ap+4f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.up = cb_vec(-0x1.ff922p-8f, 0x1.fe97fep-1f, -0x1.2daec2p-4f);
+    const fm_vec3_t start = cb_vec(-0x1.3e03dp+3f, 0x1.5fade8p+0f, -0x1.77f8c4p+4f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    /* the replay's 32 frames: its input held, a jump (4.18 m/s along up) on frame 1 */
+    static const float dts[32] = {
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.0f996ap-5f, 0x1.99999ap-5f,
+        0x1.68e5c8p-4f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+        0x1.7dee06p-3f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f,
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.16d26ap-4f,
+        0x1.99999ap-5f, 0x1.99999ap-5f, 0x1.df4f82p-5f, 0x1.99999ap-5f,
+    };
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded_late = 0;
+    float worst = 0.0f, highest = 0.0f;
+    for (int f = 0; f < 32; f++) {
+        if (f == 1) { /* as the soak's jump: the velocity plus 4.18 m/s along up */
+            const fm_vec3_t v = char_body_get_velocity(&body), u = char_body_get_settings(&body)->up;
+            const float j = 0x1.0b9fe6p+2f;
+            char_body_set_velocity(&body, cb_vec(v.x + u.x * j, v.y + u.y * j, v.z + u.z * j));
+        }
+        body.input_velocity = cb_vec(-0x1.6f4c36p+2f, 0.0f, -0x1.644468p-3f);
+        CB_STEP(&body, dts[f]);
+        if (!char_body_is_on_floor(&body)) continue;
+        if (f >= 4) {
+            grounded_late++;
+            if (char_body_foot_pos(&body).y > highest) highest = char_body_foot_pos(&body).y;
+        }
+        if (foot_under_walkable(s132_l377_tris, sizeof s132_l377_tris / sizeof s132_l377_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("foot beside a low slab, tilted up, against the wall (s132 l377): frames 4-31 grounded",
+              (float)grounded_late, "");
+    cb_report("foot beside a low slab, tilted up, against the wall (s132 l377): highest grounded foot", highest, "m");
+    TEST_ASSERT_EQUAL_INT(28, grounded_late);
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    /* on the room floor beside the slab (its top 0.0937), not hanging over it */
+    TEST_ASSERT_TRUE(highest < 0.001f);
+    TEST_ASSERT_TRUE(fabsf(foot.y) < 0.001f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+    /* where it was: against the wall and the slab's side */
+    TEST_ASSERT_TRUE(fabsf(pos.x - start.x) + fabsf(pos.z - start.z) < 0.05f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6204,5 +6301,6 @@ int main(void)
     RUN_TEST(test_one_slide_body_falls_along_corner_crease);
     RUN_TEST(test_crack_beside_block_edge_in_step_zone);
     RUN_TEST(test_walk_off_block_corner_onto_tile_crack);
+    RUN_TEST(test_foot_beside_low_slab_tilted_up_against_wall_stands);
     return UNITY_END();
 }

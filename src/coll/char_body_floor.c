@@ -599,6 +599,21 @@ static inline bool on_floor_plane(const cb_ctx_t *c, const coll_ray_hit_t *under
            fabsf(v3_dot(v3_sub(under->point, h->point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS);
 }
 
+/* h2 lies on the straight edge the ball touches at h1, further along it: both contact
+ * normals are at right angles to that edge, so the line through h1 along their cross
+ * product passes through h2 (within the skin: the far side's own test, below, asks more
+ * than a skin across, so under an up square to the edges a parallel edge beyond a gap is
+ * never taken for this one). Such a contact is no far side of a gap: a ball is not held
+ * between two points of one straight edge. Normals within about half a degree of each
+ * other give no line: false (as before). */
+static inline bool on_edge_line(const cb_ctx_t *c, const coll_sweep_hit_t *h1, const coll_sweep_hit_t *h2)
+{
+    const fm_vec3_t e = v3_cross(h1->normal, h2->normal);
+    const float el = v3_len(e);
+    if (!(el > 1e-2f)) return false;
+    return v3_len(v3_reject(v3_sub(h2->point, h1->point), v3_scale(e, 1.0f / el))) <= c->skin;
+}
+
 /* hole_only: the ball is held only in a hole (ball_in_hole), its roll is not looked at
  * (piece_beyond let a body standing on the floor under its foot through). past_side: with no floor
  * under the foot too (wall_under_crack's: the foot ray found a steep face through the gap),
@@ -856,7 +871,15 @@ again:;
                  * the skin) is such a far side: moved a quarter radius off an edge 47 mm over
                  * the floor, the ball dropped back onto that very edge (0.97 along up), was
                  * held on it, and the body, not lifted there, hung at rest 18.5 mm over the
-                 * floor, not grounded (soak s36 l164, r 0.64); a shorter move meets it too. */
+                 * floor, not grounded (soak s36 l164, r 0.64); a shorter move meets it too.
+                 * Nor a point further along that same straight edge (on_edge_line): under an
+                 * up 4.2 degrees off y the edge of a slab 94 mm high rises against up, and
+                 * the move "across" off it (0.997 along up, its across-up part mostly the
+                 * tilt) ran 52 degrees along the edge; the half-radius drop met the edge
+                 * again 0.17 m on, taken for a crack's far side. The body, its foot on the
+                 * room floor 2 cm beside the slab, was held at the slab's top, had no room
+                 * for that lift (its top ball on the room wall), and hung at rest 7.7 mm
+                 * over the floor for ever (soak s132 l377). */
                 for (int k = 0; k < 2 && over_floor && isfinite(h2.t) && v3_finite(h2.point) &&
                                 -v3_dot(v3_sub(h2.point, foot), up) > floor_gap - cb_len_tol(c, CB_STEP_EPS);
                      k++) {
@@ -865,7 +888,7 @@ again:;
                     if (!cb_sweep(c, v3_add(b1, off), r, 0.0f, v3_scale(up, -0.5f * r), &hk) || !isfinite(hk.t) ||
                         !v3_finite(hk.point))
                         continue;
-                    if (!(v3_dot(v3_sub(hk.point, h1.point), across) > c->skin)) break;
+                    if (!(v3_dot(v3_sub(hk.point, h1.point), across) > c->skin) || on_edge_line(c, &h1, &hk)) break;
                     h2 = hk;
                     descent = (h2.t > 0.0f ? h2.t : 0.0f) * 0.5f * r;
                 }
