@@ -6218,6 +6218,98 @@ static void test_foot_beside_low_slab_tilted_up_against_wall_stands(void)
     TEST_ASSERT_TRUE(fabsf(pos.x - start.x) + fabsf(pos.z - start.z) < 0.05f);
 }
 
+/* ---- a ball a skin off a block's top edge 57 degrees off up, pressed into a box's side ---- */
+
+/* Soak s133 l204 (generator 2): the 25 static triangles within 0.5 m of the body's sweep
+ * capsule (floats of the checker's doubles; comments: the checker's triangle numbers): the
+ * room floor (y 0, 50), a box 2.88 m high (1199-1208) and its near copy 1.4 mm higher
+ * (1211-1220), and a staircase of blocks beside it (1307-1338: tops 0.131, 0.265, 0.491 m).
+ * r 0.199, height 0.567, step 0.0002, snap 0.141, floor angle 68.3 degrees, one slide, up
+ * (-0.101, 0.993, -0.063). The input presses the body into the box's side (84.4 degrees off
+ * up); its bottom ball rests on the 0.265 m block's top edge, the contact 57.2 degrees off up
+ * (walkable), the foot 0.184 m over the room floor. The slide holds the ball a skin off the
+ * edge along the contact's normal: 1.85 skins (2.05 mm) along up, out of resting_beside's
+ * contact_eps (2 mm) sweep along -up, so nothing grounded it: at rest, airborne, for ever. */
+static const float s133_l204_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 50 */
+    {-0x1.57132ap+3f, 0x0p+0f, 0x1.53235ap+3f, -0x1.44a312p+3f, 0x0p+0f, 0x1.7dd0e8p+3f, -0x1.44a312p+3f, 0x1.70f70ap+1f, 0x1.7dd0e8p+3f}, /* 1199 */
+    {-0x1.28e15ep+3f, 0x0p+0f, 0x1.3f2e54p+3f, -0x1.167146p+3f, 0x0p+0f, 0x1.69dbe2p+3f, -0x1.44a312p+3f, 0x0p+0f, 0x1.7dd0e8p+3f}, /* 1201 */
+    {-0x1.28e15ep+3f, 0x0p+0f, 0x1.3f2e54p+3f, -0x1.44a312p+3f, 0x0p+0f, 0x1.7dd0e8p+3f, -0x1.57132ap+3f, 0x0p+0f, 0x1.53235ap+3f}, /* 1202 */
+    {-0x1.167146p+3f, 0x0p+0f, 0x1.69dbe2p+3f, -0x1.44a312p+3f, 0x1.70f70ap+1f, 0x1.7dd0e8p+3f, -0x1.44a312p+3f, 0x0p+0f, 0x1.7dd0e8p+3f}, /* 1208 */
+    {-0x1.5704cep+3f, 0x1.6f20ecp-10f, 0x1.533266p+3f, -0x1.4494b6p+3f, 0x1.6f20ecp-10f, 0x1.7ddff4p+3f, -0x1.4494b6p+3f, 0x1.7124eep+1f, 0x1.7ddff4p+3f}, /* 1211 */
+    {-0x1.28d302p+3f, 0x1.6f20ecp-10f, 0x1.3f3d6p+3f, -0x1.1662eap+3f, 0x1.6f20ecp-10f, 0x1.69eaeep+3f, -0x1.4494b6p+3f, 0x1.6f20ecp-10f, 0x1.7ddff4p+3f}, /* 1213 */
+    {-0x1.28d302p+3f, 0x1.6f20ecp-10f, 0x1.3f3d6p+3f, -0x1.4494b6p+3f, 0x1.6f20ecp-10f, 0x1.7ddff4p+3f, -0x1.5704cep+3f, 0x1.6f20ecp-10f, 0x1.533266p+3f}, /* 1214 */
+    {-0x1.1662eap+3f, 0x1.6f20ecp-10f, 0x1.69eaeep+3f, -0x1.4494b6p+3f, 0x1.7124eep+1f, 0x1.7ddff4p+3f, -0x1.4494b6p+3f, 0x1.6f20ecp-10f, 0x1.7ddff4p+3f}, /* 1220 */
+    {-0x1.265484p+3f, 0x0p+0f, 0x1.98bce8p+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.520acep+3f, 0x1.0c7a64p-3f, 0x1.5bb83ep+3f}, /* 1307 */
+    {-0x1.265484p+3f, 0x0p+0f, 0x1.98bce8p+3f, -0x1.520acep+3f, 0x1.0c7a64p-3f, 0x1.5bb83ep+3f, -0x1.265484p+3f, 0x1.0c7a64p-3f, 0x1.98bce8p+3f}, /* 1308 */
+    {-0x1.62c0ccp+3f, 0x0p+0f, 0x1.c40608p+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.265484p+3f, 0x0p+0f, 0x1.98bce8p+3f}, /* 1310 */
+    {-0x1.62c0ccp+3f, 0x1.0c7a64p-3f, 0x1.c40608p+3f, -0x1.265484p+3f, 0x1.0c7a64p-3f, 0x1.98bce8p+3f, -0x1.520acep+3f, 0x1.0c7a64p-3f, 0x1.5bb83ep+3f}, /* 1311 */
+    {-0x1.314216p+3f, 0x0p+0f, 0x1.897bbep+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.520acep+3f, 0x1.0f16b4p-2f, 0x1.5bb83ep+3f}, /* 1319 */
+    {-0x1.314216p+3f, 0x0p+0f, 0x1.897bbep+3f, -0x1.520acep+3f, 0x1.0f16b4p-2f, 0x1.5bb83ep+3f, -0x1.314216p+3f, 0x1.0f16b4p-2f, 0x1.897bbep+3f}, /* 1320 */
+    {-0x1.6dae5ep+3f, 0x0p+0f, 0x1.b4c4dcp+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.314216p+3f, 0x0p+0f, 0x1.897bbep+3f}, /* 1322 */
+    {-0x1.6dae5ep+3f, 0x1.0f16b4p-2f, 0x1.b4c4dcp+3f, -0x1.314216p+3f, 0x1.0f16b4p-2f, 0x1.897bbep+3f, -0x1.520acep+3f, 0x1.0f16b4p-2f, 0x1.5bb83ep+3f}, /* 1323 */
+    {-0x1.6dae5ep+3f, 0x0p+0f, 0x1.b4c4dcp+3f, -0x1.314216p+3f, 0x0p+0f, 0x1.897bbep+3f, -0x1.314216p+3f, 0x1.0f16b4p-2f, 0x1.897bbep+3f}, /* 1325 */
+    {-0x1.6dae5ep+3f, 0x0p+0f, 0x1.b4c4dcp+3f, -0x1.314216p+3f, 0x1.0f16b4p-2f, 0x1.897bbep+3f, -0x1.6dae5ep+3f, 0x1.0f16b4p-2f, 0x1.b4c4dcp+3f}, /* 1326 */
+    {-0x1.3c2faap+3f, 0x0p+0f, 0x1.7a3a94p+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.520acep+3f, 0x1.f676dap-2f, 0x1.5bb83ep+3f}, /* 1331 */
+    {-0x1.3c2faap+3f, 0x0p+0f, 0x1.7a3a94p+3f, -0x1.520acep+3f, 0x1.f676dap-2f, 0x1.5bb83ep+3f, -0x1.3c2faap+3f, 0x1.f676dap-2f, 0x1.7a3a94p+3f}, /* 1332 */
+    {-0x1.789bfp+3f, 0x0p+0f, 0x1.a583b2p+3f, -0x1.520acep+3f, 0x0p+0f, 0x1.5bb83ep+3f, -0x1.3c2faap+3f, 0x0p+0f, 0x1.7a3a94p+3f}, /* 1334 */
+    {-0x1.789bfp+3f, 0x1.f676dap-2f, 0x1.a583b2p+3f, -0x1.3c2faap+3f, 0x1.f676dap-2f, 0x1.7a3a94p+3f, -0x1.520acep+3f, 0x1.f676dap-2f, 0x1.5bb83ep+3f}, /* 1335 */
+    {-0x1.789bfp+3f, 0x0p+0f, 0x1.a583b2p+3f, -0x1.3c2faap+3f, 0x0p+0f, 0x1.7a3a94p+3f, -0x1.3c2faap+3f, 0x1.f676dap-2f, 0x1.7a3a94p+3f}, /* 1337 */
+    {-0x1.789bfp+3f, 0x0p+0f, 0x1.a583b2p+3f, -0x1.3c2faap+3f, 0x1.f676dap-2f, 0x1.7a3a94p+3f, -0x1.789bfp+3f, 0x1.f676dap-2f, 0x1.a583b2p+3f}, /* 1338 */
+};
+
+static void test_ball_skin_off_steep_walkable_edge_beside_box_stands(void)
+{
+    cb_world_reset();
+    geo_tris(s133_l204_tris, sizeof s133_l204_tris / sizeof s133_l204_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.974d46p-3f, 0x1.221ccap-1f, 0x1.9af5ecp-13f, 0x1.218048p-3f,
+                                        0x1.312d34p+0f, 0x1.4da1a8p+2f, 0x1.0b6c4p+6f, 1, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    s.up = cb_vec(-0x1.9c4ab8p-4f, 0x1.fc6068p-1f, -0x1.022402p-4f);
+    const fm_vec3_t start = cb_vec(-0x1.336e1cp+3f, 0x1.dba1c4p-2f, 0x1.7db874p+3f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.49fffep-12f, 0x1.0ba7fep-11f, 0x1.67fffep-13f));
+    /* the replay's 32 frames: the input into the box's side, its last two turned a little */
+    static const float dts[32] = {
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x0p+0f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.d3a016p-4f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.8e41cep-7f,
+        0x1.15512cp-4f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f,
+        0x1.111112p-5f, 0x1.111112p-5f, 0x1.111112p-5f, 0x1.f588ccp-5f,
+        0x1.201b52p-6f, 0x1.3ef256p-8f, 0x1.111112p-5f, 0x1.111112p-5f,
+    };
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded_late = 0;
+    float worst = 0.0f;
+    for (int f = 0; f < 32; f++) {
+        body.input_velocity = f < 30 ? cb_vec(-0x1.68c0eep+2f, 0.0f, -0x1.344792p+2f)
+                                     : cb_vec(-0x1.7c83dap+1f, 0.0f, -0x1.37b0fap+2f);
+        CB_STEP(&body, dts[f]);
+        if (!char_body_is_on_floor(&body)) continue;
+        if (f >= 2) grounded_late++;
+        if (foot_under_walkable(s133_l204_tris, sizeof s133_l204_tris / sizeof s133_l204_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    const float moved = sqrtf((pos.x - start.x) * (pos.x - start.x) + (pos.y - start.y) * (pos.y - start.y) +
+                              (pos.z - start.z) * (pos.z - start.z));
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    cb_report("ball a skin off a 57-degree walkable edge beside a box (s133 l204): frames 2-31 grounded",
+              (float)grounded_late, "");
+    cb_report("ball a skin off a 57-degree walkable edge beside a box (s133 l204): foot height", foot.y, "m");
+    TEST_ASSERT_EQUAL_INT(30, grounded_late);
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    TEST_ASSERT_TRUE(moved < 0.01f);                    /* at rest on the edge, pressed into the box */
+    TEST_ASSERT_TRUE(foot.y > 0.17f && foot.y < 0.2f); /* held by the block's edge, over the room floor */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6302,5 +6394,6 @@ int main(void)
     RUN_TEST(test_crack_beside_block_edge_in_step_zone);
     RUN_TEST(test_walk_off_block_corner_onto_tile_crack);
     RUN_TEST(test_foot_beside_low_slab_tilted_up_against_wall_stands);
+    RUN_TEST(test_ball_skin_off_steep_walkable_edge_beside_box_stands);
     return UNITY_END();
 }

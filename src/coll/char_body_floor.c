@@ -1635,12 +1635,20 @@ static bool resting_beside(const cb_ctx_t *c, fm_vec3_t pos, float gap)
     const char_body_t *b = c->body;
     const float margin = 2.0f * cb_len_tol(c, CB_MARGIN), lift = c->radius + c->step;
     if (!(gap <= c->radius / b->cos_floor_max_angle + margin - lift)) return false;
+    /* Touching is within contact_eps along the contact's normal, not along up: the slide
+     * leaves the ball a skin off the edge along that normal, skin / cos along up. A ball a
+     * skin off a block's top edge 57 degrees off up (walkable at 68.3) was 2.05 mm from it
+     * along up, out of a contact_eps sweep: at rest there, pressed into a box's side, never
+     * grounded (soak s133 l204). The sweep reaches contact_eps / cos of the steepest
+     * walkable contact (at most 4 contact_eps). */
+    const float cmax = b->cos_floor_max_angle > 0.25f ? b->cos_floor_max_angle : 0.25f;
+    const float len = c->contact_eps / cmax;
     coll_sweep_hit_t h;
-    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -c->contact_eps), &h) ||
+    if (!cb_sweep(c, cb_sweep_center(c, pos), c->radius, c->sweep_ihh, v3_scale(c->up, -len), &h) ||
         !isfinite(h.t) || !v3_finite(h.normal))
         return false;
     float nu = v3_dot(h.normal, c->up);
-    return nu >= b->cos_floor_max_angle && gap <= c->radius / nu + margin - lift;
+    return nu >= b->cos_floor_max_angle && h.t * len * nu <= c->contact_eps && gap <= c->radius / nu + margin - lift;
 }
 
 /**
