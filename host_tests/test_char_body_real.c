@@ -5892,8 +5892,8 @@ static const uint16_t s94_l71_piece_ids[] = {1, 2, 3, 4, 5};
 /* The body runs at 16.5 m/s (one step of 1/120 s, then one of 0.0725 s) on the room floor
  * into the V between the tiles' border and the block's edge. The crack rule's first look met
  * the border 30 degrees off the motion, an edge of another piece than the floor ahead of the
- * body, which piece_behind did not look at; level_beyond's one ray a radius straight across
- * from it went 0.33 m past the foot, short of the block's edge, onto the floor; the rule was
+ * body, which piece_behind did not look at; level_beyond's one ray, a radius from the foot
+ * straight across from that edge, met the floor 11 mm short of the block's edge; the rule was
  * not asked and the foot stood on the floor, 6.6 mm under the ball at the foot resting on the
  * tiles' corners with the border and the block around it (soak s94 l71 frame 2). It stands no
  * lower than where that ball clears the corners (the checker's least rest), no higher than the

@@ -1359,8 +1359,8 @@ static inline bool piece_behind(const cb_ctx_t *c, fm_vec3_t pos, const coll_swe
          * edges are not parallel) is not there. Running (r 0.60, step 1.19) on the room floor
          * into a 51-degree V between a tile field's straight border (tops 0.4617) 0.27 m north
          * of the foot and a block's edge (0.4863) 0.39 m south of it, the first look met the
-         * border 30 degrees off the motion; the ray went 0.33 m past the foot, short of the
-         * block's edge (0.62 m along it), onto the floor, the rule was not asked, and the foot
+         * border 30 degrees off the motion; the ray, a radius from the foot, met the floor 11
+         * mm short of the block's edge (0.619 m along it), the rule was not asked, and the foot
          * stood on the floor 6.6 mm under the ball resting on the two tiles' corners and the
          * block (soak s94 l71). The full rule holds the ball on the border and the block. */
         if (v3_dot(rel, c->body->velocity) > 0.0f && edge->instance == under->instance) return false;
