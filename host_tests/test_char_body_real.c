@@ -6310,6 +6310,143 @@ static void test_ball_skin_off_steep_walkable_edge_beside_box_stands(void)
     TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
 }
 
+/* ---- a V between a tile field's straight border and a block's edge, narrower than the capsule ---- */
+
+/* Soak s94 l71 (generator 2): the 64 static triangles whose bounding spheres come within
+ * 1.2 m of the failing foot, exact (floats of the checker's doubles; comments: its triangle
+ * numbers), one instance per generator piece: the room 1 (floor y 0), a tile field 2 (two
+ * tiles 0.4617 m high, turned so that their south edges run along (0.78, 0, 0.62) in one
+ * line, a 5.3 mm crack between them across it) and its near copy 3, two blocks 4 (0.4863 m
+ * high; the west one's north edge along (0.98, 0, -0.22), 51 degrees off the tiles' border)
+ * and a low slab 5 (0.109 m, 1.9 m off). The foot on the room floor between them: 0.268 m
+ * south of the tiles' border, 0.389 m north of the block's edge, 0.578 m from the two tiles'
+ * corners at the crack. r 0.60, height 3.63, step 1.19, snap 1.48, walkable to 21.8
+ * degrees, 2 slides, the owner point the capsule's centre. */
+static const float s94_l71_tris[][9] = {
+{-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1.8p+4f}, /* 0 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 1 closed 0 */
+    {-0x1p+4f, 0x0p+0f, -0x1.8p+4f, -0x1p+4f, 0x0p+0f, -0x1p+4f, -0x1p+3f, 0x0p+0f, -0x1p+4f}, /* 3 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1p+4f, -0x1p+4f, 0x0p+0f, -0x1p+3f, -0x1p+4f, 0x0p+0f, -0x1p+4f}, /* 12 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 80 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 81 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 closed 0 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f}, /* 1289 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f, -0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f}, /* 1290 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f}, /* 1293 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f, -0x1.731a04p+4f, 0x0p+0f, -0x1.e7af58p+3f}, /* 1294 closed 1 */
+    {-0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.731a04p+4f, 0x1.d8c022p-2f, -0x1.e7af58p+3f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f}, /* 1295 closed 1 */
+    {-0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f}, /* 1296 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.731a04p+4f, 0x1.d8c022p-2f, -0x1.e7af58p+3f, -0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f}, /* 1298 closed 1 */
+    {-0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f}, /* 1299 closed 1 */
+    {-0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f}, /* 1300 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f}, /* 1301 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f, -0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f}, /* 1302 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f, -0x1.2b25d2p+4f, 0x0p+0f, -0x1.7592b6p+3f}, /* 1305 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.2b25d2p+4f, 0x0p+0f, -0x1.7592b6p+3f, -0x1.4947dp+4f, 0x0p+0f, -0x1.a55c58p+3f}, /* 1306 closed 1 */
+    {-0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f}, /* 1307 closed 1 */
+    {-0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f}, /* 1308 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x0p+0f, -0x1.a55c58p+3f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f}, /* 1309 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f, -0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f}, /* 1310 closed 1 */
+    {-0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f}, /* 1311 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f}, /* 1313 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f, -0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f}, /* 1314 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f}, /* 1317 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f, -0x1.731a04p+4f, 0x0p+0f, -0x1.e7af58p+3f}, /* 1318 closed 1 */
+    {-0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.731a04p+4f, 0x1.d8c022p-2f, -0x1.e7af58p+3f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f}, /* 1319 closed 1 */
+    {-0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f}, /* 1320 closed 1 */
+    {-0x1.47c7a4p+4f, 0x0p+0f, -0x1.2a79dep+4f, -0x1.731a04p+4f, 0x1.d8c022p-2f, -0x1.e7af58p+3f, -0x1.47c7a4p+4f, 0x1.d8c022p-2f, -0x1.2a79dep+4f}, /* 1322 closed 1 */
+    {-0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.1e063p+4f, 0x1.d8c022p-2f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f}, /* 1323 closed 1 */
+    {-0x1.1e063p+4f, 0x0p+0f, -0x1.095da8p+4f, -0x1.49589p+4f, 0x1.d8c022p-2f, -0x1.a576eap+3f, -0x1.49589p+4f, 0x0p+0f, -0x1.a576eap+3f}, /* 1324 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f}, /* 1325 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f, -0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f}, /* 1326 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f, -0x1.2b25d2p+4f, 0x0p+0f, -0x1.7592b6p+3f}, /* 1329 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.2b25d2p+4f, 0x0p+0f, -0x1.7592b6p+3f, -0x1.4947dp+4f, 0x0p+0f, -0x1.a55c58p+3f}, /* 1330 closed 1 */
+    {-0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f}, /* 1331 closed 1 */
+    {-0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f}, /* 1332 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x0p+0f, -0x1.a55c58p+3f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f}, /* 1333 closed 1 */
+    {-0x1.1df57p+4f, 0x0p+0f, -0x1.09505ep+4f, -0x1.4947dp+4f, 0x1.d8c022p-2f, -0x1.a55c58p+3f, -0x1.1df57p+4f, 0x1.d8c022p-2f, -0x1.09505ep+4f}, /* 1334 closed 1 */
+    {-0x1.ffa6e6p+3f, 0x0p+0f, -0x1.e2d71cp+3f, -0x1.ffa6e6p+3f, 0x1.d8c022p-2f, -0x1.e2d71cp+3f, -0x1.2b25d2p+4f, 0x1.d8c022p-2f, -0x1.7592b6p+3f}, /* 1335 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.47ab48p+4f, 0x1.f1f838p-2f, -0x1.31e19ep+4f, -0x1.15faeap+4f, 0x1.f1f838p-2f, -0x1.3d14ep+4f}, /* 140 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.15faeap+4f, 0x1.f1f838p-2f, -0x1.3d14ep+4f, -0x1.15faeap+4f, 0x0p+0f, -0x1.3d14ep+4f}, /* 141 closed 1 */
+    {-0x1.4053e8p+4f, 0x0p+0f, -0x1.114fe8p+4f, -0x1.0ea38ap+4f, 0x0p+0f, -0x1.1c8328p+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f}, /* 142 closed 1 */
+    {-0x1.4053e8p+4f, 0x0p+0f, -0x1.114fe8p+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f, -0x1.4053e8p+4f, 0x1.f1f838p-2f, -0x1.114fe8p+4f}, /* 143 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.15faeap+4f, 0x0p+0f, -0x1.3d14ep+4f, -0x1.0ea38ap+4f, 0x0p+0f, -0x1.1c8328p+4f}, /* 144 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.0ea38ap+4f, 0x0p+0f, -0x1.1c8328p+4f, -0x1.4053e8p+4f, 0x0p+0f, -0x1.114fe8p+4f}, /* 145 closed 1 */
+    {-0x1.47ab48p+4f, 0x1.f1f838p-2f, -0x1.31e19ep+4f, -0x1.4053e8p+4f, 0x1.f1f838p-2f, -0x1.114fe8p+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f}, /* 146 closed 1 */
+    {-0x1.47ab48p+4f, 0x1.f1f838p-2f, -0x1.31e19ep+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f, -0x1.15faeap+4f, 0x1.f1f838p-2f, -0x1.3d14ep+4f}, /* 147 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.4053e8p+4f, 0x0p+0f, -0x1.114fe8p+4f, -0x1.4053e8p+4f, 0x1.f1f838p-2f, -0x1.114fe8p+4f}, /* 148 closed 1 */
+    {-0x1.47ab48p+4f, 0x0p+0f, -0x1.31e19ep+4f, -0x1.4053e8p+4f, 0x1.f1f838p-2f, -0x1.114fe8p+4f, -0x1.47ab48p+4f, 0x1.f1f838p-2f, -0x1.31e19ep+4f}, /* 149 closed 1 */
+    {-0x1.15faeap+4f, 0x0p+0f, -0x1.3d14ep+4f, -0x1.15faeap+4f, 0x1.f1f838p-2f, -0x1.3d14ep+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f}, /* 150 closed 1 */
+    {-0x1.15faeap+4f, 0x0p+0f, -0x1.3d14ep+4f, -0x1.0ea38ap+4f, 0x1.f1f838p-2f, -0x1.1c8328p+4f, -0x1.0ea38ap+4f, 0x0p+0f, -0x1.1c8328p+4f}, /* 151 closed 1 */
+    {-0x1.021d0ep+4f, 0x0p+0f, -0x1.1f55ecp+4f, -0x1.85d31ap+3f, 0x1.f1f838p-2f, -0x1.2d94e6p+4f, -0x1.021d0ep+4f, 0x1.f1f838p-2f, -0x1.1f55ecp+4f}, /* 155 closed 1 */
+    {-0x1.09746ep+4f, 0x0p+0f, -0x1.3fe7a4p+4f, -0x1.85d31ap+3f, 0x0p+0f, -0x1.2d94e6p+4f, -0x1.021d0ep+4f, 0x0p+0f, -0x1.1f55ecp+4f}, /* 157 closed 1 */
+    {-0x1.09746ep+4f, 0x1.f1f838p-2f, -0x1.3fe7a4p+4f, -0x1.021d0ep+4f, 0x1.f1f838p-2f, -0x1.1f55ecp+4f, -0x1.85d31ap+3f, 0x1.f1f838p-2f, -0x1.2d94e6p+4f}, /* 158 closed 1 */
+    {-0x1.09746ep+4f, 0x0p+0f, -0x1.3fe7a4p+4f, -0x1.021d0ep+4f, 0x0p+0f, -0x1.1f55ecp+4f, -0x1.021d0ep+4f, 0x1.f1f838p-2f, -0x1.1f55ecp+4f}, /* 160 closed 1 */
+    {-0x1.02cf2cp+4f, 0x0p+0f, -0x1.205c04p+4f, -0x1.6df2dep+3f, 0x1.bf7bf4p-4f, -0x1.289fd4p+4f, -0x1.02cf2cp+4f, 0x1.bf7bf4p-4f, -0x1.205c04p+4f}, /* 1340 closed 1 */
+    {-0x1.09dfaap+4f, 0x0p+0f, -0x1.612df4p+4f, -0x1.6df2dep+3f, 0x0p+0f, -0x1.289fd4p+4f, -0x1.02cf2cp+4f, 0x0p+0f, -0x1.205c04p+4f}, /* 1342 closed 1 */
+    {-0x1.09dfaap+4f, 0x1.bf7bf4p-4f, -0x1.612df4p+4f, -0x1.02cf2cp+4f, 0x1.bf7bf4p-4f, -0x1.205c04p+4f, -0x1.6df2dep+3f, 0x1.bf7bf4p-4f, -0x1.289fd4p+4f}, /* 1343 closed 1 */
+    {-0x1.09dfaap+4f, 0x0p+0f, -0x1.612df4p+4f, -0x1.02cf2cp+4f, 0x0p+0f, -0x1.205c04p+4f, -0x1.02cf2cp+4f, 0x1.bf7bf4p-4f, -0x1.205c04p+4f} /* 1345 closed 1 */
+};
+static const uint8_t s94_l71_piece_tris[] = {8, 18, 18, 16, 4};
+static const uint16_t s94_l71_piece_ids[] = {1, 2, 3, 4, 5};
+
+/* The body runs at 16.5 m/s (one step of 1/120 s, then one of 0.0725 s) on the room floor
+ * into the V between the tiles' border and the block's edge. The crack rule's first look met
+ * the border 30 degrees off the motion, an edge of another piece than the floor ahead of the
+ * body, which piece_behind did not look at; level_beyond's one ray, a radius from the foot
+ * straight across from that edge, met the floor 11 mm short of the block's edge; the rule was
+ * not asked and the foot stood on the floor, 6.6 mm under the ball at the foot resting on the
+ * tiles' corners with the border and the block around it (soak s94 l71 frame 2). It stands no
+ * lower than where that ball clears the corners (the checker's least rest), no higher than the
+ * block's top, grounded, and runs on the way it was asked. */
+static void test_v_between_tile_border_and_block_edge(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s94_l71_piece_tris; p++) {
+        geo_tris(s94_l71_tris + first, s94_l71_piece_tris[p]);
+        first += s94_l71_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s94_l71_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s94_l71_tris / sizeof s94_l71_tris[0], first);
+    static const soak_shape_t shape = {0x1.338158p-1f, 0x1.d0783p+1f, 0x1.30a30cp+0f, 0x1.7a08a8p+0f,
+                                        0x1.84f0dep-2f, 0x1.2ab1b2p+5f, 0x1.fc1594p+5f, 2, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(-0x1.0defe8p+4f, 0x1.d0783p+0f, -0x1.199a5p+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t in = cb_vec(-0x1.ea9ed4p+3f, 0.0f, 0x1.80f774p+2f);
+    char_body_set_velocity(&body, in);
+    body.input_velocity = in;
+    CB_STEP(&body, 0x1.111112p-7f);
+    CB_STEP(&body, 0x1.2923d2p-4f);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float r = shape.radius;
+    /* the checker's least rest: the ball at the foot clears the tiles' corners at the crack
+     * (1307's first vertex, the nearer) */
+    const float *cn = s94_l71_tris[21]; /* 1307 */
+    const float dx = cn[0] - foot.x, dz = cn[2] - foot.z;
+    const float least = cn[1] + sqrtf(r * r - (dx * dx + dz * dz)) - r;
+    cb_report("V between a tile border and a block's edge (s94 l71): grounded foot", foot.y, "m");
+    cb_report("V between a tile border and a block's edge (s94 l71): the checker's least rest", least, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= least - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= s94_l71_tris[50][1] + 0.001f); /* 146: the block's top */
+    /* runs on: 4 more steps of 1/60 s, grounded, at least 90 % of the way asked */
+    const fm_vec3_t from = pos;
+    const float speed = sqrtf(in.x * in.x + in.z * in.z);
+    for (int f = 0; f < 4; f++) {
+        CB_STEP(&body, 1.0f / 60.0f);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    }
+    const float went = ((pos.x - from.x) * in.x + (pos.z - from.z) * in.z) / speed;
+    cb_report("the same, then on: run in 4 steps", went, "m");
+    TEST_ASSERT_TRUE(went >= 0.9f * speed * 4.0f / 60.0f);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6395,5 +6532,6 @@ int main(void)
     RUN_TEST(test_walk_off_block_corner_onto_tile_crack);
     RUN_TEST(test_foot_beside_low_slab_tilted_up_against_wall_stands);
     RUN_TEST(test_ball_skin_off_steep_walkable_edge_beside_box_stands);
+    RUN_TEST(test_v_between_tile_border_and_block_edge);
     return UNITY_END();
 }
