@@ -5644,7 +5644,7 @@ static void test_tile_crack_beside_valley_block_edge(void)
 /* ---- a tile crack in the step zone of a steep ramp's foot, a staircase's side beyond ---- */
 
 /* Soak s133 l2 (generator 2): the 77 static triangles whose bounding spheres come within 0.3 m
- * of the foot before the failing step, exact (floats of the checker's doubles; comments: its
+ * of the failing step's foot (the midpoint of its two positions), exact (floats of the checker's doubles; comments: its
  * triangle numbers), one instance per generator piece with the soak's ids: the room 1 (floor
  * y 0), a staircase 5 (blocks 0.34 m a riser, its side face along (0.32, 0, -0.95)), a ramp 6
  * (a 66-degree face rising -x from the room floor, its foot 0.23 m from the body's foot), a
