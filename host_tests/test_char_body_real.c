@@ -6447,6 +6447,159 @@ static void test_v_between_tile_border_and_block_edge(void)
     TEST_ASSERT_TRUE(went >= 0.9f * speed * 4.0f / 60.0f);
 }
 
+/* ---- a tile crack in the step zone of a steep ramp's foot, a staircase's side beyond ---- */
+
+/* Soak s133 l2 (generator 2): the 77 static triangles whose bounding spheres come within 0.3 m
+ * of the failing step's foot (the midpoint of its two positions), exact (floats of the checker's doubles; comments: its
+ * triangle numbers), one instance per generator piece with the soak's ids: the room 1 (floor
+ * y 0), a staircase 5 (blocks 0.34 m a riser, its side face along (0.32, 0, -0.95)), a ramp 6
+ * (a 66-degree face rising -x from the room floor, its foot 0.23 m from the body's foot), a
+ * tile field 12 (1.33 m squares turned 36 degrees about y, tops 0.0824-0.0940 m high, 14 mm
+ * cracks between them) and a far ramp's corner 14. r 0.93, height 3.87, step 0.78, snap 0.81,
+ * walkable to 45.5 degrees, 3 slides, the owner point the capsule's centre. */
+static const float s133_l2_tris[][9] = {
+    {0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+3f}, /* 58 */
+    {0x1p+4f, 0x0p+0f, 0x1p+3f, 0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f}, /* 59 */
+    {0x1p+4f, 0x0p+0f, 0x1p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1p+4f}, /* 70 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f}, /* 87 */
+    {0x1.4030e4p+4f, 0x0p+0f, 0x1.e2cb5cp+3f, 0x1.4030e4p+4f, 0x1.5d999ap-2f, 0x1.e2cb5cp+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-2f, 0x1.a57deap+3f}, /* 133 */
+    {0x1.4030e4p+4f, 0x0p+0f, 0x1.e2cb5cp+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-2f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 134 */
+    {0x1.4030e4p+4f, 0x0p+0f, 0x1.e2cb5cp+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 137 */
+    {0x1.4030e4p+4f, 0x1.5d999ap-2f, 0x1.e2cb5cp+3f, 0x1.758f28p+4f, 0x1.5d999ap-2f, 0x1.c28b68p+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-2f, 0x1.a57deap+3f}, /* 140 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-2f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.5d999ap-2f, 0x1.c28b68p+3f}, /* 143 */
+    {0x1.417c1ap+4f, 0x0p+0f, 0x1.db21aep+3f, 0x1.417c1ap+4f, 0x1.5d999ap-1f, 0x1.db21aep+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-1f, 0x1.a57deap+3f}, /* 145 */
+    {0x1.417c1ap+4f, 0x0p+0f, 0x1.db21aep+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-1f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 146 */
+    {0x1.417c1ap+4f, 0x0p+0f, 0x1.db21aep+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 149 */
+    {0x1.417c1ap+4f, 0x1.5d999ap-1f, 0x1.db21aep+3f, 0x1.758f28p+4f, 0x1.5d999ap-1f, 0x1.c28b68p+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-1f, 0x1.a57deap+3f}, /* 152 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.5d999ap-1f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.5d999ap-1f, 0x1.c28b68p+3f}, /* 155 */
+    {0x1.42c75p+4f, 0x0p+0f, 0x1.d378p+3f, 0x1.4a8a96p+4f, 0x1.063334p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 158 */
+    {0x1.42c75p+4f, 0x0p+0f, 0x1.d378p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 161 */
+    {0x1.42c75p+4f, 0x1.063334p+0f, 0x1.d378p+3f, 0x1.758f28p+4f, 0x1.063334p+0f, 0x1.c28b68p+3f, 0x1.4a8a96p+4f, 0x1.063334p+0f, 0x1.a57deap+3f}, /* 164 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.063334p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.063334p+0f, 0x1.c28b68p+3f}, /* 167 */
+    {0x1.441286p+4f, 0x0p+0f, 0x1.cbce52p+3f, 0x1.4a8a96p+4f, 0x1.5d999ap+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 170 */
+    {0x1.441286p+4f, 0x0p+0f, 0x1.cbce52p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 173 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.5d999ap+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.5d999ap+0f, 0x1.c28b68p+3f}, /* 179 */
+    {0x1.455dbep+4f, 0x0p+0f, 0x1.c424a2p+3f, 0x1.4a8a96p+4f, 0x1.b5p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 182 */
+    {0x1.455dbep+4f, 0x0p+0f, 0x1.c424a2p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 185 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.b5p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.b5p+0f, 0x1.c28b68p+3f}, /* 191 */
+    {0x1.46a8f4p+4f, 0x0p+0f, 0x1.bc7af4p+3f, 0x1.46a8f4p+4f, 0x1.063334p+1f, 0x1.bc7af4p+3f, 0x1.4a8a96p+4f, 0x1.063334p+1f, 0x1.a57deap+3f}, /* 193 */
+    {0x1.46a8f4p+4f, 0x0p+0f, 0x1.bc7af4p+3f, 0x1.4a8a96p+4f, 0x1.063334p+1f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 194 */
+    {0x1.46a8f4p+4f, 0x0p+0f, 0x1.bc7af4p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 197 */
+    {0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x1.063334p+1f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x1.063334p+1f, 0x1.c28b68p+3f}, /* 203 */
+    {0x1.47f42ap+4f, 0x0p+0f, 0x1.b4d146p+3f, 0x1.47f42ap+4f, 0x1.31e666p+1f, 0x1.b4d146p+3f, 0x1.4a8a96p+4f, 0x1.31e666p+1f, 0x1.a57deap+3f}, /* 205 */
+    {0x1.47f42ap+4f, 0x0p+0f, 0x1.b4d146p+3f, 0x1.4a8a96p+4f, 0x1.31e666p+1f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 206 */
+    {0x1.47f42ap+4f, 0x0p+0f, 0x1.b4d146p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 209 */
+    {0x1.493f6p+4f, 0x0p+0f, 0x1.ad2798p+3f, 0x1.493f6p+4f, 0x1.5d999ap+1f, 0x1.ad2798p+3f, 0x1.4a8a96p+4f, 0x1.5d999ap+1f, 0x1.a57deap+3f}, /* 217 */
+    {0x1.493f6p+4f, 0x0p+0f, 0x1.ad2798p+3f, 0x1.4a8a96p+4f, 0x1.5d999ap+1f, 0x1.a57deap+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f}, /* 218 */
+    {0x1.493f6p+4f, 0x0p+0f, 0x1.ad2798p+3f, 0x1.4a8a96p+4f, 0x0p+0f, 0x1.a57deap+3f, 0x1.758f28p+4f, 0x0p+0f, 0x1.c28b68p+3f}, /* 221 */
+    {0x1.36d694p+4f, 0x0p+0f, 0x1.a00dfcp+3f, 0x1.3bd948p+4f, 0x0p+0f, 0x1.857df4p+3f, 0x1.093308p+4f, 0x1.e6363ep+2f, 0x1.5f46ap+3f}, /* 229 */
+    {0x1.36d694p+4f, 0x0p+0f, 0x1.a00dfcp+3f, 0x1.093308p+4f, 0x1.e6363ep+2f, 0x1.5f46ap+3f, 0x1.043056p+4f, 0x1.e6363ep+2f, 0x1.79d6a8p+3f}, /* 230 */
+    {0x1.043056p+4f, 0x0p+0f, 0x1.79d6a8p+3f, 0x1.093308p+4f, 0x1.e6363ep+2f, 0x1.5f46ap+3f, 0x1.093308p+4f, 0x0p+0f, 0x1.5f46ap+3f}, /* 232 */
+    {0x1.36d694p+4f, 0x0p+0f, 0x1.a00dfcp+3f, 0x1.043056p+4f, 0x0p+0f, 0x1.79d6a8p+3f, 0x1.093308p+4f, 0x0p+0f, 0x1.5f46ap+3f}, /* 233 */
+    {0x1.36d694p+4f, 0x0p+0f, 0x1.a00dfcp+3f, 0x1.093308p+4f, 0x0p+0f, 0x1.5f46ap+3f, 0x1.3bd948p+4f, 0x0p+0f, 0x1.857df4p+3f}, /* 234 */
+    {0x1.36d694p+4f, 0x0p+0f, 0x1.a00dfcp+3f, 0x1.043056p+4f, 0x1.e6363ep+2f, 0x1.79d6a8p+3f, 0x1.043056p+4f, 0x0p+0f, 0x1.79d6a8p+3f}, /* 235 */
+    {0x1.3bd948p+4f, 0x0p+0f, 0x1.857df4p+3f, 0x1.093308p+4f, 0x0p+0f, 0x1.5f46ap+3f, 0x1.093308p+4f, 0x1.e6363ep+2f, 0x1.5f46ap+3f}, /* 236 */
+    {0x1.44c622p+4f, 0x0p+0f, 0x1.bdf9eep+3f, 0x1.38394p+4f, 0x0p+0f, 0x1.9b949cp+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f}, /* 405 */
+    {0x1.44c622p+4f, 0x0p+0f, 0x1.bdf9eep+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f, 0x1.44c622p+4f, 0x1.516baap-4f, 0x1.bdf9eep+3f}, /* 406 */
+    {0x1.339378p+4f, 0x0p+0f, 0x1.d713b2p+3f, 0x1.270696p+4f, 0x0p+0f, 0x1.b4ae6p+3f, 0x1.38394p+4f, 0x0p+0f, 0x1.9b949cp+3f}, /* 407 */
+    {0x1.339378p+4f, 0x0p+0f, 0x1.d713b2p+3f, 0x1.38394p+4f, 0x0p+0f, 0x1.9b949cp+3f, 0x1.44c622p+4f, 0x0p+0f, 0x1.bdf9eep+3f}, /* 408 */
+    {0x1.339378p+4f, 0x1.516baap-4f, 0x1.d713b2p+3f, 0x1.44c622p+4f, 0x1.516baap-4f, 0x1.bdf9eep+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f}, /* 409 */
+    {0x1.339378p+4f, 0x1.516baap-4f, 0x1.d713b2p+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f, 0x1.270696p+4f, 0x1.516baap-4f, 0x1.b4ae6p+3f}, /* 410 */
+    {0x1.339378p+4f, 0x0p+0f, 0x1.d713b2p+3f, 0x1.44c622p+4f, 0x0p+0f, 0x1.bdf9eep+3f, 0x1.44c622p+4f, 0x1.516baap-4f, 0x1.bdf9eep+3f}, /* 411 */
+    {0x1.270696p+4f, 0x0p+0f, 0x1.b4ae6p+3f, 0x1.270696p+4f, 0x1.516baap-4f, 0x1.b4ae6p+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f}, /* 413 */
+    {0x1.270696p+4f, 0x0p+0f, 0x1.b4ae6p+3f, 0x1.38394p+4f, 0x1.516baap-4f, 0x1.9b949cp+3f, 0x1.38394p+4f, 0x0p+0f, 0x1.9b949cp+3f}, /* 414 */
+    {0x1.381796p+4f, 0x0p+0f, 0x1.9b385ap+3f, 0x1.2b8ab4p+4f, 0x0p+0f, 0x1.78d30ap+3f, 0x1.2b8ab4p+4f, 0x1.73475ep-4f, 0x1.78d30ap+3f}, /* 417 */
+    {0x1.381796p+4f, 0x0p+0f, 0x1.9b385ap+3f, 0x1.2b8ab4p+4f, 0x1.73475ep-4f, 0x1.78d30ap+3f, 0x1.381796p+4f, 0x1.73475ep-4f, 0x1.9b385ap+3f}, /* 418 */
+    {0x1.26e4ecp+4f, 0x0p+0f, 0x1.b4521ep+3f, 0x1.2b8ab4p+4f, 0x0p+0f, 0x1.78d30ap+3f, 0x1.381796p+4f, 0x0p+0f, 0x1.9b385ap+3f}, /* 420 */
+    {0x1.26e4ecp+4f, 0x1.73475ep-4f, 0x1.b4521ep+3f, 0x1.381796p+4f, 0x1.73475ep-4f, 0x1.9b385ap+3f, 0x1.2b8ab4p+4f, 0x1.73475ep-4f, 0x1.78d30ap+3f}, /* 421 */
+    {0x1.26e4ecp+4f, 0x0p+0f, 0x1.b4521ep+3f, 0x1.381796p+4f, 0x0p+0f, 0x1.9b385ap+3f, 0x1.381796p+4f, 0x1.73475ep-4f, 0x1.9b385ap+3f}, /* 423 */
+    {0x1.26e4ecp+4f, 0x0p+0f, 0x1.b4521ep+3f, 0x1.381796p+4f, 0x1.73475ep-4f, 0x1.9b385ap+3f, 0x1.26e4ecp+4f, 0x1.73475ep-4f, 0x1.b4521ep+3f}, /* 424 */
+    {0x1.4515ecp+4f, 0x0p+0f, 0x1.be12dcp+3f, 0x1.4515ecp+4f, 0x1.80eca4p-4f, 0x1.be12dcp+3f, 0x1.564894p+4f, 0x1.80eca4p-4f, 0x1.a4f918p+3f}, /* 449 */
+    {0x1.44f442p+4f, 0x0p+0f, 0x1.bdb69ap+3f, 0x1.44f442p+4f, 0x1.80eca4p-4f, 0x1.bdb69ap+3f, 0x1.38676p+4f, 0x1.80eca4p-4f, 0x1.9b5148p+3f}, /* 451 */
+    {0x1.44f442p+4f, 0x0p+0f, 0x1.bdb69ap+3f, 0x1.38676p+4f, 0x1.80eca4p-4f, 0x1.9b5148p+3f, 0x1.38676p+4f, 0x0p+0f, 0x1.9b5148p+3f}, /* 452 */
+    {0x1.44f442p+4f, 0x0p+0f, 0x1.bdb69ap+3f, 0x1.38676p+4f, 0x0p+0f, 0x1.9b5148p+3f, 0x1.499a08p+4f, 0x0p+0f, 0x1.823786p+3f}, /* 455 */
+    {0x1.44f442p+4f, 0x0p+0f, 0x1.bdb69ap+3f, 0x1.499a08p+4f, 0x0p+0f, 0x1.823786p+3f, 0x1.5626eap+4f, 0x0p+0f, 0x1.a49cd6p+3f}, /* 456 */
+    {0x1.44f442p+4f, 0x1.80eca4p-4f, 0x1.bdb69ap+3f, 0x1.5626eap+4f, 0x1.80eca4p-4f, 0x1.a49cd6p+3f, 0x1.499a08p+4f, 0x1.80eca4p-4f, 0x1.823786p+3f}, /* 457 */
+    {0x1.44f442p+4f, 0x1.80eca4p-4f, 0x1.bdb69ap+3f, 0x1.499a08p+4f, 0x1.80eca4p-4f, 0x1.823786p+3f, 0x1.38676p+4f, 0x1.80eca4p-4f, 0x1.9b5148p+3f}, /* 458 */
+    {0x1.44f442p+4f, 0x0p+0f, 0x1.bdb69ap+3f, 0x1.5626eap+4f, 0x1.80eca4p-4f, 0x1.a49cd6p+3f, 0x1.44f442p+4f, 0x1.80eca4p-4f, 0x1.bdb69ap+3f}, /* 460 */
+    {0x1.38676p+4f, 0x0p+0f, 0x1.9b5148p+3f, 0x1.38676p+4f, 0x1.80eca4p-4f, 0x1.9b5148p+3f, 0x1.499a08p+4f, 0x1.80eca4p-4f, 0x1.823786p+3f}, /* 461 */
+    {0x1.38676p+4f, 0x0p+0f, 0x1.9b5148p+3f, 0x1.499a08p+4f, 0x1.80eca4p-4f, 0x1.823786p+3f, 0x1.499a08p+4f, 0x0p+0f, 0x1.823786p+3f}, /* 462 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.3845b6p+4f, 0x1.80eca4p-4f, 0x1.9af508p+3f, 0x1.2bb8d4p+4f, 0x1.80eca4p-4f, 0x1.788fb6p+3f}, /* 463 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.2bb8d4p+4f, 0x1.80eca4p-4f, 0x1.788fb6p+3f, 0x1.2bb8d4p+4f, 0x0p+0f, 0x1.788fb6p+3f}, /* 464 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.2bb8d4p+4f, 0x0p+0f, 0x1.788fb6p+3f, 0x1.3ceb7ep+4f, 0x0p+0f, 0x1.5f75f2p+3f}, /* 467 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.3ceb7ep+4f, 0x0p+0f, 0x1.5f75f2p+3f, 0x1.49786p+4f, 0x0p+0f, 0x1.81db44p+3f}, /* 468 */
+    {0x1.3845b6p+4f, 0x1.80eca4p-4f, 0x1.9af508p+3f, 0x1.49786p+4f, 0x1.80eca4p-4f, 0x1.81db44p+3f, 0x1.3ceb7ep+4f, 0x1.80eca4p-4f, 0x1.5f75f2p+3f}, /* 469 */
+    {0x1.3845b6p+4f, 0x1.80eca4p-4f, 0x1.9af508p+3f, 0x1.3ceb7ep+4f, 0x1.80eca4p-4f, 0x1.5f75f2p+3f, 0x1.2bb8d4p+4f, 0x1.80eca4p-4f, 0x1.788fb6p+3f}, /* 470 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.49786p+4f, 0x0p+0f, 0x1.81db44p+3f, 0x1.49786p+4f, 0x1.80eca4p-4f, 0x1.81db44p+3f}, /* 471 */
+    {0x1.3845b6p+4f, 0x0p+0f, 0x1.9af508p+3f, 0x1.49786p+4f, 0x1.80eca4p-4f, 0x1.81db44p+3f, 0x1.3845b6p+4f, 0x1.80eca4p-4f, 0x1.9af508p+3f}, /* 472 */
+    {0x1.31b954p+4f, 0x0p+0f, 0x1.1e4f8p+3f, 0x1.1c6396p+4f, 0x1.fdb526p+2f, 0x1.3cf6e6p+3f, 0x1.1c6396p+4f, 0x0p+0f, 0x1.3cf6e6p+3f} /* 486 */
+};
+static const uint8_t s133_l2_piece_tris[] = {6, 30, 7, 33, 1};
+static const uint16_t s133_l2_piece_ids[] = {1, 5, 6, 12, 14};
+
+/* The game teleported the body into the staircase's first block; pushed out, it stood on a
+ * tile 94 mm high, and walked at 1.7 m/s (60 Hz) off it into the 14 mm crack beside a tile
+ * 11.6 mm lower, the ramp's face 0.23 m ahead in the step zone. The crack rule's ball,
+ * dropped from the sweep capsule, met the ramp's face (66 degrees off up), its slide down
+ * that face met the staircase's side (a wall), the rule gave up, and the snap to the room
+ * floor under the crack stopped on the ramp: the foot stood 49 mm over the room floor, 33
+ * mm under the tiles (soak s133 l2 frame 1). The body's own ball at the foot rests on the
+ * crack's edges: it stands there (between the checker's least rest, on the lower tile's
+ * edge, and the higher tile's top), grounded, and walks on between the ramp and the stairs
+ * over the next crack without sinking into it. */
+static void test_tile_crack_at_steep_ramp_foot_beside_stairs(void)
+{
+    cb_world_reset();
+    size_t first = 0;
+    for (size_t p = 0; p < sizeof s133_l2_piece_tris; p++) {
+        geo_tris(s133_l2_tris + first, s133_l2_piece_tris[p]);
+        first += s133_l2_piece_tris[p];
+        TEST_ASSERT_NOT_NULL(cb_world_add_geo(s133_l2_piece_ids[p]));
+    }
+    TEST_ASSERT_EQUAL_UINT32(sizeof s133_l2_tris / sizeof s133_l2_tris[0], first);
+    static const soak_shape_t shape = {0x1.db5e42p-1f, 0x1.eeb6e6p+1f, 0x1.8f007cp-1f, 0x1.9d49fap-1f,
+                                        0x1.964f9ap-1f, 0x1.a5ef6ep+5f, 0x1.8c9f4ap+4f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(0x1.13e614p+0f, 0x1.eeb6e6p+0f, -0x1.0619cp+4f); /* the replay's start */
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    const fm_vec3_t in = cb_vec(-0x1.b6a018p+0f, 0.0f, -0x1.07455ap-2f);
+    char_body_set_velocity(&body, in);
+    /* frame 0: the game's teleport into the staircase's first block */
+    char_body_teleport(&body, cb_vec(0x1.435d46p+4f, 0x1.04284p+1f, 0x1.a754dep+3f), false);
+    body.input_velocity = in;
+    const float dt = 0x1.111112p-6f, r = shape.radius;
+    for (int f = 0; f < 2; f++) CB_STEP(&body, dt);
+    const fm_vec3_t foot = char_body_foot_pos(&body);
+    const float top = s133_l2_tris[64][1]; /* 458: the higher tile's top, 0.0940 */
+    const float least = f_min_t(s113_l98_edge_rest(s133_l2_tris[47], 1, 2, foot, r),
+                                s113_l98_edge_rest(s133_l2_tris[64], 0, 2, foot, r));
+    cb_report("tile crack at a steep ramp's foot (s133 l2): grounded foot", foot.y, "m");
+    cb_report("tile crack at a steep ramp's foot (s133 l2): the checker's least rest", least, "m");
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+    TEST_ASSERT_FALSE(char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(foot.y >= least - 0.001f);
+    TEST_ASSERT_TRUE(foot.y <= top + 0.001f);
+    /* on at 1.7 m/s between the ramp's foot and the staircase's side (both in the way of
+     * the replay's input), along the crack and across the next one, between the higher tile
+     * and the field's corner tile (0.0940 both): 20 steps, 0.57 m */
+    const fm_vec3_t back = cb_vec(0.336f * 1.7f, 0.0f, -0.942f * 1.7f);
+    const float speed = sqrtf(back.x * back.x + back.z * back.z);
+    body.input_velocity = back;
+    const fm_vec3_t from = pos;
+    for (int f = 0; f < 20; f++) {
+        CB_STEP(&body, dt);
+        TEST_ASSERT_TRUE(char_body_is_on_floor(&body));
+        TEST_ASSERT_TRUE(char_body_foot_pos(&body).y >= least - 0.001f); /* never down into the crack */
+    }
+    TEST_ASSERT_FLOAT_WITHIN(0.001f, top, char_body_foot_pos(&body).y);
+    const float went = ((pos.x - from.x) * back.x + (pos.z - from.z) * back.z) / speed;
+    TEST_ASSERT_TRUE(went >= 0.9f * speed * 20.0f * dt);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6533,5 +6686,6 @@ int main(void)
     RUN_TEST(test_foot_beside_low_slab_tilted_up_against_wall_stands);
     RUN_TEST(test_ball_skin_off_steep_walkable_edge_beside_box_stands);
     RUN_TEST(test_v_between_tile_border_and_block_edge);
+    RUN_TEST(test_tile_crack_at_steep_ramp_foot_beside_stairs);
     return UNITY_END();
 }

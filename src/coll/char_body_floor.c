@@ -402,6 +402,18 @@ static bool surrounded_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_ga
     return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(h->point, foot), c->up), NULL, rest, &around) && around;
 }
 
+/* rest_at_foot at the level the foot was at before the step (pos: the body now), answered only
+ * where the contacts hold the ball from all sides (around): what the foot went down past this
+ * step, never higher than where it was (as edges_over_foot). ball_held's looks where its slide
+ * past a steep first contact ran into a wall (foot78) ask it. */
+static bool surrounded_below_old_foot(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t foot, float floor_gap, float *rest)
+{
+    bool around = false;
+    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(owner_position(c->body), pos), c->up), NULL, rest,
+                        &around) &&
+           around;
+}
+
 /** The point of a gathered triangle's box closest to o (both relative to the gather's origin). */
 static inline fm_vec3_t box_closest(const coll_gather_tri_t *t, fm_vec3_t o)
 {
@@ -666,6 +678,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
     const bool slide = over_floor || (past_side && n1u < b->cos_floor_max_angle &&
                                       d1 * n1u <= cb_len_tol(c, CB_MARGIN) && steep_face(c, &h1));
     bool slid_past_steep = false; /* the loop slid the ball past a steep first contact (below) */
+    bool slid_into_wall = false;  /* ... into a wall, and went back to that contact (below) */
     for (int k = 0; k < (over_floor ? 2 : 1) && slide && n1u < b->cos_floor_max_angle; k++) {
         const coll_sweep_hit_t h0 = h1;
         const float d0 = d1, n0u = n1u;
@@ -735,6 +748,18 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                 slide_down(c, &b0g, len, v3_scale(v3_add(h0.normal, h1.normal), 0.2f * c->skin),
                            v3_scale(g, (gu > 0.0f ? -1.0f : 1.0f) / gl), &hg, &d1g) &&
                 floor_face(c, &hg) && v3_dot(hg.normal, up) > 0.02f) {
+                /* ... and where the groove took it out of the foot's column (more than a
+                 * radius across up) down to the very floor under the foot, the slid ball says
+                 * nothing about the foot either: the body's own ball decides, as below where
+                 * the groove goes nowhere (soak s133 l2's walk on, down the crack between two
+                 * tiles: the groove off the ramp's face and a staircase block's vertical
+                 * corner ended on the room floor beyond the tile field, 1.5 m away) */
+                float rest = 0.0f;
+                if (under && v3_dot(under->normal, hg.normal) > 0.999f &&
+                    fabsf(v3_dot(v3_sub(under->point, hg.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
+                    v3_len2(v3_reject(v3_sub(b0g, foot), up)) > r * r &&
+                    surrounded_below_old_foot(c, pos, foot, floor_gap, &rest))
+                    return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
                 b0 = b0g;
                 h1 = hg;
                 d1 = d1g;
@@ -742,6 +767,7 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                 break;
             }
             if (!steep_face(c, &h1)) return false; /* (an edge: the groove only, else as before) */
+            slid_into_wall = true;
             h1 = h0;
             d1 = d0;
             n1u = n0u;
@@ -1225,6 +1251,22 @@ again:;
             float rest = 0.0f;
             if (surrounded_at_foot(c, foot, floor_gap, &landed, &rest))
                 return held_at(rest, reach, -rest, up, landed.point, &landed, out, far_out);
+        }
+        /* Over a floor, the slide past a steep first contact ran into a wall and went back
+         * to that contact, and the rule gave up from there: the ball dropped from the sweep
+         * capsule met only steep pieces beside the foot and says nothing about the gap under
+         * it. The body's own ball at the foot decides (surrounded_below_old_foot), at the level
+         * the foot was at before the step (the rule does not lift the body over where it
+         * was; the steep pieces' contacts lie above it). Walking (r 0.93, step 0.78) off a
+         * tile 94 mm high into a 14 mm crack beside a lower tile, a 66-degree ramp's foot
+         * 0.23 m ahead of the foot in the step zone: the drop met the ramp's face, the slide
+         * down it met a staircase's side, the rule gave up, and the snap to the room floor
+         * stopped on the ramp: the foot stood 33 mm under the tiles' tops, in the crack
+         * (soak s133 l2). */
+        if (slid_into_wall) {
+            float rest = 0.0f;
+            if (surrounded_below_old_foot(c, pos, foot, floor_gap, &rest))
+                return held_at(rest, reach, -rest, up, h1.point, &h1, out, far_out);
         }
         return false;
     }
