@@ -1692,9 +1692,11 @@ static __attribute__((noinline)) void held_on_edge_alone(const cb_ctx_t *c, fm_v
      * degrees off up, its foot 4 cm past the face's side edge over nothing (the room floor
      * 4.79 m down), a face over its top ball: every slide down the face put the foot under
      * the face with no room to be lifted onto it and was undone, and the body hung at rest
-     * in the air for ever (soak s130 l310). */
+     * in the air for ever (soak s130 l310). Resting on it, not inside it: a body the game
+     * teleported into a closed solid (its sweep capsule 0.3 m into a 27-degree face, s130 l77)
+     * is not standing on what it overlaps. */
     fm_vec3_t fn;
-    if (coll_cb_face_normal(&h, &fn) && v3_dot(fn, h.normal) > CB_FACE_ON) {
+    if (!(h.depth > c->min_depth) && coll_cb_face_normal(&h, &fn) && v3_dot(fn, h.normal) > CB_FACE_ON) {
         *s = (support_t){true, false, 0.0f, h.normal, h.point, h.id, h.instance};
         return;
     }
