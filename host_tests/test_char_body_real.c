@@ -6600,6 +6600,94 @@ static void test_tile_crack_at_steep_ramp_foot_beside_stairs(void)
     TEST_ASSERT_TRUE(went >= 0.9f * speed * 20.0f * dt);
 }
 
+/* ---- a ball at rest on a walkable soup face, the foot past the face's side edge ---- */
+
+/* Soak s130 l310 (generator 2): the static triangles within 1 m of the capsule on the replay's
+ * frames (the checker's triangle numbers), one mesh: the room floor under the foot (32, y 0,
+ * 4.79 m down) and a floating triangle soup's faces. r 0.918, height 3.216, step 0.513, snap
+ * 0.664, walkable to 49.5 degrees, 2 slides, owner = the foot. The sweep capsule's bottom ball
+ * rests on soup face 193 (29.1 degrees off up) 0.9 mm off it, the foot 4 cm past the face's
+ * side edge (the line along up through the foot misses the face), the input (2.9, 0, -7.4)
+ * m/s pressing it on. Every slide down the face put the foot 0.379 m under the face (the step
+ * zone), its top ball against face 175's edge over it: no room for the lift, the step undone;
+ * at the start nothing in the foot ray's reach, and held_on_edge_alone's push off, from the
+ * contact across up, went down the face, free. It hung at rest in the air for ever. */
+static const float s130_l310_tris[][9] = {
+    {0x1p+3f, 0x0p+0f, -0x1p+3f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, -0x1p+3f}, /* 32 */
+    {0x1.5eb774p+3f, 0x1.0f729cp+3f, -0x1.08b9dcp+3f, 0x1.28eef4p+3f, 0x1.0070eep+3f, -0x1.550af2p+3f, 0x1.e8752ap+3f, 0x1.1900fep+3f, -0x1.1e6e3ep+3f}, /* 168 */
+    {0x1.9508ecp+3f, 0x1.19f82cp+2f, -0x1.336132p+3f, 0x1.5dba7p+3f, 0x1.39e724p+2f, -0x1.7992d4p+3f, 0x1.e0f9a4p+3f, 0x1.9ee78cp+2f, -0x1.f6146ep+2f}, /* 171 */
+    {0x1.4dfc56p+3f, 0x1.bf823ep+2f, -0x1.16848p+3f, 0x1.04c5ecp+4f, 0x1.f11e74p+2f, -0x1.0335ap+3f, 0x1.0ae642p+4f, 0x1.79f014p+2f, -0x1.c40176p+3f}, /* 175 */
+    {0x1.cec59ep+3f, 0x1.a7204cp+2f, -0x1.1f47acp+3f, 0x1.9a8192p+3f, 0x1.364baap+1f, -0x1.03d362p+3f, 0x1.aeeafp+3f, 0x1.b34882p+0f, -0x1.a48da6p+3f}, /* 180 */
+    {0x1.a78814p+3f, 0x1.f95306p+1f, -0x1.046966p+3f, 0x1.7e98d6p+3f, 0x1.e82614p+0f, -0x1.694df2p+3f, 0x1.0277a2p+4f, 0x1.607228p+2f, -0x1.8a7508p+3f}, /* 181 */
+    {0x1.e2dd4ap+3f, 0x1.18ccep+3f, -0x1.03e934p+3f, 0x1.4d43c8p+3f, 0x1.1c5f5ep+3f, -0x1.bde968p+3f, 0x1.02309ap+4f, 0x1.a4ba74p+0f, -0x1.3876fep+3f}, /* 183 */
+    {0x1.3801dap+3f, 0x1.8b4466p+1f, -0x1.ec5716p+2f, 0x1.3dd968p+3f, 0x1.1577a8p+2f, -0x1.9cf236p+3f, 0x1.fc7afap+3f, 0x1.896bd2p+2f, -0x1.d67d0ep+2f}, /* 193 */
+    {0x1.3d1446p+3f, 0x1.19f7e2p+1f, -0x1.72580ep+3f, 0x1.3ca59ap+3f, 0x1.e4fa5p+2f, -0x1.9f7c28p+3f, 0x1.d058f4p+3f, 0x1.32f354p+2f, -0x1.f81d26p+2f}, /* 196 */
+    {0x1.3b4f64p+4f, 0x1.d59bd8p+2f, -0x1.7897aap+2f, 0x1.c99fccp+3f, 0x1.5e572cp+2f, -0x1.9f6354p+2f, 0x1.3505f6p+4f, 0x1.5f4afp+2f, -0x1.11d45ep+2f}, /* 2294 */
+    {0x1.c34d52p+3f, 0x1.7e82e6p+2f, -0x1.267c02p+2f, 0x1.a33bf2p+3f, 0x1.08e6c8p+2f, -0x1.9bb27ap+2f, 0x1.2237f2p+4f, 0x1.439ad8p+2f, -0x1.663c8ap+2f}, /* 2304 */
+    {0x1.1fdc2cp+4f, 0x1.414be4p+2f, -0x1.652da8p+2f, 0x1.cfe88p+3f, 0x1.d6ffbp+2f, -0x1.ac5f5cp+2f, 0x1.2931eep+4f, 0x1.242944p+3f, -0x1.0e6918p-1f} /* 2311 */
+};
+
+static void test_ball_on_walkable_soup_face_foot_past_edge_stands(void)
+{
+    cb_world_reset();
+    geo_tris(s130_l310_tris, sizeof s130_l310_tris / sizeof s130_l310_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.d616c6p-1f, 0x1.9ba3dep+1f, 0x1.067eccp-1f, 0x1.54101cp-1f,
+                                        0x1.ba13p-1f, 0x1.132262p+5f, 0x1.7cbc8ep+5f, 2, true};
+    char_body_settings_t s = soak_body_settings(&shape);
+    const fm_vec3_t start = cb_vec(0x1.b76fcp+3f, 0x1.4d7512p+2f, -0x1.dc3034p+2f);
+    pos = start;
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(0x1.14aa9p+1f, 0x1.055ep-4f, -0x1.32338p-2f));
+    /* the replay's 32 frames, one input throughout */
+    static const float dts[32] = {
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.12e0bep-30f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.8d8032p-3f, 0x1.99999ap-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.a0fdccp-4f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.973792p-3f, 0x1.99999ap-3f,
+        0x1.99999ap-3f, 0x1.99999ap-3f, 0x1.5af8e8p-4f, 0x1.99999ap-3f,
+    };
+    const float cos_max = cosf(s.floor_max_angle);
+    int sunk = 0, grounded_late = 0;
+    float worst = 0.0f;
+    fm_vec3_t at4 = start;
+    body.input_velocity = cb_vec(0x1.7297eap+1f, 0.0f, -0x1.db5882p+2f);
+    for (int f = 0; f < 32; f++) {
+        CB_STEP(&body, dts[f]);
+        if (f == 3) at4 = pos;
+        if (!char_body_is_on_floor(&body)) continue;
+        if (f >= 4) grounded_late++;
+        if (foot_under_walkable(s130_l310_tris, sizeof s130_l310_tris / sizeof s130_l310_tris[0],
+                                char_body_foot_pos(&body), cos_max, &worst))
+            sunk++;
+    }
+    const float moved = sqrtf((pos.x - at4.x) * (pos.x - at4.x) + (pos.y - at4.y) * (pos.y - at4.y) +
+                              (pos.z - at4.z) * (pos.z - at4.z));
+    const fm_vec3_t n = char_body_floor_normal(&body);
+    cb_report("ball on a walkable soup face, foot past its edge (s130 l310): frames 4-31 grounded",
+              (float)grounded_late, "");
+    cb_report("ball on a walkable soup face, foot past its edge (s130 l310): foot", pos.y, "m");
+    TEST_ASSERT_EQUAL_INT(28, grounded_late);
+    TEST_ASSERT_EQUAL_INT(0, sunk);
+    TEST_ASSERT_TRUE(moved < 0.01f);                  /* at rest in the pocket */
+    TEST_ASSERT_TRUE(pos.y > 4.70f && pos.y < 4.85f); /* held by face 193, not fallen to the floor */
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body) && !char_body_is_on_steep_surface(&body));
+    TEST_ASSERT_TRUE(n.y > 0.87f && n.y < 0.88f); /* face 193's normal (0.874 along up) */
+    /* standing there does not keep it there: turned off the face's side edge (+z), it goes */
+    body.input_velocity = cb_vec(0.0f, 0.0f, 4.0f);
+    const fm_vec3_t from = pos;
+    for (int f = 0; f < 30; f++) CB_STEP(&body, 1.0f / 30.0f);
+    cb_report("ball on a walkable soup face (s130 l310): turned off the edge, went along +z", pos.z - from.z, "m");
+    cb_report("ball on a walkable soup face (s130 l310): turned off the edge, foot", pos.y, "m");
+    TEST_ASSERT_TRUE(pos.z - from.z > 2.0f); /* of the 4 m asked (3.6) */
+    TEST_ASSERT_TRUE(pos.y < 4.0f);          /* off the face, falling towards the room floor */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6687,5 +6775,6 @@ int main(void)
     RUN_TEST(test_ball_skin_off_steep_walkable_edge_beside_box_stands);
     RUN_TEST(test_v_between_tile_border_and_block_edge);
     RUN_TEST(test_tile_crack_at_steep_ramp_foot_beside_stairs);
+    RUN_TEST(test_ball_on_walkable_soup_face_foot_past_edge_stands);
     return UNITY_END();
 }

@@ -1797,8 +1797,9 @@ static bool held_on_edge(const cb_ctx_t *c, fm_vec3_t pos)
  * for it), a jump's input across up pressed the capsule's top against the room floor and
  * its bottom ball onto a slab's lower corner (the contact 27 degrees off up); the way off
  * the corner went into the room floor, and with one slide the body hung at rest in the air
- * for ever, no floor within 7 m along -up (soak s89 l214). Out of line: only a body at rest
- * with no floor under it gets here.
+ * for ever, no floor within 7 m along -up (soak s89 l214). On a walkable face (the contact
+ * on the face itself) there is no edge to be pushed off: it stands, no push asked (s130 l310).
+ * Out of line: only a body at rest with no floor under it gets here.
  */
 static __attribute__((noinline)) void held_on_edge_alone(const cb_ctx_t *c, fm_vec3_t pos, bool was_grounded,
                                                          support_t *s)
@@ -1806,6 +1807,21 @@ static __attribute__((noinline)) void held_on_edge_alone(const cb_ctx_t *c, fm_v
     coll_sweep_hit_t h, h2;
     if (!resting_on_walkable(c, pos, was_grounded ? c->skin : 0.1f * c->skin, &h)) return;
     const fm_vec3_t sc = cb_sweep_center(c, pos);
+    /* On a walkable face (the contact on the face, not its edge or vertex) the ball is held
+     * wherever a push would go: there is no edge to be pushed off. The push across up, from
+     * the contact to the ball's centre, is the way down the face: it is free, lifting the
+     * ball off the face it falls back onto. The ball (r 0.92, step 0.51) on a soup face 29
+     * degrees off up, its foot 4 cm past the face's side edge over nothing (the room floor
+     * 4.79 m down), a face over its top ball: every slide down the face put the foot under
+     * the face with no room to be lifted onto it and was undone, and the body hung at rest
+     * in the air for ever (soak s130 l310). Resting on it, not inside it: a body the game
+     * teleported into a closed solid (its sweep capsule 0.3 m into a 27-degree face, s130 l77)
+     * is not standing on what it overlaps. */
+    fm_vec3_t fn;
+    if (!(h.depth > c->min_depth) && coll_cb_face_normal(&h, &fn) && v3_dot(fn, h.normal) > CB_FACE_ON) {
+        *s = (support_t){true, false, 0.0f, h.normal, h.point, h.id, h.instance};
+        return;
+    }
     /* the way off the edge: across up, from the contact to the bottom ball's centre */
     fm_vec3_t off = v3_reject(v3_sub(v3_madd(sc, c->up, -c->sweep_ihh), h.point), c->up);
     const float ol = v3_len(off);

@@ -48,6 +48,11 @@ enum {
 /* n.up at or above which a face counts as level: 1 less a few float ulps, the rounding of a
  * unit normal computed from a level triangle's vertices */
 #define CB_LEVEL_NU 0.9999997f
+/* contact normal . face normal at or above which a sweep's contact is on the face itself, not
+ * on its edge or vertex: a face contact's normal is the face's to float rounding (a few ulps);
+ * an edge's or a vertex's is off it by the angle at which the ball's centre lies past the edge:
+ * 0.08 degrees at this bound, the centre r / 700 past it (held_on_edge_alone) */
+#define CB_FACE_ON 0.999999f
 /** Walking, a slide that ends this far behind its start along the input went backwards
  *  (skin corrections in a corner): it is redone without the backward part, m. Above float
  *  noise at positions of a few hundred metres. */
