@@ -639,9 +639,19 @@ static void test_oracle_footing_steep_within_the_angle_tolerance(void)
     slope_quad(lim + 0.005);
     TEST_ASSERT_TRUE(soak_check_footing(&lvl, &b->settings, in) > 0.02);
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, soak_check_footing_steep(&lvl, &b->settings, in));
-    b->flags = CB_FLAG_GROUNDED; /* claims a walkable floor: fails */
-    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, in, z, z, true, false, false));
+    /* claims a walkable floor (chk foot85): the face is 6e-5 steeper in cosine,
+     * beyond the body's float reach on it (3.3e-6): steep for the body too, no failure
+     * (this failed before: s140 l405, a wall 2.0e-5 steeper beside the room floor) */
+    b->flags = CB_FLAG_GROUNDED;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, in, z, z, true, false, false));
     b->flags = CB_FLAG_GROUNDED | CB_FLAG_STEEP; /* judged it steep: no failure */
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, in, z, z, true, false, false));
+    /* within the float's reach (0.00005 degrees, 6e-7 in cosine) the body may judge it
+     * either way: claiming a walkable floor under it fails, as before */
+    slope_quad(lim + 0.00005);
+    b->flags = CB_FLAG_GROUNDED;
+    TEST_ASSERT_EQUAL_INT(SOAK_FAIL_FOOTING, oracle_step(z, in, z, z, true, false, false));
+    b->flags = CB_FLAG_GROUNDED | CB_FLAG_STEEP;
     TEST_ASSERT_EQUAL_INT(SOAK_FAIL_NONE, oracle_step(z, in, z, z, true, false, false));
     /* a face 0.5 degrees under the floor angle is walkable however the body judged it */
     slope_quad(lim - 0.5);

@@ -432,13 +432,35 @@ static bool tri_normal_up(const soak_wtri_t *w, const double up[3], double n[3])
  * way. soak_check_footing_steep turns it round (-1e-4) for a body that judged the face
  * it stands on steep: a face in that band is then steep for the footing too. */
 static double walk_cos_tol = 1e-4;
+/* For a body claiming a walkable floor (the footing verdict, foot85), the band below
+ * the floor angle's cosine is the reach of the body's float on this face, not 1e-4: its
+ * face normal is a float cross product of two edges, off by a few float steps of
+ * |e1||e2| / |e1 x e2| (large on a sliver), then rotated and dotted with up. A face steeper
+ * than that is steep for the body too, and a foot in it is the step zone beside a wall, not
+ * under a floor (soak s140 l405: a wall 56.9744 degrees off up for a floor angle of
+ * 56.9731, cosines 2.0e-5 apart; the body stood on the room floor with its step zone
+ * 23.6 mm into the wall). Within the reach the face is walkable as before, either way. */
+static bool walk_float_reach = false;
+
+static double face_float_reach(const soak_wtri_t *w)
+{
+    double e1[3], e2[3], n[3];
+    sub3(e1, w->v[1], w->v[0]); sub3(e2, w->v[2], w->v[0]);
+    cross3(n, e1, e2);
+    const double l = sqrt(dot3(n, n));
+    return 32.0 * ldexp(1.0, -24) * sqrt(dot3(e1, e1) * dot3(e2, e2)) / l; /* 32 float steps */
+}
 
 static bool tri_walkable(const soak_wtri_t *w, const char_body_settings_t *s, const double up[3], double n[3],
                          double *allow_up)
 {
     if (!tri_normal_up(w, up, n)) return false;
-    double cs = dot3(n, up);
-    if (cs < cos((double)s->floor_max_angle) - walk_cos_tol) return false;
+    double cs = dot3(n, up), tol = walk_cos_tol;
+    if (walk_float_reach && tol > 0) {
+        const double reach = face_float_reach(w);
+        if (reach < tol) tol = reach;
+    }
+    if (cs < cos((double)s->floor_max_angle) - tol) return false;
     double a = (double)s->radius - ((double)s->radius + s->step_height) * cs;
     *allow_up = a > 0 ? a / cs : 0;
     return true;
@@ -583,7 +605,17 @@ double soak_check_footing_steep(const soak_level_t *lvl, const char_body_setting
  * best one over the foot moved across up by 8 float steps of the owner's largest coordinate
  * (2^-20 of it; 15-30 um in a 48 m room), in 8 directions: a foot 1 mm past an edge is
  * judged as before. Only a failing verdict is searched. */
+static double footing_rounded(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, bool steep);
+
 double soak_check_footing_rounded(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, bool steep)
+{
+    walk_float_reach = !steep; /* (see walk_float_reach) */
+    const double ex = footing_rounded(lvl, s, owner, steep);
+    walk_float_reach = false;
+    return ex;
+}
+
+static double footing_rounded(const soak_level_t *lvl, const char_body_settings_t *s, fm_vec3_t owner, bool steep)
 {
     const double ex = steep ? soak_check_footing_steep(lvl, s, owner) : soak_check_footing(lvl, s, owner);
     if (!(ex > SOAK_FOOT_TOL)) return ex;
