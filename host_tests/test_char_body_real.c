@@ -6312,9 +6312,10 @@ static void test_ball_skin_off_steep_walkable_edge_beside_box_stands(void)
 
 /* A walk at the speed limit up a ramp reports the motion across up. A body (r 0.16, step 0.79,
  * four slides), grounded on the room floor, asked for a near-FLT_MAX input (-3.4e38, 0,
- * 5.5e37: the fastest motion, 200 m/s across up), steps onto a 0.48 m riser at the foot of a
- * 33 degree ramp, walks up it and off its high end in one 34 ms step: 6.84 m across up (200
- * m/s) and 1.55 m of rise (45 m/s), 205 m/s in all. The end of the step clamped the whole
+ * 5.5e37: the fastest motion, 200 m/s across up), crosses a 35.7 degree ramp obliquely in
+ * one 34 ms step: up its side where it is 0.72 m high (a stair step), across its walkable top
+ * and off its far side 1.55 m up: 6.84 m across up (200 m/s) and 1.55 m of rise (45 m/s),
+ * 205 m/s in all. The end of the step clamped the whole
  * velocity to 200 m/s, so the report across up was 2.5 % short of the motion: 4.9 m/s off
  * (soak s141 l56, velocity). Now the part across up and the part along up are limited each
  * on its own: the report is the motion. */

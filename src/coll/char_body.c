@@ -264,10 +264,10 @@ static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
 /**
  * The reported velocity's limit: its part across up to max_speed (no motion across up is
  * faster) and its part along up to max_speed, each on its own, so the report stays the
- * motion. A walk at the speed limit up a ramp, off its crest in the same step, moves at the
- * limit across up plus its rise along up: the whole vector clamped to max_speed cut the
- * part across up by 2.5 % under the motion (soak s141 l56: r 0.16, 200 m/s across up, up a
- * 33 degree ramp, 1.55 m of rise in one step, 205 m/s in all).
+ * motion. A walk at the speed limit across a ramp and off its side in the same step moves at
+ * the limit across up plus its rise along up: the whole vector clamped to max_speed cut the
+ * part across up by 2.5 % under the motion (soak s141 l56: r 0.16, 200 m/s across up over a
+ * 35.7 degree ramp, 1.55 m of rise in one step, 205 m/s in all).
  */
 static fm_vec3_t clamp_report(fm_vec3_t v, fm_vec3_t up, float max_speed)
 {
