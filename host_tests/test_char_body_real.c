@@ -6688,6 +6688,160 @@ static void test_ball_on_walkable_soup_face_foot_past_edge_stands(void)
     TEST_ASSERT_TRUE(pos.y < 4.0f);          /* off the face, falling towards the room floor */
 }
 
+/* A walk at the speed limit up a ramp reports the motion across up. A body (r 0.16, step 0.79,
+ * four slides), grounded on the room floor, asked for a near-FLT_MAX input (-3.4e38, 0,
+ * 5.5e37: the fastest motion, 200 m/s across up), crosses a 35.7 degree ramp obliquely in
+ * one 34 ms step: up its side where it is 0.72 m high (a stair step), across its walkable top
+ * and off its far side 1.55 m up: 6.84 m across up (200 m/s) and 1.55 m of rise (45 m/s),
+ * 205 m/s in all. The end of the step clamped the whole
+ * velocity to 200 m/s, so the report across up was 2.5 % short of the motion: 4.9 m/s off
+ * (soak s141 l56, velocity). Now the part across up and the part along up are limited each
+ * on its own: the report is the motion. */
+static const float s141_l56_tris[][9] = {
+    {-0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1p+3f}, /* 50 closed 0 */
+    {-0x1p+4f, 0x0p+0f, 0x1p+3f, -0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 51 closed 0 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+3f}, /* 52 closed 0 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+3f, -0x1p+3f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f}, /* 53 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1.8p+4f, -0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 60 closed 0 */
+    {-0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f, -0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 62 closed 0 */
+    {-0x1p+4f, 0x0p+0f, 0x1p+4f, -0x1p+4f, 0x0p+0f, 0x1.8p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 63 closed 0 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1p+4f}, /* 64 closed 0 */
+    {-0x1p+3f, 0x0p+0f, 0x1p+4f, -0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f}, /* 65 closed 0 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 67 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 82 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 83 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 84 closed 0 */
+    {-0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, -0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, -0x1.8p+4f, 0x0p+0f, 0x1.8p+4f}, /* 85 closed 0 */
+    {0x1.8p+4f, 0x0p+0f, -0x1.8p+4f, 0x1.8p+4f, 0x0p+0f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f, 0x1.8p+4f}, /* 86 closed 0 */
+    {-0x1.082604p+3f, 0x1.eafffcp-3f, 0x1.40566cp+4f, -0x1.3e1c2cp+3f, 0x1.eafffcp-3f, 0x1.56d63cp+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f}, /* 93 closed 2 */
+    {-0x1.082604p+3f, 0x1.eafffcp-3f, 0x1.40566cp+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f, -0x1.56cb26p+3f, 0x1.7f0d6ep+1f, 0x1.112ebep+4f}, /* 94 closed 2 */
+    {-0x1.082604p+3f, 0x0p+0f, 0x1.40566cp+4f, -0x1.3e1c2cp+3f, 0x0p+0f, 0x1.56d63cp+4f, -0x1.3e1c2cp+3f, 0x1.eafffcp-3f, 0x1.56d63cp+4f}, /* 95 closed 2 */
+    {-0x1.082604p+3f, 0x0p+0f, 0x1.40566cp+4f, -0x1.3e1c2cp+3f, 0x1.eafffcp-3f, 0x1.56d63cp+4f, -0x1.082604p+3f, 0x1.eafffcp-3f, 0x1.40566cp+4f}, /* 96 closed 2 */
+    {-0x1.56cb26p+3f, 0x0p+0f, 0x1.112ebep+4f, -0x1.8cc14ep+3f, 0x0p+0f, 0x1.27ae8cp+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f}, /* 97 closed 1 */
+    {-0x1.56cb26p+3f, 0x0p+0f, 0x1.112ebep+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f, -0x1.56cb26p+3f, 0x1.7f0d6ep+1f, 0x1.112ebep+4f}, /* 98 closed 1 */
+    {-0x1.082604p+3f, 0x0p+0f, 0x1.40566cp+4f, -0x1.082604p+3f, 0x1.eafffcp-3f, 0x1.40566cp+4f, -0x1.56cb26p+3f, 0x1.7f0d6ep+1f, 0x1.112ebep+4f}, /* 99 closed 2 */
+    {-0x1.082604p+3f, 0x0p+0f, 0x1.40566cp+4f, -0x1.56cb26p+3f, 0x1.7f0d6ep+1f, 0x1.112ebep+4f, -0x1.56cb26p+3f, 0x0p+0f, 0x1.112ebep+4f}, /* 100 closed 2 */
+    {-0x1.3e1c2cp+3f, 0x0p+0f, 0x1.56d63cp+4f, -0x1.8cc14ep+3f, 0x0p+0f, 0x1.27ae8cp+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f}, /* 101 closed 2 */
+    {-0x1.3e1c2cp+3f, 0x0p+0f, 0x1.56d63cp+4f, -0x1.8cc14ep+3f, 0x1.7f0d6ep+1f, 0x1.27ae8cp+4f, -0x1.3e1c2cp+3f, 0x1.eafffcp-3f, 0x1.56d63cp+4f}, /* 102 closed 2 */
+    {-0x1.053028p+3f, 0x1.eafffcp-3f, 0x1.421cd4p+4f, -0x1.3b265p+3f, 0x1.eafffcp-3f, 0x1.589ca4p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f}, /* 103 closed 1 */
+    {-0x1.053028p+3f, 0x1.eafffcp-3f, 0x1.421cd4p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f, -0x1.6d160ap+2f, 0x1.ba6c36p+1f, 0x1.714484p+4f}, /* 104 closed 1 */
+    {-0x1.053028p+3f, 0x0p+0f, 0x1.421cd4p+4f, -0x1.3b265p+3f, 0x0p+0f, 0x1.589ca4p+4f, -0x1.3b265p+3f, 0x1.eafffcp-3f, 0x1.589ca4p+4f}, /* 105 closed 1 */
+    {-0x1.053028p+3f, 0x0p+0f, 0x1.421cd4p+4f, -0x1.3b265p+3f, 0x1.eafffcp-3f, 0x1.589ca4p+4f, -0x1.053028p+3f, 0x1.eafffcp-3f, 0x1.421cd4p+4f}, /* 106 closed 1 */
+    {-0x1.6d160ap+2f, 0x0p+0f, 0x1.714484p+4f, -0x1.d9025ap+2f, 0x0p+0f, 0x1.87c452p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f}, /* 107 closed 2 */
+    {-0x1.6d160ap+2f, 0x0p+0f, 0x1.714484p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f, -0x1.6d160ap+2f, 0x1.ba6c36p+1f, 0x1.714484p+4f}, /* 108 closed 2 */
+    {-0x1.053028p+3f, 0x0p+0f, 0x1.421cd4p+4f, -0x1.053028p+3f, 0x1.eafffcp-3f, 0x1.421cd4p+4f, -0x1.6d160ap+2f, 0x1.ba6c36p+1f, 0x1.714484p+4f}, /* 109 closed 1 */
+    {-0x1.053028p+3f, 0x0p+0f, 0x1.421cd4p+4f, -0x1.6d160ap+2f, 0x1.ba6c36p+1f, 0x1.714484p+4f, -0x1.6d160ap+2f, 0x0p+0f, 0x1.714484p+4f}, /* 110 closed 1 */
+    {-0x1.3b265p+3f, 0x0p+0f, 0x1.589ca4p+4f, -0x1.d9025ap+2f, 0x0p+0f, 0x1.87c452p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f}, /* 111 closed 1 */
+    {-0x1.3b265p+3f, 0x0p+0f, 0x1.589ca4p+4f, -0x1.d9025ap+2f, 0x1.ba6c36p+1f, 0x1.87c452p+4f, -0x1.3b265p+3f, 0x1.eafffcp-3f, 0x1.589ca4p+4f}, /* 112 closed 1 */
+    {-0x1.289654p+1f, 0x0p+0f, 0x1.78d9b8p+3f, -0x1.386a64p+2f, 0x0p+0f, 0x1.c82fap+3f, -0x1.cf272p+1f, 0x1.39129ap+0f, 0x1.f1fe82p+3f}, /* 209 closed 1 */
+    {-0x1.289654p+1f, 0x0p+0f, 0x1.78d9b8p+3f, -0x1.cf272p+1f, 0x1.39129ap+0f, 0x1.f1fe82p+3f, -0x1.0dd158p+0f, 0x1.39129ap+0f, 0x1.a2a898p+3f}, /* 210 closed 1 */
+    {-0x1.0dd158p+0f, 0x0p+0f, 0x1.a2a898p+3f, -0x1.0dd158p+0f, 0x1.39129ap+0f, 0x1.a2a898p+3f, -0x1.cf272p+1f, 0x1.39129ap+0f, 0x1.f1fe82p+3f}, /* 211 closed 1 */
+    {-0x1.0dd158p+0f, 0x0p+0f, 0x1.a2a898p+3f, -0x1.cf272p+1f, 0x1.39129ap+0f, 0x1.f1fe82p+3f, -0x1.cf272p+1f, 0x0p+0f, 0x1.f1fe82p+3f}, /* 212 closed 1 */
+    {-0x1.289654p+1f, 0x0p+0f, 0x1.78d9b8p+3f, -0x1.0dd158p+0f, 0x0p+0f, 0x1.a2a898p+3f, -0x1.cf272p+1f, 0x0p+0f, 0x1.f1fe82p+3f}, /* 213 closed 1 */
+    {-0x1.289654p+1f, 0x0p+0f, 0x1.78d9b8p+3f, -0x1.cf272p+1f, 0x0p+0f, 0x1.f1fe82p+3f, -0x1.386a64p+2f, 0x0p+0f, 0x1.c82fap+3f}, /* 214 closed 1 */
+    {-0x1.386a64p+2f, 0x0p+0f, 0x1.c82fap+3f, -0x1.cf272p+1f, 0x0p+0f, 0x1.f1fe82p+3f, -0x1.cf272p+1f, 0x1.39129ap+0f, 0x1.f1fe82p+3f}, /* 216 closed 1 */
+    {-0x1.cded7ep+3f, 0x0p+0f, 0x1.1deed2p+4f, -0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f}, /* 519 closed 1 */
+    {-0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 531 closed 1 */
+    {-0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f}, /* 532 closed 1 */
+    {-0x1.d0b3acp+3f, 0x1.2da3bap-2f, 0x1.0d452ep+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 535 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f}, /* 540 closed 1 */
+    {-0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 543 closed 1 */
+    {-0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 544 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f}, /* 546 closed 1 */
+    {-0x1.c16d2p+3f, 0x1.2da3bap-2f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 547 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 549 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f}, /* 552 closed 1 */
+    {-0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f}, /* 555 closed 1 */
+    {-0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 556 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a2e008p+3f, 0x0p+0f, 0x1.e4642cp+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f}, /* 557 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f}, /* 558 closed 1 */
+    {-0x1.b22694p+3f, 0x1.2da3bap-2f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f}, /* 559 closed 1 */
+    {-0x1.b22694p+3f, 0x1.2da3bap-2f, 0x1.f670e6p+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.a2e008p+3f, 0x1.2da3bap-2f, 0x1.e4642cp+3f}, /* 560 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 561 closed 1 */
+    {-0x1.a2e008p+3f, 0x0p+0f, 0x1.e4642cp+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f}, /* 564 closed 1 */
+    {-0x1.cded7ep+3f, 0x0p+0f, 0x1.1deed2p+4f, -0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f}, /* 759 closed 1 */
+    {-0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 771 closed 1 */
+    {-0x1.bea6f2p+3f, 0x0p+0f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f}, /* 772 closed 1 */
+    {-0x1.d0b3acp+3f, 0x1.2da3bap-2f, 0x1.0d452ep+4f, -0x1.bea6f2p+3f, 0x1.2da3bap-2f, 0x1.14e874p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 775 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f}, /* 780 closed 1 */
+    {-0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 783 closed 1 */
+    {-0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 784 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f}, /* 786 closed 1 */
+    {-0x1.c16d2p+3f, 0x1.2da3bap-2f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 787 closed 1 */
+    {-0x1.c16d2p+3f, 0x0p+0f, 0x1.043edp+4f, -0x1.af6066p+3f, 0x0p+0f, 0x1.0be216p+4f, -0x1.af6066p+3f, 0x1.2da3bap-2f, 0x1.0be216p+4f}, /* 789 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f}, /* 792 closed 1 */
+    {-0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f}, /* 795 closed 1 */
+    {-0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 796 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a2e008p+3f, 0x0p+0f, 0x1.e4642cp+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f}, /* 797 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f}, /* 798 closed 1 */
+    {-0x1.b22694p+3f, 0x1.2da3bap-2f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f}, /* 799 closed 1 */
+    {-0x1.b22694p+3f, 0x1.2da3bap-2f, 0x1.f670e6p+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.a2e008p+3f, 0x1.2da3bap-2f, 0x1.e4642cp+3f}, /* 800 closed 1 */
+    {-0x1.b22694p+3f, 0x0p+0f, 0x1.f670e6p+3f, -0x1.a019dap+3f, 0x0p+0f, 0x1.02dbbap+4f, -0x1.a019dap+3f, 0x1.2da3bap-2f, 0x1.02dbbap+4f}, /* 801 closed 1 */
+    {-0x1.a2e008p+3f, 0x0p+0f, 0x1.e4642cp+3f, -0x1.90d34ep+3f, 0x1.2da3bap-2f, 0x1.f3aab8p+3f, -0x1.90d34ep+3f, 0x0p+0f, 0x1.f3aab8p+3f}, /* 804 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.11e05ap+3f, 0x1.e5f5f8p+1f, 0x1.bccac2p+3f, -0x1.511388p+3f, 0x1.189e3ap+2f, 0x1.06bd6p+4f}, /* 913 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.511388p+3f, 0x1.189e3ap+2f, 0x1.06bd6p+4f, -0x1.4e0e24p+3f, 0x1.3f84bcp+2f, 0x1.05a79ap+4f}, /* 914 closed 1 */
+    {-0x1.b218b8p+2f, 0x1.12c17ap+2f, 0x1.e5992p+3f, -0x1.183f8ap+3f, 0x1.3864b8p+2f, 0x1.1b249p+4f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f}, /* 915 closed 1 */
+    {-0x1.b218b8p+2f, 0x1.12c17ap+2f, 0x1.e5992p+3f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f, -0x1.b8238p+2f, 0x1.d7b5fp+1f, 0x1.e7c4aap+3f}, /* 916 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.4e0e24p+3f, 0x1.3f84bcp+2f, 0x1.05a79ap+4f, -0x1.183f8ap+3f, 0x1.3864b8p+2f, 0x1.1b249p+4f}, /* 917 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.183f8ap+3f, 0x1.3864b8p+2f, 0x1.1b249p+4f, -0x1.b218b8p+2f, 0x1.12c17ap+2f, 0x1.e5992p+3f}, /* 918 closed 1 */
+    {-0x1.11e05ap+3f, 0x1.e5f5f8p+1f, 0x1.bccac2p+3f, -0x1.b8238p+2f, 0x1.d7b5fp+1f, 0x1.e7c4aap+3f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f}, /* 919 closed 1 */
+    {-0x1.11e05ap+3f, 0x1.e5f5f8p+1f, 0x1.bccac2p+3f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f, -0x1.511388p+3f, 0x1.189e3ap+2f, 0x1.06bd6p+4f}, /* 920 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.b218b8p+2f, 0x1.12c17ap+2f, 0x1.e5992p+3f, -0x1.b8238p+2f, 0x1.d7b5fp+1f, 0x1.e7c4aap+3f}, /* 921 closed 1 */
+    {-0x1.0edaf6p+3f, 0x1.19e17ep+2f, 0x1.ba9f36p+3f, -0x1.b8238p+2f, 0x1.d7b5fp+1f, 0x1.e7c4aap+3f, -0x1.11e05ap+3f, 0x1.e5f5f8p+1f, 0x1.bccac2p+3f}, /* 922 closed 1 */
+    {-0x1.4e0e24p+3f, 0x1.3f84bcp+2f, 0x1.05a79ap+4f, -0x1.511388p+3f, 0x1.189e3ap+2f, 0x1.06bd6p+4f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f}, /* 923 closed 1 */
+    {-0x1.4e0e24p+3f, 0x1.3f84bcp+2f, 0x1.05a79ap+4f, -0x1.1b44eep+3f, 0x1.117e36p+2f, 0x1.1c3a54p+4f, -0x1.183f8ap+3f, 0x1.3864b8p+2f, 0x1.1b249p+4f}, /* 924 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.e1572ep+2f, 0x1.d756b8p+1f, 0x1.ca416ap+3f, -0x1.52415p+3f, 0x1.10ff2p+2f, 0x1.e9aefp+3f}, /* 925 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.52415p+3f, 0x1.10ff2p+2f, 0x1.e9aefp+3f, -0x1.4f3becp+3f, 0x1.37e5a2p+2f, 0x1.e78366p+3f}, /* 926 closed 1 */
+    {-0x1.afbd28p+2f, 0x1.1a6094p+2f, 0x1.04b278p+4f, -0x1.39744ep+3f, 0x1.3fb458p+2f, 0x1.14693cp+4f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f}, /* 927 closed 1 */
+    {-0x1.afbd28p+2f, 0x1.1a6094p+2f, 0x1.04b278p+4f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f, -0x1.b5c7fp+2f, 0x1.e6f422p+1f, 0x1.05c83ep+4f}, /* 928 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.4f3becp+3f, 0x1.37e5a2p+2f, 0x1.e78366p+3f, -0x1.39744ep+3f, 0x1.3fb458p+2f, 0x1.14693cp+4f}, /* 929 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.39744ep+3f, 0x1.3fb458p+2f, 0x1.14693cp+4f, -0x1.afbd28p+2f, 0x1.1a6094p+2f, 0x1.04b278p+4f}, /* 930 closed 1 */
+    {-0x1.e1572ep+2f, 0x1.d756b8p+1f, 0x1.ca416ap+3f, -0x1.b5c7fp+2f, 0x1.e6f422p+1f, 0x1.05c83ep+4f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f}, /* 931 closed 1 */
+    {-0x1.e1572ep+2f, 0x1.d756b8p+1f, 0x1.ca416ap+3f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f, -0x1.52415p+3f, 0x1.10ff2p+2f, 0x1.e9aefp+3f}, /* 932 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.afbd28p+2f, 0x1.1a6094p+2f, 0x1.04b278p+4f, -0x1.b5c7fp+2f, 0x1.e6f422p+1f, 0x1.05c83ep+4f}, /* 933 closed 1 */
+    {-0x1.db4c64p+2f, 0x1.1291dep+2f, 0x1.c815dep+3f, -0x1.b5c7fp+2f, 0x1.e6f422p+1f, 0x1.05c83ep+4f, -0x1.e1572ep+2f, 0x1.d756b8p+1f, 0x1.ca416ap+3f}, /* 934 closed 1 */
+    {-0x1.4f3becp+3f, 0x1.37e5a2p+2f, 0x1.e78366p+3f, -0x1.52415p+3f, 0x1.10ff2p+2f, 0x1.e9aefp+3f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f}, /* 935 closed 1 */
+    {-0x1.4f3becp+3f, 0x1.37e5a2p+2f, 0x1.e78366p+3f, -0x1.3c79b2p+3f, 0x1.18cdd6p+2f, 0x1.157f02p+4f, -0x1.39744ep+3f, 0x1.3fb458p+2f, 0x1.14693cp+4f}, /* 936 closed 1 */
+    {-0x1.95a84cp+3f, 0x1.04e9fap+0f, 0x1.29147ep+3f, -0x1.b4e358p+3f, 0x1.ab4274p+1f, 0x1.e8a1f4p+3f, -0x1.491158p+3f, 0x1.ab4274p+1f, 0x1.a71bb4p+3f}, /* 962 closed 1 */
+    {-0x1.491158p+3f, 0x1.04e9fap+0f, 0x1.a71bb4p+3f, -0x1.491158p+3f, 0x1.ab4274p+1f, 0x1.a71bb4p+3f, -0x1.b4e358p+3f, 0x1.ab4274p+1f, 0x1.e8a1f4p+3f}, /* 963 closed 1 */
+    {-0x1.491158p+3f, 0x1.04e9fap+0f, 0x1.a71bb4p+3f, -0x1.b4e358p+3f, 0x1.ab4274p+1f, 0x1.e8a1f4p+3f, -0x1.b4e358p+3f, 0x1.04e9fap+0f, 0x1.e8a1f4p+3f}, /* 964 closed 1 */
+    {-0x1.95a84cp+3f, 0x1.04e9fap+0f, 0x1.29147ep+3f, -0x1.491158p+3f, 0x1.04e9fap+0f, 0x1.a71bb4p+3f, -0x1.b4e358p+3f, 0x1.04e9fap+0f, 0x1.e8a1f4p+3f}, /* 965 closed 1 */
+    {-0x1.95a84cp+3f, 0x1.04e9fap+0f, 0x1.29147ep+3f, -0x1.491158p+3f, 0x1.ab4274p+1f, 0x1.a71bb4p+3f, -0x1.491158p+3f, 0x1.04e9fap+0f, 0x1.a71bb4p+3f}, /* 967 closed 1 */
+    {-0x1.00bd26p+4f, 0x1.04e9fap+0f, 0x1.6a9abep+3f, -0x1.b4e358p+3f, 0x1.04e9fap+0f, 0x1.e8a1f4p+3f, -0x1.b4e358p+3f, 0x1.ab4274p+1f, 0x1.e8a1f4p+3f}, /* 968 closed 1 */
+};
+
+static void test_speed_limit_walk_up_ramp_reports_motion(void)
+{
+    cb_world_reset();
+    geo_tris(s141_l56_tris, sizeof s141_l56_tris / sizeof s141_l56_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.4dbb7cp-3f, 0x1.ce2044p+1f, 0x1.9616dep-1f, 0x1.1f70a2p+0f,
+                                        0x1.ae1efcp-1f, 0x1.d3ebfap+4f, 0x1.5acbacp+5f, 4, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(-0x1.873f94p+1f, 0x1.ce2044p+0f, 0x1.2a7f1p+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_teleport(&body, pos, true);
+    char_body_set_velocity(&body, cb_vec(-0x1.8acb6p+7f, 0.0f, 0x1.0149fp+5f));
+    const fm_vec3_t input = cb_vec(-0x1.f9563cp+127f, 0.0f, 0x1.495466p+125f);
+    body.input_velocity = input;
+    CB_STEP(&body, 0x1.111112p-6f);
+    TEST_ASSERT_TRUE(char_body_is_on_floor(&body)); /* on the room floor, before the ramp */
+    const fm_vec3_t before = pos;
+    const float dt = 0x1.1811ecp-5f;
+    CB_STEP(&body, dt);
+    const fm_vec3_t v = char_body_get_velocity(&body);
+    const float dx = (pos.x - before.x) / dt, dy = (pos.y - before.y) / dt, dz = (pos.z - before.z) / dt;
+    const float off = sqrtf((v.x - dx) * (v.x - dx) + (v.z - dz) * (v.z - dz));
+    cb_report("speed-limit walk up a ramp and off it (s141 l56): rise", pos.y - before.y, "m");
+    cb_report("speed-limit walk up a ramp and off it (s141 l56): velocity across up off the motion", off, "m/s");
+    TEST_ASSERT_TRUE(pos.x - before.x < -6.0f);          /* goes where asked, at the limit */
+    TEST_ASSERT_TRUE(pos.y - before.y > 1.0f);           /* up the ramp */
+    TEST_ASSERT_TRUE(sqrtf(dx * dx + dz * dz) <= 200.0f * 1.01f);
+    TEST_ASSERT_TRUE(off <= 0.01f * 200.0f);             /* the velocity is the motion across up */
+    TEST_ASSERT_FLOAT_WITHIN(0.02f * 200.0f, dy, v.y);   /* and along up */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -6776,5 +6930,6 @@ int main(void)
     RUN_TEST(test_v_between_tile_border_and_block_edge);
     RUN_TEST(test_tile_crack_at_steep_ramp_foot_beside_stairs);
     RUN_TEST(test_ball_on_walkable_soup_face_foot_past_edge_stands);
+    RUN_TEST(test_speed_limit_walk_up_ramp_reports_motion);
     return UNITY_END();
 }

@@ -262,6 +262,25 @@ static fm_vec3_t clamp_speed(fm_vec3_t v, float max_speed)
 }
 
 /**
+ * The reported velocity's limit: its part across up to max_speed (no motion across up is
+ * faster) and its part along up to max_speed, each on its own, so the report stays the
+ * motion. A walk at the speed limit across a ramp and off its side in the same step moves at
+ * the limit across up plus its rise along up: the whole vector clamped to max_speed cut the
+ * part across up by 2.5 % under the motion (soak s141 l56: r 0.16, 200 m/s across up over a
+ * 35.7 degree ramp, 1.55 m of rise in one step, 205 m/s in all).
+ */
+static fm_vec3_t clamp_report(fm_vec3_t v, fm_vec3_t up, float max_speed)
+{
+    if (!v3_finite(v)) return v3(0.0f, 0.0f, 0.0f);
+    if (v3_len2(v) <= 0.98f * max_speed * max_speed) return v; /* the common case, as clamp_speed */
+    float vu = v3_dot(v, up);
+    fm_vec3_t h = clamp_speed(v3_madd(v, up, -vu), max_speed);
+    if (vu > max_speed) vu = max_speed;
+    if (vu < -max_speed) vu = -max_speed;
+    return v3_madd(h, up, vu);
+}
+
+/**
  * Input reshaped onto the floor plane: moved along up until it lies in the plane, then
  * rescaled so the speed along the ground equals the input speed (up and down ramps alike).
  */
@@ -612,7 +631,7 @@ void char_body_move_and_slide_in(char_body_t *body, const coll_scene_t *scene, f
     body->ground_velocity = grounded ? ground_v : v3(0.0f, 0.0f, 0.0f);
     record_events(body, was_grounded, was_floor_normal, v_up, jumping);
 
-    body->velocity = clamp_speed(body->velocity, max_speed);
+    body->velocity = clamp_report(body->velocity, up, max_speed);
     if (v3_finite(pos)) {
         body->origin = pos;
         if (body->owner_pos) *body->owner_pos = pos;
