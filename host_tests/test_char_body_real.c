@@ -6535,7 +6535,7 @@ static const float s140_l278_tris[][9] = {
     {-0x1.730df4p+3f, 0x1.161b14p+1f, 0x1.e57bdep+3f, -0x1.73dfdp+3f, 0x1.382014p+1f, 0x1.6bac54p+3f, -0x1.73dfdp+3f, 0x1.161b14p+1f, 0x1.6bac54p+3f}, /* 927 */
 };
 
-/* The replay's two frames (0.05 s, the run's input, 18.6 m/s): the foot comes down 32 mm from
+/* The replay's two frames (0.05 s, the run's input, at 19 m/s): the foot comes down 54 mm from
  * tile 446's corner, the lowest of the four. Under the tilted up 446's top is a slope falling
  * towards that corner, and the ball's lowest point is held by the edges of the three higher
  * tiles around it (519 across one crack, 435 across the other, 507's corner): the checker's
