@@ -2493,8 +2493,9 @@ bool coll_cb_probe_floor(const cb_ctx_t *c, fm_vec3_t *pos, bool was_grounded, b
                          * sweep: the crack rule again, at the foot the slide off left. The
                          * snap slid the ball off a staircase's corner 0.10 m across onto
                          * the room floor between two tiles 0.18 m high (in the step zone)
-                         * 0.53 m apart, the ball 3.4 mm into the nearer edge (soak s148
-                         * l182). No room for that lift: it stands where the slide left it. */
+                         * 0.53 m apart, the foot 3.4 mm under the least rest on their
+                         * edges (soak s148 l182). No room for that lift: it stands where the
+                         * slide left it. */
                         support_t w;
                         w.found = false;
                         held_over(c, *pos, reach, &h2, g2, &w);
