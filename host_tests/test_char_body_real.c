@@ -7255,6 +7255,67 @@ static void test_snap_off_stair_corner_into_tile_crack_rests_on_edges(void)
     TEST_ASSERT_TRUE((pos.x - start.x) * input.x + (pos.z - start.z) * input.z > 0.0f);
 }
 
+/* Soak s148 l265 (generator 2), the pieces within 0.5 m of the body (the checker's triangle
+ * numbers): the room floor y = 0 (66-69) and a floating triangle soup (787-810). r 0.569,
+ * height 2.855, step 0.443, snap 0.583, walkable to 67.7 degrees, gravity 55.3, 3 slides,
+ * up +y. A teleport left the body's sweep capsule 18.6 mm into soup face 801 (58.7 degrees
+ * off up, walkable) and 14.6 mm against face 793's edge (a vertical contact normal), in
+ * the air, its foot 1.2 m over the floor: each step's recover squeezed it about 10 mm up the
+ * crease (one pass of three kept, the others into a third face), velocity along up 0. */
+static const float s148_l265_tris[][9] = {
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1p+4f}, /* 66 closed 0 */
+    {0x0p+0f, 0x0p+0f, 0x1p+4f, 0x0p+0f, 0x0p+0f, 0x1.8p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f}, /* 67 closed 0 */
+    {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1p+4f}, /* 68 closed 0 */
+    {0x1p+3f, 0x0p+0f, 0x1p+4f, 0x1p+3f, 0x0p+0f, 0x1.8p+4f, 0x1p+4f, 0x0p+0f, 0x1.8p+4f}, /* 69 closed 0 */
+    {0x1.1b089cp+3f, 0x1.887596p+0f, 0x1.1c203p+4f, 0x1.0ee834p+3f, 0x1.c5652ep+1f, 0x1.58fbbap+4f, 0x1.8b6784p+2f, 0x1.00802ap+2f, 0x1.40d322p+4f}, /* 787 closed 0 */
+    {0x1.5bc28cp+2f, 0x1.f1983ap+0f, 0x1.491892p+4f, 0x1.dda8e2p+2f, 0x1.c4a07p+0f, 0x1.46605cp+4f, 0x1.0a6182p+3f, 0x1.0ef688p+1f, 0x1.5d922p+4f}, /* 792 closed 0 */
+    {0x1.54e41ep+2f, 0x1.6c4118p+1f, 0x1.50067ep+4f, 0x1.56b274p+2f, 0x1.62349cp+2f, 0x1.66cb9ep+4f, 0x1.54ec0ep+3f, 0x1.c8a98cp+0f, 0x1.735954p+4f}, /* 793 closed 0 */
+    {0x1.a88b3ap+2f, 0x1.0f08b4p+2f, 0x1.32e088p+4f, 0x1.7943eap+3f, 0x1.5eada2p+2f, 0x1.535edep+4f, 0x1.103464p+3f, 0x1.2d56e6p+0f, 0x1.56e052p+4f}, /* 796 closed 0 */
+    {0x1.e5d82p+2f, 0x1.0da04cp+2f, 0x1.6f1f64p+4f, 0x1.0713acp+3f, 0x1.a42c8ap+2f, 0x1.4ed916p+4f, 0x1.5cfdd6p+3f, 0x1.7e1d76p+1f, 0x1.68b392p+4f}, /* 797 closed 0 */
+    {0x1.39507cp+3f, 0x1.08376ep+1f, 0x1.7564eap+4f, 0x1.6069dep+3f, 0x1.04c5fcp+2f, 0x1.735de6p+4f, 0x1.0f0fc2p+3f, 0x1.ad627ep+0f, 0x1.1d9742p+4f}, /* 801 closed 0 */
+    {0x1.55677cp+3f, 0x1.5f4db4p+1f, 0x1.7c15bep+4f, 0x1.2ba47ap+3f, 0x1.13bdcp+2f, 0x1.40062p+4f, 0x1.99a2bap+2f, 0x1.c2475ap+2f, 0x1.4c126ep+4f}, /* 805 closed 0 */
+    {0x1.6bd2fcp+2f, 0x1.2d311ep+2f, 0x1.610318p+4f, 0x1.0878f6p+3f, 0x1.83a79p+1f, 0x1.614caap+4f, 0x1.0a18p+3f, 0x1.95ac26p+2f, 0x1.6b33c4p+4f}, /* 807 closed 0 */
+    {0x1.40b8e6p+3f, 0x1.9c1694p+1f, 0x1.385456p+4f, 0x1.cb8928p+2f, 0x1.149e72p+0f, 0x1.560134p+4f, 0x1.003af2p+3f, 0x1.36a946p+2f, 0x1.5ee38ep+4f}, /* 810 closed 0 */
+};
+
+static void test_squeezed_up_soup_crease_in_air_reports_its_rise(void)
+{
+    cb_world_reset();
+    geo_tris(s148_l265_tris, sizeof s148_l265_tris / sizeof s148_l265_tris[0]);
+    TEST_ASSERT_NOT_NULL(cb_world_add_geo(1));
+    static const soak_shape_t shape = {0x1.238562p-1f, 0x1.6d668ep+1f, 0x1.c59eeap-2f, 0x1.2a8c82p-1f,
+                                        0x1.2e633cp+0f, 0x1.ba8286p+5f, 0x1.ccac92p+5f, 3, false};
+    char_body_settings_t s = soak_body_settings(&shape);
+    pos = cb_vec(0x1.1d76d8p+3f, 0x1.4a9436p+1f, 0x1.5e3fa2p+4f);
+    char_body_init(&body, &pos);
+    char_body_configure(&body, &s);
+    char_body_set_velocity(&body, cb_vec(-0x1.b94c24p+5f, 0.0f, -0x1.176ac6p+5f));
+    body.input_velocity = cb_vec(-0x1.da29b4p+2f, 0.0f, -0x1.7d85a4p+0f);
+    const float dt = 0x1.111112p-6f;
+    int dishonest = 0, airborne = 0;
+    float worst = 0.0f, rose = 0.0f;
+    for (int f = 0; f < 30; f++) {
+        const fm_vec3_t before = pos;
+        const bool was_on = char_body_is_on_floor(&body);
+        CB_STEP(&body, dt);
+        /* the velocity oracle's rule along up in the air: displacement / dt within 1 mm / dt
+         * (and the push-out allowance of a start overlap under 1 mm: 3 mm) */
+        const float du = (pos.y - before.y) / dt, err = fabsf(char_body_get_velocity(&body).y - du);
+        if (!was_on && !char_body_is_on_floor(&body)) {
+            airborne++;
+            if (err > 4e-3f / dt) dishonest++;
+            if (err > worst) worst = err;
+        }
+        if (pos.y - before.y > rose) rose = pos.y - before.y;
+    }
+    cb_report("squeezed up a soup crease in the air (s148 l265): steps whose velocity along up is not the motion",
+              (float)dishonest, "");
+    cb_report("squeezed up a soup crease in the air (s148 l265): worst velocity error along up", worst, "m/s");
+    TEST_ASSERT_TRUE(airborne > 0);
+    TEST_ASSERT_TRUE(rose > 5e-3f); /* it was squeezed up (the case the rule is for) */
+    TEST_ASSERT_EQUAL_INT(0, dishonest);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -7346,5 +7407,6 @@ int main(void)
     RUN_TEST(test_speed_limit_walk_up_ramp_reports_motion);
     RUN_TEST(test_foot_in_low_tile_corner_tilted_up_rests_on_edges);
     RUN_TEST(test_snap_off_stair_corner_into_tile_crack_rests_on_edges);
+    RUN_TEST(test_squeezed_up_soup_crease_in_air_reports_its_rise);
     return UNITY_END();
 }

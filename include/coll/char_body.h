@@ -37,9 +37,11 @@
  *   Across up it is the step's displacement / dt, sliding off an edge or a nosing included,
  *   and the push out of an overlap at the start of the step where it moves the body more
  *   than the skin (1 % of the radius, at most 1 mm: out of an overlap the game made, or
- *   along a crease); not motion, so not in it: a push within the skin (a slide's own
- *   overshoot), any push along up, and on a walkable floor the snap and stair lift along up
- *   (there the velocity along up is 0). No motion across up is faster than the speed limit
+ *   along a crease); in the air (before and after the step) also a push along up of no
+ *   more than a step of gravity (g dt^2: squeezed up a crease; the next step's gravity
+ *   takes it back); not motion, so not in it: a push within the skin (a slide's own
+ *   overshoot), any larger push along up, and on a walkable floor the snap and stair lift
+ *   along up (there the velocity along up is 0). No motion across up is faster than the speed limit
  *   (200 m/s): a degenerate step (dt of a nanosecond) does not slide off a nosing or an
  *   edge, it waits for the next step.
  */
