@@ -1536,8 +1536,7 @@ static __attribute__((noinline)) bool piece_half_beyond(const cb_ctx_t *c, fm_ve
  * the full rule's sweeps (two where the first may have gone down another gap:
  * piece_half_beyond).
  */
-__attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float gap,
-                                                  const coll_ray_hit_t *under)
+__attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t pos, const coll_sweep_hit_t *edge, float gap)
 {
     const fm_vec3_t up = c->up, foot = cb_foot(c, pos);
     fm_vec3_t side = v3_norm(v3_reject(edge->normal, up)); /* from the edge towards the ball */
@@ -1554,24 +1553,7 @@ __attribute__((noinline)) static bool level_beyond(const cb_ctx_t *c, fm_vec3_t 
     if (gap < -c->contact_eps && c1 + gap > c->step) return true;
     fm_vec3_t o = v3_madd(v3_madd(foot, side, c->radius), up, top);
     coll_ray_hit_t h;
-    /* The foot's floor tilted against up, falling away along side: a radius beyond, its plane
-     * lies r (side . n) / (n . up) under the foot's level, where the ray stopped, and a piece
-     * over it lower than that was never seen. The ray goes on down to that plane, and what it
-     * meets there is judged by height over the floor's plane, with the same two tests. Under an
-     * up 8.9 degrees off a tile field's, the foot in the corner of a tile 17-31 mm lower than
-     * the three around it, the first look met one neighbour's edge; the ray a radius beyond
-     * ended 0.124 m over the floor's plane, 93 mm over the far neighbour's top, met nothing,
-     * and the foot stood 3.5 mm under the ball resting on the neighbours' edges (soak s140
-     * l278). */
-    const float nu = v3_dot(under->normal, up);
-    const float drop = nu < CB_LEVEL_NU && nu > 0.0f ? f_max(c->radius * v3_dot(side, under->normal) / nu, 0.0f) : 0.0f;
-    bool met = cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps + drop, &h) && isfinite(h.distance);
-    if (met && h.distance > top + c->contact_eps) {
-        const float he = v3_dot(v3_sub(edge->point, under->point), under->normal),
-                    hb = v3_dot(v3_sub(h.point, under->point), under->normal);
-        if (fabsf(hb - he) <= 0.1f * c->radius * nu || (hb > c->contact_eps && he > c->contact_eps)) return true;
-        met = false; /* below the foot's level: as before, nothing met */
-    }
+    const bool met = cb_ray(c, o, v3_scale(up, -1.0f), top + c->contact_eps, &h) && isfinite(h.distance);
     /* or both above the foot: it stands at the bottom of a groove between blocks of
      * different heights, inside both (a stair's tread behind is at or below the foot) */
     const float beyond = met ? top - h.distance : 0.0f;
@@ -2100,7 +2082,7 @@ static inline bool crack_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, con
     float edge_len;
     bool hole_only = false; /* only a hole can hold it (piece_beyond) */
     return !ball_reaches_floor(c, pos, hit, &edge, &edge_len) &&
-           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap, hit) ||
+           (gap > c->contact_eps || level_beyond(c, pos, &edge, gap) ||
             (hole_only = piece_beyond(c, pos, &edge, hit)) || piece_behind(c, pos, &edge, edge_len, hit)) &&
            ball_held(c, pos, reach, hit, gap, &edge, edge_len, hole_only, false, w, far) &&
            w->gap < gap - cb_len_tol(c, CB_STEP_EPS);
