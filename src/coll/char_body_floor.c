@@ -404,12 +404,14 @@ static bool surrounded_at_foot(const cb_ctx_t *c, fm_vec3_t foot, float floor_ga
 
 /* rest_at_foot at the level the foot was at before the step (pos: the body now), answered only
  * where the contacts hold the ball from all sides (around): what the foot went down past this
- * step, never higher than where it was (as edges_over_foot). ball_held's looks where its slide
- * past a steep first contact ran into a wall (foot78) ask it. */
-static bool surrounded_below_old_foot(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t foot, float floor_gap, float *rest)
+ * step, never higher than where it was (as edges_over_foot); under: rest_at_foot's (the floor's
+ * own plane no side). ball_held's looks where its slide past a steep first contact ran into a
+ * wall (foot78) or its drop slid onto the floor under the foot (foot77) ask it. */
+static bool surrounded_below_old_foot(const cb_ctx_t *c, fm_vec3_t pos, fm_vec3_t foot, float floor_gap,
+                                      const coll_ray_hit_t *under, float *rest)
 {
     bool around = false;
-    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(owner_position(c->body), pos), c->up), NULL, rest,
+    return rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(owner_position(c->body), pos), c->up), under, rest,
                         &around) &&
            around;
 }
@@ -755,10 +757,8 @@ static bool ball_held(const cb_ctx_t *c, fm_vec3_t pos, float reach, const coll_
                  * tiles: the groove off the ramp's face and a staircase block's vertical
                  * corner ended on the room floor beyond the tile field, 1.5 m away) */
                 float rest = 0.0f;
-                if (under && v3_dot(under->normal, hg.normal) > 0.999f &&
-                    fabsf(v3_dot(v3_sub(under->point, hg.point), under->normal)) < cb_len_tol(c, 0.5f * CB_STEP_EPS) &&
-                    v3_len2(v3_reject(v3_sub(b0g, foot), up)) > r * r &&
-                    surrounded_below_old_foot(c, pos, foot, floor_gap, &rest))
+                if (on_floor_plane(c, under, &hg) && v3_len2(v3_reject(v3_sub(b0g, foot), up)) > r * r &&
+                    surrounded_below_old_foot(c, pos, foot, floor_gap, NULL, &rest))
                     return held_at(rest, reach, -rest, up, h0.point, &h0, out, far_out);
                 b0 = b0g;
                 h1 = hg;
@@ -1038,10 +1038,7 @@ again:;
                  * l188, a branch run). */
                 if (slid && slid_far && on_floor_plane(c, under, &h1p)) {
                     float rest = 0.0f;
-                    bool around = false;
-                    if (rest_at_foot(c, foot, floor_gap, v3_dot(v3_sub(owner_position(b), pos), up), under, &rest,
-                                     &around) &&
-                        around)
+                    if (surrounded_below_old_foot(c, pos, foot, floor_gap, under, &rest))
                         return held_at(rest, reach, -rest, up, h1.point, &h1, out, far_out);
                 }
                 b0 = b0p;
@@ -1265,7 +1262,7 @@ again:;
          * (soak s133 l2). */
         if (slid_into_wall) {
             float rest = 0.0f;
-            if (surrounded_below_old_foot(c, pos, foot, floor_gap, &rest))
+            if (surrounded_below_old_foot(c, pos, foot, floor_gap, NULL, &rest))
                 return held_at(rest, reach, -rest, up, h1.point, &h1, out, far_out);
         }
         return false;
